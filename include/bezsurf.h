@@ -1,0 +1,18 @@
+/*
+ * libbezsurf: rectangular (tensor-product) Bezier surface patches.
+ *
+ * The one header users include. The API is split into topical headers:
+ *   bezsurf/core.h     status codes, version, views, patches, evaluation
+ *   bezsurf/ops.h      exact operations: subdivision, elevation, hodographs, iso-curves, constructions
+ *   bezsurf/surface.h  multi-patch surfaces
+ * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
+ */
+#ifndef BEZSURF_H
+#define BEZSURF_H
+
+#include "bezsurf/version.h"
+#include "bezsurf/core.h"
+#include "bezsurf/ops.h"
+#include "bezsurf/surface.h"
+
+#endif
