@@ -183,7 +183,7 @@ static inline double compare_net(const tnet *got, const lnet *exact, double boun
         if (got->w) {
             double e = (double)fabsl((long double)got->w[k] - w) / wbound;
             worst = e > worst ? e : worst;
-        } else if (w != 1.0L) {
+        } else if (fabsl(w - 1.0L) > 1e-15L) { /* exactly 1 up to long-double rounding */
             return INFINITY;
         }
         for (size_t c = 0; c < got->dim; c++) {
