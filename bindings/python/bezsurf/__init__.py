@@ -14,8 +14,8 @@ from ._errors import (BezsurfError, BezsurfIOError, DegreeError, DimensionError,
                       IncompatibleError, InvalidArgumentError, NoMemoryError, NonFiniteError,
                       ParseError, SizeError, UnsupportedError)
 from ._lib import LIB as _LIB
-from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Evaluation,
-                    Patch)
+from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
+                    Evaluation, Patch)
 from .surface import Surface
 
 __version__ = "1.0.0"
@@ -46,7 +46,7 @@ def library_path() -> str:
 
 
 __all__ = [
-    "Patch", "Surface", "Evaluation",
+    "Patch", "Surface", "Evaluation", "Curve",
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",
     "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",
     "IncompatibleError", "UnsupportedError",

@@ -38,6 +38,12 @@ class CView(ctypes.Structure):
     _fields_ = [("data", c_void_p), ("count", c_size_t), ("stride", c_ssize_t)]
 
 
+class CCurve(ctypes.Structure):
+    """``bs_curve``: a Bezier curve given to the ruled and Coons constructions."""
+
+    _fields_ = [("degree", c_size_t), ("dim", c_size_t), ("ctrl", c_void_p), ("weights", c_void_p)]
+
+
 class _Status:
     """Marks a function returning ``bs_status``: negative results raise through errcheck."""
 
@@ -52,6 +58,7 @@ CVIEW = POINTER(CView)
 DOUBLES = c_void_p      # a double * (input or output), passed as an address
 BYTES = c_void_p        # an unsigned char * output
 SIZE_OUT = POINTER(c_size_t)
+CURVE = POINTER(CCurve)
 
 # (name, argtypes, restype): the one declaration of every C function the binding uses.
 FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
@@ -83,6 +90,10 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_patch_isocurve", (HANDLE, c_int, c_double, DOUBLES, c_size_t, DOUBLES, c_size_t), STATUS),
     ("bs_patch_bounds", (HANDLE, DOUBLES, DOUBLES), STATUS),
     ("bs_patch_transform", (HANDLE, DOUBLES, HANDLE_OUT), STATUS),
+    ("bs_patch_swap_uv", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_patch_reverse", (HANDLE, c_int, HANDLE_OUT), STATUS),
+    ("bs_patch_ruled", (CURVE, CURVE, HANDLE_OUT), STATUS),
+    ("bs_patch_coons", (CURVE, CURVE, CURVE, CURVE, HANDLE_OUT), STATUS),
     # surface.h: sets of patches
     ("bs_surface_create", (HANDLE_OUT,), STATUS),
     ("bs_surface_destroy", (HANDLE,), None),
@@ -173,5 +184,5 @@ def load() -> Library:
 
 LIB = load()
 
-__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
            "error_for", "c_double", "c_ubyte", "c_uint32"]

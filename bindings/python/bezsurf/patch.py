@@ -6,7 +6,7 @@ from typing import Any, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 from . import _buffers as B
 from ._handle import Handle
-from ._lib import LIB
+from ._lib import LIB, CCurve
 
 #: Directions for split() and isocurve(); 'u' and 'v' are accepted as well.
 DIR_U = 0
@@ -19,6 +19,19 @@ NORMAL_UNDEFINED = 2
 
 Direction = Union[int, str]
 Params = Any  # a real number, a sequence of them, array.array('d'), memoryview or numpy array
+
+
+class Curve(NamedTuple):
+    """A Bezier curve: its control points and, when rational, its weights (else None).
+
+    ``points`` is a list of tuples (or any nested sequence or numpy array of shape
+    (degree+1, dim)); ``weights`` None or degree+1 positive numbers. Returned by
+    :meth:`Patch.isocurve` and accepted by :meth:`Patch.ruled` and :meth:`Patch.coons`, which
+    also take a bare sequence of points for a polynomial curve.
+    """
+
+    points: Any
+    weights: Any = None
 
 
 class Evaluation(NamedTuple):
@@ -296,12 +309,13 @@ class Patch(Handle):
         LIB.bs_patch_derivative(self._ptr, ku, kv, ctypes.byref(out))
         return Patch._wrap(out.value)
 
-    def isocurve(self, direction: Direction, t: float, *, numpy: bool = False) -> Tuple[Any, Any]:
+    def isocurve(self, direction: Direction, t: float, *, numpy: bool = False) -> Curve:
         """Control points and weights of an iso-parameter curve.
 
         Direction 'u': the curve u = t, a Bezier curve in v of degree degree_v; 'v': v = t, in u.
-        Returns (points, weights): points a list of tuples (or a numpy array of shape
-        (degree+1, dim) when ``numpy`` is true), weights a list (array) or None when polynomial.
+        Returns a :class:`Curve` (points, weights): points a list of tuples (or a numpy array of
+        shape (degree+1, dim) when ``numpy`` is true), weights a list (array) or None when the
+        patch is polynomial.
         """
         d = _direction(direction)
         npts = (self.degree_v if d == DIR_U else self.degree_u) + 1
@@ -318,8 +332,8 @@ class Patch(Handle):
             paddr, waddr = pts.buffer_info()[0], (w.buffer_info()[0] if w is not None else None)
         LIB.bs_patch_isocurve(self._ptr, d, t, paddr, npts * dim, waddr, npts if rational else 0)
         if numpy:
-            return pts, w
-        return B.nested(pts, (npts, dim)), (list(w) if w is not None else None)
+            return Curve(pts, w)
+        return Curve(B.nested(pts, (npts, dim)), list(w) if w is not None else None)
 
     def bounds(self) -> Tuple[Tuple[float, ...], Tuple[float, ...]]:
         """(lo, hi): the bounding box of the control net, which contains the patch."""
@@ -338,6 +352,55 @@ class Patch(Handle):
         LIB.bs_patch_transform(self._ptr, address, ctypes.byref(out))
         del keep
         return Patch._wrap(out.value)
+
+    def swap_uv(self) -> "Patch":
+        """The same surface with u and v exchanged: Q(u, v) = P(v, u), Q[j][i] = P[i][j].
+        The normal S_u x S_v changes sign."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_swap_uv(self._ptr, ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    def reverse(self, direction: Direction) -> "Patch":
+        """The same surface with one direction reversed: 'u' gives Q(u, v) = P(1-u, v),
+        'v' gives Q(u, v) = P(u, 1-v)."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_reverse(self._ptr, _direction(direction), ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    @classmethod
+    def ruled(cls, c0: Any, c1: Any) -> "Patch":
+        """The ruled patch joining curve c0 (at v = 0) to curve c1 (at v = 1) by straight
+        segments: degree (d, 1), d the larger curve degree. Curves are :class:`Curve` values or
+        bare point sequences; rational curves give a rational patch."""
+        curves = [_CurveArg(c, name) for c, name in ((c0, "c0"), (c1, "c1"))]
+        out = ctypes.c_void_p()
+        LIB.bs_patch_ruled(ctypes.byref(curves[0].c), ctypes.byref(curves[1].c), ctypes.byref(out))
+        return cls._wrap(out.value)
+
+    @classmethod
+    def coons(cls, v0: Any, v1: Any, u0: Any, u1: Any) -> "Patch":
+        """The bilinearly blended Coons patch of four polynomial boundary curves:
+        S(u, 0) = v0(u), S(u, 1) = v1(u), S(0, v) = u0(v), S(1, v) = u1(v). The corners must
+        meet (IncompatibleError otherwise); rational curves raise UnsupportedError."""
+        curves = [_CurveArg(c, name) for c, name in ((v0, "v0"), (v1, "v1"), (u0, "u0"), (u1, "u1"))]
+        out = ctypes.c_void_p()
+        LIB.bs_patch_coons(*(ctypes.byref(c.c) for c in curves), ctypes.byref(out))
+        return cls._wrap(out.value)
+
+
+class _CurveArg:
+    """A bs_curve built from a Curve or a bare point sequence, with its buffers kept alive."""
+
+    def __init__(self, curve: Any, what: str) -> None:
+        if isinstance(curve, Curve):
+            points, weights = curve.points, curve.weights
+        else:
+            points, weights = curve, None
+        rows, _, dim, keep, ctrl, w = B.flat_net([points], None if weights is None else [weights])
+        del rows
+        npts = len(points)
+        self.keep = keep
+        self.c = CCurve(npts - 1, dim, ctrl, w)
 
 
 def _check_packed(arr: Any, shape: Sequence[int], what: str) -> None:

@@ -22,7 +22,8 @@ def run_import(env_changes, code="import bezsurf; print(bezsurf.version())"):
     env = {k: v for k, v in os.environ.items() if k not in ("BEZSURF_LIBRARY", "LD_LIBRARY_PATH")}
     env["PYTHONPATH"] = PACKAGE_DIR
     env.update(env_changes)
-    return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True)
+    return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True,
+                          cwd=tempfile.gettempdir())
 
 
 class VersionTest(unittest.TestCase):
