@@ -16,7 +16,7 @@ from ._errors import (BezsurfError, BezsurfIOError, DegreeError, DimensionError,
 from ._lib import LIB as _LIB
 from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
                     Evaluation, Patch)
-from .surface import Surface
+from .surface import Surface, builtin_names
 
 __version__ = "1.0.0"
 
@@ -51,5 +51,5 @@ __all__ = [
     "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",
     "IncompatibleError", "UnsupportedError",
     "DIR_U", "DIR_V", "NORMAL_REGULAR", "NORMAL_LIMIT", "NORMAL_UNDEFINED", "MAX_DEGREE",
-    "MAX_DIM", "version", "version_number", "status_string", "library_path",
+    "MAX_DIM", "builtin_names", "version", "version_number", "status_string", "library_path",
 ]

@@ -10,18 +10,23 @@ class BezsurfError(Exception):
         code: the negative ``bs_status`` value returned by the C function.
         message: the library's text for that status (``bs_status_string``).
         function: name of the C function that failed, when known.
+        detail: more precise reason given by the library (parse and I/O errors), or None.
     """
 
     code: int
     message: str
     function: Optional[str]
+    detail: Optional[str]
 
-    def __init__(self, code: int, message: str, function: Optional[str] = None) -> None:
+    def __init__(self, code: int, message: str, function: Optional[str] = None,
+                 detail: Optional[str] = None) -> None:
         self.code = code
         self.message = message
         self.function = function
+        self.detail = detail
         where = f"{function}: " if function else ""
-        super().__init__(f"{where}{message} (status {code})")
+        more = f": {detail}" if detail else ""
+        super().__init__(f"{where}{message}{more} (status {code})")
 
 
 class InvalidArgumentError(BezsurfError, ValueError):
@@ -57,19 +62,20 @@ class ParseError(BezsurfError, ValueError):
 
     Attributes:
         line: 1-based line of the error, or None when unknown.
-        column: 1-based column of the error, or None when unknown.
+        column: 1-based byte column of the error, or None when unknown.
     """
 
     line: Optional[int]
     column: Optional[int]
 
     def __init__(self, code: int, message: str, function: Optional[str] = None,
-                 line: Optional[int] = None, column: Optional[int] = None) -> None:
+                 detail: Optional[str] = None, line: Optional[int] = None,
+                 column: Optional[int] = None) -> None:
         self.line = line
         self.column = column
         if line is not None:
-            message = f"{message} at line {line}, column {column}"
-        super().__init__(code, message, function)
+            detail = f"line {line}, column {column}" + (f": {detail}" if detail else "")
+        super().__init__(code, message, function, detail)
 
 
 class BezsurfIOError(BezsurfError, OSError):

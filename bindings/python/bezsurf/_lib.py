@@ -44,6 +44,12 @@ class CCurve(ctypes.Structure):
     _fields_ = [("degree", c_size_t), ("dim", c_size_t), ("ctrl", c_void_p), ("weights", c_void_p)]
 
 
+class CParseError(ctypes.Structure):
+    """``bs_parse_error``: where and why parsing failed."""
+
+    _fields_ = [("line", c_size_t), ("column", c_size_t), ("message", ctypes.c_char * 96)]
+
+
 class _Status:
     """Marks a function returning ``bs_status``: negative results raise through errcheck."""
 
@@ -59,6 +65,7 @@ DOUBLES = c_void_p      # a double * (input or output), passed as an address
 BYTES = c_void_p        # an unsigned char * output
 SIZE_OUT = POINTER(c_size_t)
 CURVE = POINTER(CCurve)
+PARSE_ERROR = POINTER(CParseError)
 
 # (name, argtypes, restype): the one declaration of every C function the binding uses.
 FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
@@ -102,6 +109,13 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_surface_count", (HANDLE,), c_size_t),
     ("bs_surface_dim", (HANDLE,), c_size_t),
     ("bs_surface_get", (HANDLE, c_size_t), HANDLE),
+    # io.h: the .bpt format and the built-in tea set
+    ("bs_surface_read_bpt", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_read_bpt_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_write_bpt", (HANDLE, c_void_p, c_size_t, SIZE_OUT), STATUS),
+    ("bs_surface_write_bpt_file", (HANDLE, c_char_p), STATUS),
+    ("bs_surface_create_builtin", (c_char_p, HANDLE_OUT), STATUS),
+    ("bs_builtin_name", (c_size_t,), c_char_p),
 )
 
 #: C functions of the library deliberately left without a binding, with the reason.
@@ -184,5 +198,5 @@ def load() -> Library:
 
 LIB = load()
 
-__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
            "error_for", "c_double", "c_ubyte", "c_uint32"]
