@@ -7,6 +7,7 @@
  * Usage: bench_eval [teapot.bpt] [seconds per measurement]
  *        bench_eval --once METHOD WORKLOAD G [teapot.bpt]   (one run, for bench/callgrind.sh)
  */
+#define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <bezsurf.h>
 
 #include <math.h>
