@@ -16,7 +16,9 @@ from ._errors import (BezsurfError, BezsurfIOError, DegreeError, DimensionError,
 from ._lib import LIB as _LIB
 from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
                     Evaluation, Patch)
-from .surface import Surface, builtin_names
+from .mesh import Mesh
+from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
+                      Surface, builtin_names)
 
 __version__ = "1.0.0"
 
@@ -46,7 +48,8 @@ def library_path() -> str:
 
 
 __all__ = [
-    "Patch", "Surface", "Evaluation", "Curve",
+    "Patch", "Surface", "Mesh", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
+    "SIDE_V0", "SIDE_U1", "SIDE_V1", "SIDE_U0",
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",
     "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",
     "IncompatibleError", "UnsupportedError",

@@ -186,6 +186,61 @@ class KindOutput:
         return list(self.buffer[: self.n])
 
 
+_U32 = "I" if array.array("I").itemsize == 4 else "L"
+
+
+def uint32s(x: Any, what: str) -> Tuple[Any, int, int, bool]:
+    """(keep, address, count, is_numpy) of a packed uint32 copy (or view) of ids."""
+    if is_ndarray(x):
+        a = np.asarray(x)
+        if a.ndim == 0:
+            a = a.reshape(1)
+        if a.ndim != 1:
+            raise ValueError(f"{what} must be one-dimensional")
+        if a.dtype != np.uint32:
+            if a.size and (not np.issubdtype(a.dtype, np.integer) or a.min() < 0
+                           or a.max() > 0xFFFFFFFF):
+                raise ValueError(f"{what} must hold integers in 0..2**32-1")
+            a = a.astype(np.uint32)
+        a = np.ascontiguousarray(a)
+        return a, a.ctypes.data, a.shape[0], True
+    if isinstance(x, numbers.Integral):
+        x = (x,)
+    try:
+        arr = array.array(_U32, x)
+    except (TypeError, OverflowError) as exc:
+        raise ValueError(f"{what} must hold integers in 0..2**32-1") from exc
+    if not arr:
+        arr.append(0)  # a valid pointer; the count passed stays 0
+        return arr, arr.buffer_info()[0], 0, False
+    return arr, arr.buffer_info()[0], len(arr), False
+
+
+class UInt32Output:
+    """count uint32 values, shaped (rows, k) or flat, as a numpy array or a list."""
+
+    def __init__(self, count: int, use_numpy: bool, shape: Tuple[int, ...]) -> None:
+        self.count = count
+        self.shape = shape
+        if use_numpy:
+            self.array = need_numpy().empty(shape, dtype=np.uint32)
+            self.buf = None
+            self.address = self.array.ctypes.data
+        else:
+            self.array = None
+            self.buf = array.array(_U32, bytes(4 * max(count, 1)))
+            self.address = self.buf.buffer_info()[0]
+
+    def result(self) -> Any:
+        if self.array is not None:
+            return self.array
+        values = self.buf[: self.count]
+        if len(self.shape) == 1:
+            return list(values)
+        k = self.shape[1]
+        return list(zip(*(values[c::k] for c in range(k))))
+
+
 def flat_net(net: Any, weights: Any) -> Tuple[int, int, int, Any, Any, Any]:
     """(rows, cols, dim, ctrl keep, ctrl address, weights address) from a control net.
 

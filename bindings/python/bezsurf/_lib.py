@@ -50,6 +50,21 @@ class CParseError(ctypes.Structure):
     _fields_ = [("line", c_size_t), ("column", c_size_t), ("message", ctypes.c_char * 96)]
 
 
+class CEdgeContinuity(ctypes.Structure):
+    """``bs_edge_continuity``: how two patches meet along one shared edge."""
+
+    _fields_ = [("patch_a", c_uint32), ("patch_b", c_uint32), ("side_a", c_int),
+                ("side_b", c_int), ("reversed", c_int), ("c1", c_int), ("flipped", c_int),
+                ("samples", c_int), ("c0_gap", c_double), ("g1_angle", c_double),
+                ("c1_defect", c_double)]
+
+
+class COpenEdge(ctypes.Structure):
+    """``bs_open_edge``: a patch side no other patch shares."""
+
+    _fields_ = [("patch", c_uint32), ("side", c_int)]
+
+
 class _Status:
     """Marks a function returning ``bs_status``: negative results raise through errcheck."""
 
@@ -66,6 +81,7 @@ BYTES = c_void_p        # an unsigned char * output
 SIZE_OUT = POINTER(c_size_t)
 CURVE = POINTER(CCurve)
 PARSE_ERROR = POINTER(CParseError)
+IDS = c_void_p          # a uint32_t * (input or output)
 
 # (name, argtypes, restype): the one declaration of every C function the binding uses.
 FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
@@ -109,6 +125,29 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_surface_count", (HANDLE,), c_size_t),
     ("bs_surface_dim", (HANDLE,), c_size_t),
     ("bs_surface_get", (HANDLE, c_size_t), HANDLE),
+    ("bs_surface_eval", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS), STATUS),
+    ("bs_surface_eval_normal", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
+    # continuity.h
+    ("bs_surface_continuity", (HANDLE, c_double, c_size_t, POINTER(CEdgeContinuity), c_size_t,
+                               SIZE_OUT, POINTER(COpenEdge), c_size_t, SIZE_OUT), STATUS),
+    # mesh.h: tessellation, mesh read-back and export
+    ("bs_surface_tessellate_uniform", (HANDLE, c_size_t, c_size_t, c_int, HANDLE_OUT), STATUS),
+    ("bs_surface_tessellate_adaptive", (HANDLE, c_double, c_int, HANDLE_OUT), STATUS),
+    ("bs_mesh_destroy", (HANDLE,), None),
+    ("bs_mesh_vertex_count", (HANDLE,), c_size_t),
+    ("bs_mesh_triangle_count", (HANDLE,), c_size_t),
+    ("bs_mesh_strip_count", (HANDLE,), c_size_t),
+    ("bs_mesh_strip_index_count", (HANDLE,), c_size_t),
+    ("bs_mesh_copy_positions", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_normals", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_uv", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_patch_ids", (HANDLE, IDS, c_size_t), STATUS),
+    ("bs_mesh_copy_triangles", (HANDLE, IDS, c_size_t), STATUS),
+    ("bs_mesh_copy_triangle_patch_ids", (HANDLE, IDS, c_size_t), STATUS),
+    ("bs_mesh_copy_corner_uv", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_strips", (HANDLE, IDS, c_size_t, IDS, c_size_t), STATUS),
+    ("bs_mesh_write", (HANDLE, c_int, c_char_p), STATUS),
+    ("bs_mesh_write_memory", (HANDLE, c_int, c_void_p, c_size_t, SIZE_OUT), STATUS),
     # io.h: the .bpt format and the built-in tea set
     ("bs_surface_read_bpt", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
     ("bs_surface_read_bpt_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
@@ -198,5 +237,5 @@ def load() -> Library:
 
 LIB = load()
 
-__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
            "error_for", "c_double", "c_ubyte", "c_uint32"]

@@ -2,12 +2,51 @@
 
 import ctypes
 import os
-from typing import Any, Iterable, Iterator, List, Optional, Union
+import numbers
+from typing import Any, Iterable, Iterator, List, NamedTuple, Optional, Union
 
+from . import _buffers as B
 from ._errors import BezsurfError, BezsurfIOError, ParseError
 from ._handle import Handle
-from ._lib import LIB, CParseError
-from .patch import Patch
+from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
+from .mesh import Mesh
+from .patch import Evaluation, Patch, _Call
+
+#: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
+SIDE_V0 = 0
+SIDE_U1 = 1
+SIDE_V1 = 2
+SIDE_U0 = 3
+
+
+class EdgeContinuity(NamedTuple):
+    """How two patches meet along one shared edge (see :meth:`Surface.continuity`)."""
+
+    patch_a: int
+    patch_b: int
+    side_a: int
+    side_b: int
+    reversed: bool
+    c1: bool
+    flipped: bool
+    samples: int
+    c0_gap: float
+    g1_angle: float
+    c1_defect: float
+
+
+class OpenEdge(NamedTuple):
+    """A patch side that no other patch shares."""
+
+    patch: int
+    side: int
+
+
+class Continuity(NamedTuple):
+    """Shared edges with their continuity measures, and open edges."""
+
+    edges: List[EdgeContinuity]
+    open_edges: List[OpenEdge]
 
 PathLike = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
 
@@ -140,6 +179,85 @@ class Surface(Handle):
     def __iter__(self) -> Iterator[Patch]:
         for i in range(len(self)):
             yield self[i]
+
+    # ---- evaluation --------------------------------------------------------------------------
+    def eval(self, ids: Any, u: Any, v: Any, *, derivatives: bool = False, normals: bool = False,
+             out: Any = None, du_out: Any = None, dv_out: Any = None, normal_out: Any = None,
+             kind_out: Any = None) -> Any:
+        """Evaluate at n scattered points: point k lies on patch ids[k] at (u[k], v[k]).
+
+        ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
+        Results and keyword arguments as :meth:`Patch.eval`; sorting points by id is fastest.
+        """
+        call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out, ids))
+        if isinstance(ids, numbers.Integral) and not call.scalar:
+            ids = [int(ids)] * call.n
+        keep, id_addr, nid, _ = B.uint32s(ids, "ids")
+        if nid != call.n:
+            raise ValueError(f"ids and u must have the same length ({nid} != {call.n})")
+        dim = self.dim
+        pos = call.output(dim, out, "out")
+        dus = dvs = nrm = kinds = None
+        if derivatives:
+            dus = call.output(dim, du_out, "du_out")
+            dvs = call.output(dim, dv_out, "dv_out")
+        if derivatives or not normals:
+            LIB.bs_surface_eval(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
+                                dus.views if dus else None, dvs.views if dvs else None)
+        if normals:
+            nrm = call.output(3, normal_out, "normal_out")
+            kinds = B.KindOutput(call.n, call.numpy, kind_out)
+            LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
+                                       None if derivatives else pos.views, nrm.views,
+                                       kinds.address)
+        del keep
+        if not derivatives and not normals:
+            return call.finish(pos.result())
+        return Evaluation(*(call.finish(x.result() if x is not None else None)
+                            for x in (pos, dus, dvs, nrm, kinds)))
+
+    def eval_normal(self, ids: Any, u: Any, v: Any, **outputs: Any) -> Evaluation:
+        """Positions, unit normals and kinds at scattered points of a 3-D surface
+        (``eval(ids, u, v, normals=True)``)."""
+        return self.eval(ids, u, v, normals=True, **outputs)  # type: ignore[no-any-return]
+
+    def continuity(self, tol: float = 1e-9, samples: int = 32) -> Continuity:
+        """Shared and open edges of a 3-D surface and the continuity across each shared edge.
+
+        ``tol`` (absolute, per coordinate) matches sides and bounds the C1 test; ``samples``
+        (1..4096) normals per edge measure the G1 angle. Returns a :class:`Continuity` of
+        :class:`EdgeContinuity` and :class:`OpenEdge` lists.
+        """
+        n_edges, n_open = ctypes.c_size_t(), ctypes.c_size_t()
+        LIB.bs_surface_continuity(self._ptr, tol, samples, None, 0, ctypes.byref(n_edges),
+                                  None, 0, ctypes.byref(n_open))
+        edges = (CEdgeContinuity * max(n_edges.value, 1))()
+        opens = (COpenEdge * max(n_open.value, 1))()
+        LIB.bs_surface_continuity(self._ptr, tol, samples, edges, n_edges.value,
+                                  ctypes.byref(n_edges), opens, n_open.value, ctypes.byref(n_open))
+        return Continuity(
+            [EdgeContinuity(e.patch_a, e.patch_b, e.side_a, e.side_b, bool(e.reversed), bool(e.c1),
+                            bool(e.flipped), e.samples, e.c0_gap, e.g1_angle, e.c1_defect)
+             for e in edges[: n_edges.value]],
+            [OpenEdge(o.patch, o.side) for o in opens[: n_open.value]])
+
+    # ---- tessellation --------------------------------------------------------------------------
+    def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False) -> Mesh:
+        """A crack-free triangle mesh with nu x nv segments per patch (nv defaults to nu);
+        ``strips`` also builds triangle strips."""
+        out = ctypes.c_void_p()
+        LIB.bs_surface_tessellate_uniform(self._ptr, nu, nu if nv is None else nv,
+                                          2 if strips else 0, ctypes.byref(out))
+        return Mesh._wrap(out.value)
+
+    def tessellate_adaptive(self, tolerance: float, *, relative: bool = False,
+                            strips: bool = False) -> Mesh:
+        """A crack-free mesh whose triangles lie within ``tolerance`` of the surface (a distance,
+        or with ``relative`` a fraction of the control points' bounding-box diagonal)."""
+        out = ctypes.c_void_p()
+        flags = (1 if relative else 0) | (2 if strips else 0)
+        LIB.bs_surface_tessellate_adaptive(self._ptr, tolerance, flags, ctypes.byref(out))
+        return Mesh._wrap(out.value)
 
     def __repr__(self) -> str:
         if self.closed:
