@@ -9,13 +9,22 @@ import base64
 import hashlib
 import io
 import os
+import re
 import tarfile
 import zipfile
 
 NAME = "bezsurf"
-VERSION = "1.0.0"
 TAG = "py3-none-any"
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def _version():
+    """The package's __version__, the one place the version is written."""
+    with open(os.path.join(ROOT, NAME, "__init__.py"), encoding="utf-8") as f:
+        return re.search(r'^__version__ = "([^"]+)"', f.read(), re.M).group(1)
+
+
+VERSION = _version()
 DIST_INFO = f"{NAME}-{VERSION}.dist-info"
 
 METADATA = f"""Metadata-Version: 2.1

@@ -141,6 +141,8 @@ class InstallTest(unittest.TestCase):
                            "import bezsurf; print(bezsurf.__file__)")
             self.assertEqual(r.returncode, 0, r.stderr)
             self.assertTrue(r.stdout.startswith(d), r.stdout)
+            dist = [n for n in os.listdir(d) if n.endswith(".dist-info")]
+            self.assertEqual(dist, [f"bezsurf-{bezsurf.__version__}.dist-info"])
 
 
 if __name__ == "__main__":

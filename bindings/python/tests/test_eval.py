@@ -184,6 +184,15 @@ class NumpyEvalTest(unittest.TestCase):
         self.assertIs(self.p.eval(self.u, self.v, out=f), f)
         self.assertTrue(np.array_equal(f, self.want))
 
+    def test_numpy_inputs_pass_by_address(self):
+        from bezsurf import _buffers
+        a = np.arange(12.0)[::-3]
+        d = _buffers.doubles(a, "u")
+        self.assertEqual((d.address, d.count, d.stride), (a.ctypes.data, 4, -24))
+        f = np.asfortranarray(np.ones((3, 4)))[1]
+        d = _buffers.doubles(f, "u")
+        self.assertEqual((d.address, d.stride), (f.ctypes.data, 24))
+
     def test_strided_and_converted_inputs(self):
         big = np.zeros(3 * len(U))
         big[::3] = U
