@@ -6,8 +6,8 @@ by address; lists, tuples and other buffers are copied once into an ``array.arra
 
 Outputs: with numpy, one array of shape (n, k) is allocated (or the caller's ``out=`` array used)
 and its k columns are handed to the library as k strided views, so the library writes the final
-array directly. Without numpy, k packed ``array.array('d')`` columns are written and zipped into a
-list of n tuples.
+array directly. Without numpy, the library writes one interleaved ``array.array('d')`` (k views
+of stride k doubles) that is grouped into a list of n tuples.
 """
 
 import array
@@ -126,18 +126,19 @@ class Output:
                 views[c] = View(base + c * arr.strides[1], n, arr.strides[0])
             self.array = arr
         else:
-            zero = bytes(_DOUBLE * max(n, 1))
+            # One interleaved buffer (point-major, stride k doubles), read back as n tuples.
+            buf = array.array("d", bytes(_DOUBLE * max(n * k, 1)))
+            base = buf.buffer_info()[0]
             for c in range(k):
-                col = array.array("d", zero)
-                views[c] = View(col.buffer_info()[0], n, _DOUBLE)
-                self.columns.append(col)
+                views[c] = View(base + c * _DOUBLE, n, k * _DOUBLE)
+            self.columns.append(buf)
         self.views = views
 
     def result(self) -> Any:
         if self.array is not None:
             return self.array
-        cols = [col[: self.n] for col in self.columns]
-        return list(zip(*cols))
+        values = iter(self.columns[0][: self.n * self.k])
+        return list(zip(*[values] * self.k))
 
 
 def _check_out(out: Any, shape: Tuple[int, ...], what: str) -> Any:
