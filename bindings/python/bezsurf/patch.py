@@ -58,6 +58,15 @@ def _direction(d: Direction) -> int:
     return int(d)
 
 
+def _check_requested(derivatives: bool, normals: bool, du_out: Any, dv_out: Any,
+                     normal_out: Any, kind_out: Any) -> None:
+    """An output array given for a result that was not asked for is a mistake, not a no-op."""
+    if not derivatives and (du_out is not None or dv_out is not None):
+        raise ValueError("du_out and dv_out need derivatives=True")
+    if not normals and (normal_out is not None or kind_out is not None):
+        raise ValueError("normal_out and kind_out need normals=True")
+
+
 def _squeeze(value: Any) -> Any:
     """The single point of a one-point result (scalar parameters)."""
     if value is None:
@@ -204,6 +213,7 @@ class Patch(Handle):
         ``out``, ``du_out``, ``dv_out`` (float64, shape (n, dim)), ``normal_out`` (n, 3) and
         ``kind_out`` (uint8, n) are numpy arrays written in place instead of new results.
         """
+        _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
         call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out))
         pos = call.output(self.dim, out, "out")
         dus = dvs = nrm = kinds = None
@@ -259,6 +269,7 @@ class Patch(Handle):
         ``result.reshape(len(u), len(v), dim)`` is a view). Returns positions, or an
         :class:`Evaluation` when ``derivatives`` or ``normals`` is set, as :meth:`eval` does.
         """
+        _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
         call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out), grid=True)
         pos = call.output(self.dim, out, "out")
         dus = dvs = nrm = kinds = None

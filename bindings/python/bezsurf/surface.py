@@ -10,7 +10,7 @@ from ._errors import BezsurfError, BezsurfIOError, ParseError
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .mesh import Mesh
-from .patch import Evaluation, Patch, _Call
+from .patch import Evaluation, Patch, _Call, _check_requested
 
 #: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
 SIDE_V0 = 0
@@ -189,6 +189,7 @@ class Surface(Handle):
         ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
         Results and keyword arguments as :meth:`Patch.eval`; sorting points by id is fastest.
         """
+        _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
         call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out, ids))
         if isinstance(ids, numbers.Integral) and not call.scalar:
             ids = [int(ids)] * call.n

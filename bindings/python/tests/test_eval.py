@@ -237,6 +237,10 @@ class NumpyEvalTest(unittest.TestCase):
             self.p.eval(self.u, self.v, out=np.zeros((len(U), 2)))
         with self.assertRaises(TypeError):
             self.p.eval(self.u, self.v, out=np.zeros((len(U), 3), dtype=np.float32))
+        with self.assertRaises(ValueError):     # an output for a result not asked for
+            self.p.eval(self.u, self.v, normal_out=np.zeros((len(U), 3)))
+        with self.assertRaises(ValueError):
+            self.p.eval_grid(self.u, self.v, du_out=np.zeros((len(U) ** 2, 3)))
         ro = np.zeros((len(U), 3))
         ro.flags.writeable = False
         with self.assertRaises(ValueError):
