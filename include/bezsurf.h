@@ -5,6 +5,8 @@
  *   bezsurf/core.h     status codes, version, views, patches, evaluation
  *   bezsurf/ops.h      exact operations: subdivision, elevation, hodographs, iso-curves, constructions
  *   bezsurf/surface.h  multi-patch surfaces
+ *   bezsurf/io.h       the .bpt text format, the built-in tea set
+ *   bezsurf/continuity.h  shared and open edges of a surface, continuity across them
  *   bezsurf/mesh.h     tessellation into triangle meshes, mesh export
  * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
  */
@@ -15,6 +17,8 @@
 #include "bezsurf/core.h"
 #include "bezsurf/ops.h"
 #include "bezsurf/surface.h"
+#include "bezsurf/io.h"
+#include "bezsurf/continuity.h"
 #include "bezsurf/mesh.h"
 
 #endif
