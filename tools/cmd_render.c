@@ -21,6 +21,9 @@ static const char usage[] =
     "  -r, --relative F      tessellation tolerance as a fraction of the model's size (default 0.0002)\n"
     "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
     "      --nets            draw the patches' control nets over the surface\n"
+    "      --patch ID        render only patch ID\n"
+    "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
+    "                        the four sub-nets are drawn)\n"
     "      --ss N            supersampling per axis, 1..4 (default 3)\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
@@ -36,7 +39,8 @@ typedef struct render_opts {
     const char *output;
     size_t w, h, ss;
     double azimuth, elevation, rel, color[3];
-    int up_y, up_given, nets;
+    int up_y, up_given, nets, split;
+    size_t patch; /* (size_t)-1: all */
 } render_opts;
 
 static int parse_args(int argc, char **argv, render_opts *o)
@@ -52,8 +56,11 @@ static int parse_args(int argc, char **argv, render_opts *o)
             fputs(usage, stdout);
             return cli_finish("render");
         }
-        if (strcmp(a, "--nets") == 0) {
-            o->nets = 1;
+        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0) {
+            if (a[2] == 'n')
+                o->nets = 1;
+            else
+                o->split = 1;
             continue;
         }
         if (a[0] != '-' || a[1] == '\0') {
@@ -104,6 +111,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
                     return bad_usage("bad colour", val);
                 p = comma ? comma + 1 : p;
             }
+        } else if (strcmp(a, "--patch") == 0) {
+            if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
+                return bad_usage("bad patch id", val);
         } else if (strcmp(a, "--ss") == 0) {
             if (!cli_parse_size(val, &o->ss) || o->ss < 1 || o->ss > 4)
                 return bad_usage("bad supersampling", val);
@@ -224,9 +234,35 @@ static int render(const render_opts *o, const bs_surface *s)
     return rc;
 }
 
+/* The patches to draw: all or --patch ID, each split in four with --split. */
+static int select_patches(const render_opts *o, const bs_surface *s, bs_surface **out)
+{
+    if (o->patch != (size_t)-1 && o->patch >= bs_surface_count(s))
+        return cli_fail("render", CLI_INPUT, "no patch %zu (the surface has %zu)", o->patch, bs_surface_count(s));
+    bs_status st = bs_surface_create(out);
+    for (size_t i = 0; st == BS_OK && i < bs_surface_count(s); i++) {
+        if (o->patch != (size_t)-1 && i != o->patch)
+            continue;
+        const bs_patch *p = bs_surface_get(s, i);
+        if (!o->split) {
+            st = bs_surface_add(*out, p, NULL);
+            continue;
+        }
+        bs_patch *quarter[4] = {NULL, NULL, NULL, NULL};
+        st = bs_patch_split4(p, 0.5, 0.5, quarter);
+        for (int k = 0; k < 4; k++) {
+            if (st == BS_OK)
+                st = bs_surface_add(*out, quarter[k], NULL);
+            bs_patch_destroy(quarter[k]);
+        }
+    }
+    return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+}
+
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot"}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0};
+    render_opts o = {{NULL, "teapot"}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
+                     (size_t)-1};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;
@@ -245,7 +281,11 @@ int cmd_render(int argc, char **argv)
         bs_surface_destroy(s);
         return cli_fail("render", CLI_INPUT, "the surface is not 3-D");
     }
-    rc = render(&o, s);
+    bs_surface *picked = NULL;
+    rc = select_patches(&o, s, &picked);
+    if (rc == CLI_OK)
+        rc = render(&o, picked);
+    bs_surface_destroy(picked);
     bs_surface_destroy(s);
     return rc;
 }

@@ -71,6 +71,11 @@ expect 0 "render teacup nets" -- "$tool" render -b teacup --nets --size 80x60 -a
 check "'$pngcheck' '$work/cup.png' 80 60" "cup.png valid"
 expect 0 "render file" -- "$tool" render --size 400x300 --ss 1 -o "$work/spoon.png" "$data/teaspoon.bpt"
 check "'$pngcheck' '$work/spoon.png' 400 300" "spoon.png valid (several deflate blocks)"
+expect 0 "render split patch" -- "$tool" render --patch 4 --split --nets --size 64x48 -o "$work/split.png"
+check "'$pngcheck' '$work/split.png' 64 48" "split.png valid"
+check "grep -q '64x48' '$work/out'" "render reports its size"
+expect 2 "render no such patch" -- "$tool" render --patch 32 -o "$work/none.png"
+expect 1 "render bad patch id" -- "$tool" render --patch x
 expect 1 "render bad size" -- "$tool" render --size 10x10
 expect 1 "render bad size text" -- "$tool" render --size 100
 expect 1 "render bad elevation" -- "$tool" render -e 91
