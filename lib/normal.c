@@ -164,10 +164,27 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
     return BS_NORMAL_UNDEFINED;
 }
 
+/* Squares that can be formed and multiplied in pairs without overflow or underflow. */
+static int square_safe(double q) { return q > 0x1p-450 && q < 0x1p450; }
+
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm)
 {
     double a0[3], b0[3], c0[3];
+    /* Fast path, one square root: the usual regular point, with squared lengths and thresholds. */
+    double qa = su[0] * su[0] + su[1] * su[1] + su[2] * su[2];
+    double qb = sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2];
+    if (square_safe(qa) && square_safe(qb) && qa > sc->zu * sc->zu && qb > sc->zv * sc->zv) {
+        cross3(su, sv, c0);
+        double qc = c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2];
+        if (qc > (TAU * TAU) * (qa * qb)) {
+            double len = sqrt(qc);
+            for (int k = 0; k < 3; k++)
+                nrm[k] = c0[k] / len;
+            return BS_NORMAL_REGULAR;
+        }
+    }
+    /* General path: scaled lengths, zero tests, then the limit rule. */
     double lu = norm3(su), lv = norm3(sv);
     if (!isfinite(lu) || !isfinite(lv)) {
         nrm[0] = nrm[1] = nrm[2] = 0.0;
