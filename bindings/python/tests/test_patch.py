@@ -81,6 +81,38 @@ class CopyAndLifetimeTest(unittest.TestCase):
         self.assertEqual(copy.copy(q).ctrl, q.ctrl)
         self.assertEqual(copy.deepcopy(q).ctrl, q.ctrl)
 
+    def test_handles_are_destroyed_exactly_once(self):
+        destroyed = []
+        real = bezsurf.Patch._destroy
+
+        def counting(handle):
+            destroyed.append(handle)
+            real(handle)
+
+        bezsurf.Patch._destroy = counting
+        try:
+            p = bezsurf.Patch(NET)
+            h = p._handle
+            p.close()
+            p.close()
+            self.assertEqual(destroyed, [h])
+            with bezsurf.Patch(NET) as q:
+                h = q._handle
+            self.assertEqual(destroyed[-1], h)
+            r = bezsurf.Patch(NET)
+            h = r._handle
+            del r                                   # released when the last reference goes
+            self.assertEqual(destroyed[-1], h)
+            s = bezsurf.Surface([bezsurf.Patch(NET)])
+            n = len(destroyed)                      # the temporary patch above is gone by now
+            borrowed = s[0]
+            borrowed.close()
+            del borrowed
+            self.assertEqual(len(destroyed), n)     # a borrowed patch never frees its handle
+            s.close()
+        finally:
+            bezsurf.Patch._destroy = real
+
     def test_pickle(self):
         p = bezsurf.Patch(NET, [[1, 2, 1]] * 3)
         q = pickle.loads(pickle.dumps(p))
