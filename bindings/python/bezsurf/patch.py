@@ -220,14 +220,16 @@ class Patch(Handle):
         if derivatives:
             dus = call.output(self.dim, du_out, "du_out")
             dvs = call.output(self.dim, dv_out, "dv_out")
-        if derivatives or not normals:
-            LIB.bs_patch_eval(self._ptr, call.n, call.u, call.v, pos.views,
-                              dus.views if dus else None, dvs.views if dvs else None)
+        # Normals first: their call fails (dimension) before anything is written, so a failure
+        # leaves every output untouched, as a single C call would.
         if normals:
             nrm = call.output(3, normal_out, "normal_out")
             kinds = B.KindOutput(call.n, call.numpy, kind_out)
             LIB.bs_patch_eval_normal(self._ptr, call.n, call.u, call.v,
                                      None if derivatives else pos.views, nrm.views, kinds.address)
+        if derivatives or not normals:
+            LIB.bs_patch_eval(self._ptr, call.n, call.u, call.v, pos.views,
+                              dus.views if dus else None, dvs.views if dvs else None)
         if not derivatives and not normals:
             return call.finish(pos.result())
         return Evaluation(*(call.finish(x.result() if x is not None else None)

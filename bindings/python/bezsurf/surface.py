@@ -202,15 +202,15 @@ class Surface(Handle):
         if derivatives:
             dus = call.output(dim, du_out, "du_out")
             dvs = call.output(dim, dv_out, "dv_out")
-        if derivatives or not normals:
-            LIB.bs_surface_eval(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
-                                dus.views if dus else None, dvs.views if dvs else None)
-        if normals:
+        if normals:  # first, so that a failure leaves every output untouched
             nrm = call.output(3, normal_out, "normal_out")
             kinds = B.KindOutput(call.n, call.numpy, kind_out)
             LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
                                        None if derivatives else pos.views, nrm.views,
                                        kinds.address)
+        if derivatives or not normals:
+            LIB.bs_surface_eval(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
+                                dus.views if dus else None, dvs.views if dvs else None)
         del keep
         if not derivatives and not normals:
             return call.finish(pos.result())

@@ -241,6 +241,11 @@ class NumpyEvalTest(unittest.TestCase):
             self.p.eval(self.u, self.v, normal_out=np.zeros((len(U), 3)))
         with self.assertRaises(ValueError):
             self.p.eval_grid(self.u, self.v, du_out=np.zeros((len(U) ** 2, 3)))
+        flat = bezsurf.Patch([[[0, 0], [0, 1]], [[1, 0], [1, 1]]])
+        out = np.full((len(U), 2), -1.0)
+        with self.assertRaises(bezsurf.DimensionError):
+            flat.eval(self.u, self.v, derivatives=True, normals=True, out=out)
+        self.assertTrue(np.all(out == -1.0))    # nothing written on failure
         ro = np.zeros((len(U), 3))
         ro.flags.writeable = False
         with self.assertRaises(ValueError):
