@@ -47,6 +47,10 @@ static int read_stdin(const char *cmd, bs_surface **out)
     char *buf = NULL;
     for (;;) {
         if (len == cap) {
+            if (cap >= ((size_t)256 << 20)) {
+                free(buf);
+                return cli_fail(cmd, CLI_INPUT, "<stdin>: more than 256 MiB");
+            }
             char *grown = realloc(buf, cap ? 2 * cap : 65536);
             if (grown == NULL) {
                 free(buf);

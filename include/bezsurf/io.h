@@ -50,7 +50,7 @@ BS_API bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_erro
  * @param[out] err   NULL, or receives the error position and reason on BS_ERR_PARSE or BS_ERR_IO.
  * @param[out] out   receives the new surface (NULL on failure).
  * @return BS_OK; BS_ERR_INVALID_ARG if path or out is NULL; BS_ERR_IO if the file cannot be opened
- *         or read; BS_ERR_PARSE; BS_ERR_NO_MEMORY.
+ *         or read, or is larger than 256 MiB; BS_ERR_PARSE; BS_ERR_NO_MEMORY.
  * @since 1.0
  */
 BS_API bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out);
