@@ -5,6 +5,7 @@
 #include <bezsurf.h>
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -205,8 +206,18 @@ static void test_pole(void)
     bs_surface_destroy(s);
 }
 
+/* The frozen layout documented in docs/continuity.md (bindings rely on it). */
+static void test_layout(void)
+{
+    CHECK(sizeof(bs_edge_continuity) == 56 && offsetof(bs_edge_continuity, samples) == 28 &&
+          offsetof(bs_edge_continuity, c0_gap) == 32 && offsetof(bs_edge_continuity, c1_defect) == 48);
+    CHECK(sizeof(bs_open_edge) == 8 && offsetof(bs_open_edge, side) == 4);
+    CHECK(sizeof(bs_parse_error) == 2 * sizeof(size_t) + 96);
+}
+
 int main(void)
 {
+    test_layout();
     test_fold(0.0);
     test_fold(0.3);
     test_fold(1.2);
