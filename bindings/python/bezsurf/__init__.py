@@ -4,10 +4,11 @@ The binding is a thin ctypes layer over the C library ``libbezsurf.so.1``: every
 happens in C. The library is loaded from ``$BEZSURF_LIBRARY`` when set, else by its SONAME from
 the system library search path, and must be of major version 1.
 
-Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hodographs, ...) and
-:class:`Surface` (an ordered set of patches). Errors are :class:`BezsurfError` subclasses. numpy
-is optional: numpy inputs give numpy results written in place by the library, other inputs give
-lists of tuples.
+Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hodographs, ...),
+:class:`Surface` (an ordered set of patches: evaluation, .bpt files, the built-in tea set,
+continuity, tessellation) and :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export).
+Errors are :class:`BezsurfError` subclasses. numpy is optional: numpy inputs give numpy results
+written in place by the library, other inputs give lists of tuples.
 """
 
 from ._errors import (BezsurfError, BezsurfIOError, DegreeError, DimensionError, DomainError,
