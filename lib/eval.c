@@ -46,13 +46,13 @@ void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, i
         const double *net = p->hom + c * p->nctrl;
         double acc[B], accu[B], accv[B];
         for (size_t k = 0; k < B; k++)
-            acc[k] = accu[k] = accv[k] = 0.0;
+            acc[k] = accu[k] = accv[k] = -0.0;
         /* Per column j: contract u (i ascending) into q, qu, qv held in registers, then add the
          * column's v-weighted share to the results (j ascending). */
         for (size_t j = 0; j <= n; j++) {
             double q[B], qu[B], qv[B];
             for (size_t k = 0; k < B; k++)
-                q[k] = qu[k] = qv[k] = 0.0;
+                q[k] = qu[k] = qv[k] = -0.0;
             if (!first) {
                 for (size_t i = 0; i <= m; i++) {
                     double pij = net[i * n1 + j];

@@ -155,6 +155,11 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm);
+/* bsi_normal at nb points, the regular case vectorised: su[c][b], sv[c][b] in, nrm[c][b] and
+ * kind[b] out; point b is at (u[b*ustep], v[b]). Same bits as bsi_normal point by point. */
+void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
+                      size_t ustep, const double *v, const double *const *su,
+                      const double *const *sv, double *const *nrm, unsigned char *kind);
 /* ---- Curve operations applied fibre by fibre to coordinate-major nets (lib/fiber.c) ----
  * A net here is ncoord planes of (deg_u+1)(deg_v+1) doubles, as struct bs_patch's hom. A fibre is
  * one row of a plane along a direction: fixed j for BS_DIR_U (index i), fixed i for BS_DIR_V. */

@@ -202,6 +202,45 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
     return limit_normal(p, sc, u, v, a0, b0, nrm);
 }
 
+/* The regular case of bsi_normal for nb points at once, with the same operations per point (so
+ * the same bits), vectorised over the points; the points it cannot settle (a derivative too short
+ * or the cross product too small, or a square out of range) go through bsi_normal one by one.
+ * Point b has parameters (u[b*ustep], v[b]). */
+void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
+                      size_t ustep, const double *v, const double *const *su,
+                      const double *const *sv, double *const *nrm, unsigned char *kind)
+{
+    const double *a0 = su[0], *a1 = su[1], *a2 = su[2], *b0 = sv[0], *b1 = sv[1], *b2 = sv[2];
+    double *n0 = nrm[0], *n1 = nrm[1], *n2 = nrm[2];
+    double zu2 = sc->zu * sc->zu, zv2 = sc->zv * sc->zv;
+    size_t slow = 0;
+    for (size_t b = 0; b < nb; b++) {
+        double x0 = a0[b], x1 = a1[b], x2 = a2[b], y0 = b0[b], y1 = b1[b], y2 = b2[b];
+        double qa = x0 * x0 + x1 * x1 + x2 * x2;
+        double qb = y0 * y0 + y1 * y1 + y2 * y2;
+        double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
+        double qc = c0 * c0 + c1 * c1 + c2 * c2;
+        int ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
+                 (qb > zv2) & (qc > (TAU * TAU) * (qa * qb));
+        double inv = 1.0 / sqrt(qc);
+        n0[b] = c0 * inv;
+        n1[b] = c1 * inv;
+        n2[b] = c2 * inv;
+        kind[b] = ok ? BS_NORMAL_REGULAR : 0xff;
+        slow += (size_t)!ok;
+    }
+    for (size_t b = 0; slow > 0 && b < nb; b++) {
+        if (kind[b] == BS_NORMAL_REGULAR)
+            continue;
+        double x[3] = {a0[b], a1[b], a2[b]}, y[3] = {b0[b], b1[b], b2[b]}, r[3];
+        kind[b] = bsi_normal(p, sc, u[b * ustep], v[b], x, y, r);
+        n0[b] = r[0];
+        n1[b] = r[1];
+        n2[b] = r[2];
+        slow--;
+    }
+}
+
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
                                const bs_view *pos, const bs_view *nrm, unsigned char *kind)
 {
