@@ -36,6 +36,15 @@ static void cross3(const double *a, const double *b, double *c)
 
 static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b);
 
+/* x^k for small k by repeated multiplication (no call to pow in the per-point paths). */
+static double ipow(double x, int k)
+{
+    double r = 1.0;
+    for (int i = 0; i < k; i++)
+        r *= x;
+    return r;
+}
+
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
 {
     /* D: diagonal of the net's bounding box; rho: weight ratio. |S_u| <= m D rho on [0,1]^2 is a
@@ -71,7 +80,7 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
  * computed partial derivative cannot be told from zero. */
 static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b)
 {
-    double f = sc->noise * ldexp(1.0, a + b) * pow(sc->rho, a + b);
+    double f = sc->noise * ldexp(1.0, a + b) * ipow(sc->rho, a + b);
     for (int r = 0; r < a; r++)
         f *= (double)(p->deg_u > (size_t)r ? p->deg_u - (size_t)r : 1);
     for (int r = 0; r < b; r++)
@@ -126,14 +135,14 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
             binom[a] = binom[a - 1] * (k - a + 1) / a;
         double na = 0.0, nb = 0.0;
         for (int a = 0; a <= k; a++) {
-            double w = fabs(binom[a] * pow(du, a) * pow(dv, k - a));
+            double w = fabs(binom[a] * ipow(du, a) * ipow(dv, k - a));
             na += w * deriv_noise(p, sc, a + 1, k - a);
             nb += w * deriv_noise(p, sc, a, k - a + 1);
         }
         for (int c = 0; c < 3; c++) {
             double sa = 0.0, sb = 0.0;
             for (int a = 0; a <= k; a++) {
-                double w = binom[a] * pow(du, a) * pow(dv, k - a);
+                double w = binom[a] * ipow(du, a) * ipow(dv, k - a);
                 sa += w * tab[((size_t)(a + 1) * (KD + 1) + (size_t)(k - a)) * 3 + (size_t)c];
                 sb += w * tab[((size_t)a * (KD + 1) + (size_t)(k - a + 1)) * 3 + (size_t)c];
             }
@@ -202,6 +211,29 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
     return limit_normal(p, sc, u, v, a0, b0, nrm);
 }
 
+/* The regular rule's arithmetic for ne points (flag 1.0 where it does not settle the point). */
+static void regular_kernel(size_t ne, const double *restrict a0, const double *restrict a1,
+                           const double *restrict a2, const double *restrict b0,
+                           const double *restrict b1, const double *restrict b2, double zu2,
+                           double zv2, double *restrict n0, double *restrict n1,
+                           double *restrict n2, double *restrict flag)
+{
+    for (size_t b = 0; b < ne; b++) {
+        double x0 = a0[b], x1 = a1[b], x2 = a2[b], y0 = b0[b], y1 = b1[b], y2 = b2[b];
+        double qa = x0 * x0 + x1 * x1 + x2 * x2;
+        double qb = y0 * y0 + y1 * y1 + y2 * y2;
+        double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
+        double qc = c0 * c0 + c1 * c1 + c2 * c2;
+        long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) &
+                  (qa > zu2) & (qb > zv2) & (qc > (TAU * TAU) * (qa * qb));
+        double inv = 1.0 / sqrt(qc);
+        n0[b] = c0 * inv;
+        n1[b] = c1 * inv;
+        n2[b] = c2 * inv;
+        flag[b] = ok ? 0.0 : 1.0;
+    }
+}
+
 /* The regular case of bsi_normal for nb points at once, with the same operations per point (so
  * the same bits), vectorised over the points; the points it cannot settle (a derivative too short
  * or the cross product too small, or a square out of range) go through bsi_normal one by one.
@@ -210,34 +242,33 @@ void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const 
                       size_t ustep, const double *v, const double *const *su,
                       const double *const *sv, double *const *nrm, unsigned char *kind)
 {
-    const double *a0 = su[0], *a1 = su[1], *a2 = su[2], *b0 = sv[0], *b1 = sv[1], *b2 = sv[2];
-    double *n0 = nrm[0], *n1 = nrm[1], *n2 = nrm[2];
+    /* Inputs and outputs are distinct arrays (callers' contract). */
+    const double *restrict a0 = su[0], *restrict a1 = su[1], *restrict a2 = su[2];
+    const double *restrict b0 = sv[0], *restrict b1 = sv[1], *restrict b2 = sv[2];
+    double *restrict n0 = nrm[0], *restrict n1 = nrm[1], *restrict n2 = nrm[2];
+    unsigned char *restrict kd = kind;
     double zu2 = sc->zu * sc->zu, zv2 = sc->zv * sc->zv;
-    size_t slow = 0;
-    for (size_t b = 0; b < nb; b++) {
-        double x0 = a0[b], x1 = a1[b], x2 = a2[b], y0 = b0[b], y1 = b1[b], y2 = b2[b];
-        double qa = x0 * x0 + x1 * x1 + x2 * x2;
-        double qb = y0 * y0 + y1 * y1 + y2 * y2;
-        double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
-        double qc = c0 * c0 + c1 * c1 + c2 * c2;
-        int ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
-                 (qb > zv2) & (qc > (TAU * TAU) * (qa * qb));
-        double inv = 1.0 / sqrt(qc);
-        n0[b] = c0 * inv;
-        n1[b] = c1 * inv;
-        n2[b] = c2 * inv;
-        kind[b] = ok ? BS_NORMAL_REGULAR : 0xff;
-        slow += (size_t)!ok;
-    }
-    for (size_t b = 0; slow > 0 && b < nb; b++) {
-        if (kind[b] == BS_NORMAL_REGULAR)
-            continue;
-        double x[3] = {a0[b], a1[b], a2[b]}, y[3] = {b0[b], b1[b], b2[b]}, r[3];
-        kind[b] = bsi_normal(p, sc, u[b * ustep], v[b], x, y, r);
-        n0[b] = r[0];
-        n1[b] = r[1];
-        n2[b] = r[2];
-        slow--;
+    enum { CHUNK = 64 };
+    for (size_t s0 = 0; s0 < nb; s0 += CHUNK) {
+        size_t ne = nb - s0 < CHUNK ? nb - s0 : CHUNK;
+        /* 1.0 marks a point for the slow path (a double flag keeps the loop vectorisable). */
+        double flag[CHUNK], nslow = 0.0;
+        regular_kernel(ne, a0 + s0, a1 + s0, a2 + s0, b0 + s0, b1 + s0, b2 + s0, zu2, zv2, n0 + s0,
+                       n1 + s0, n2 + s0, flag);
+        for (size_t k = 0; k < ne; k++)
+            nslow = nslow > flag[k] ? nslow : flag[k];
+        for (size_t k = 0; k < ne; k++)
+            kd[s0 + k] = BS_NORMAL_REGULAR;
+        for (size_t k = 0; nslow > 0.0 && k < ne; k++) {
+            size_t b = s0 + k;
+            if (flag[k] == 0.0)
+                continue;
+            double x[3] = {a0[b], a1[b], a2[b]}, y[3] = {b0[b], b1[b], b2[b]}, r[3];
+            kd[b] = bsi_normal(p, sc, u[b * ustep], v[b], x, y, r);
+            n0[b] = r[0];
+            n1[b] = r[1];
+            n2[b] = r[2];
+        }
     }
 }
 
