@@ -122,12 +122,23 @@ void bsi_project_first(const bs_patch *p, const double *h, const double *hu, con
     }
 }
 
-static void put(const bs_view *views, size_t dim, size_t idx, const double *val)
+/* Coordinate c of nb results src[c*B + k] to views[c] from element idx0 on (packed views take a
+ * plain loop). */
+static void put_block(const bs_view *views, size_t dim, size_t idx0, const double *src, size_t nb)
 {
     if (views == NULL)
         return;
-    for (size_t c = 0; c < dim; c++)
-        *bsi_at(&views[c], idx) = val[c];
+    for (size_t c = 0; c < dim; c++) {
+        const double *x = src + c * B;
+        if (bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double)) {
+            double *d = (double *)views[c].data + idx0;
+            for (size_t k = 0; k < nb; k++)
+                d[k] = x[k];
+        } else {
+            for (size_t k = 0; k < nb; k++)
+                *bsi_at(&views[c], idx0 + k) = x[k];
+        }
+    }
 }
 
 bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
@@ -163,16 +174,26 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
             }
         }
         bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
-        for (size_t k = 0; k < nb; k++) {
-            double s[BS_MAX_DIM], su[BS_MAX_DIM], sv[BS_MAX_DIM];
-            bsi_project_first(p, h + k, hu + k, hv + k, B, s, first ? su : NULL, sv);
+        if (p->rational)
+            for (size_t k = 0; k < nb; k++) {
+                /* in place: S replaces A, S_u and S_v replace A_u and A_v */
+                double s[BS_MAX_DIM], su[BS_MAX_DIM], sv[BS_MAX_DIM];
+                bsi_project_first(p, h + k, hu + k, hv + k, B, s, first ? su : NULL, sv);
+                for (size_t c = 0; c < dim; c++) {
+                    h[c * B + k] = s[c];
+                    if (first) {
+                        hu[c * B + k] = su[c];
+                        hv[c * B + k] = sv[c];
+                    }
+                }
+            }
+        for (size_t k = 0; k < nb; k++)
             if (bad[k])
                 for (size_t c = 0; c < dim; c++)
-                    s[c] = su[c] = sv[c] = NAN;
-            put(pos, dim, k0 + k, s);
-            put(du, dim, k0 + k, su);
-            put(dv, dim, k0 + k, sv);
-        }
+                    h[c * B + k] = hu[c * B + k] = hv[c * B + k] = NAN;
+        put_block(pos, dim, k0, h, nb);
+        put_block(du, dim, k0, hu, nb);
+        put_block(dv, dim, k0, hv, nb);
     }
     return BS_OK;
 }

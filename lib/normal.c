@@ -306,24 +306,34 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
             }
         }
         bsi_eval_first_block(p, ub, vb, 1, h, hu, hv);
+        if (p->rational)
+            for (size_t k = 0; k < nb; k++) {
+                double s[3], su[3], sv[3];
+                bsi_project_first(p, h + k, hu + k, hv + k, B, s, su, sv);
+                for (size_t c = 0; c < 3; c++) {
+                    h[c * B + k] = s[c];
+                    hu[c * B + k] = su[c];
+                    hv[c * B + k] = sv[c];
+                }
+            }
+        double nv[3 * B];
+        unsigned char kd[B];
+        const double *pu[3] = {hu, hu + B, hu + 2 * B}, *pv[3] = {hv, hv + B, hv + 2 * B};
+        double *pn[3] = {nv, nv + B, nv + 2 * B};
+        bsi_normal_block(p, &sc, nb, ub, 1, vb, pu, pv, pn, kd);
         for (size_t k = 0; k < nb; k++) {
-            double s[3], su[3], sv[3], nv[3];
-            unsigned char kd;
-            bsi_project_first(p, h + k, hu + k, hv + k, B, s, su, sv);
             if (bad[k]) {
-                s[0] = s[1] = s[2] = nv[0] = nv[1] = nv[2] = NAN;
-                kd = BS_NORMAL_UNDEFINED;
-            } else {
-                kd = bsi_normal(p, &sc, ub[k], vb[k], su, sv, nv);
+                h[k] = h[B + k] = h[2 * B + k] = nv[k] = nv[B + k] = nv[2 * B + k] = NAN;
+                kd[k] = BS_NORMAL_UNDEFINED;
             }
             for (size_t c = 0; c < 3; c++) {
                 if (pos)
-                    *bsi_at(&pos[c], k0 + k) = s[c];
+                    *bsi_at(&pos[c], k0 + k) = h[c * B + k];
                 if (nrm)
-                    *bsi_at(&nrm[c], k0 + k) = nv[c];
+                    *bsi_at(&nrm[c], k0 + k) = nv[c * B + k];
             }
             if (kind)
-                kind[k0 + k] = kd;
+                kind[k0 + k] = kd[k];
         }
     }
     return BS_OK;
