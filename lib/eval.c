@@ -33,9 +33,90 @@ static void block_weights(size_t deg, const double *t, double *w, double *wm)
     }
 }
 
+/* block_weights for degree 3 written out: the same operations per lane (same bits). */
+static void weights3(const double *t, double *w, double *wm)
+{
+    for (size_t k = 0; k < B; k++) {
+        double x = t[k], s = 1.0 - x;
+        double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
+        double b0 = 0.0 + s * a0, b1 = x * a0 + s * a1, b2 = x * a1;
+        wm[k] = b0;
+        wm[B + k] = b1;
+        wm[2 * B + k] = b2;
+        w[k] = 0.0 + s * b0;
+        w[B + k] = x * b0 + s * b1;
+        w[2 * B + k] = x * b1 + s * b2;
+        w[3 * B + k] = x * b2;
+    }
+}
+
+/* Bicubic value only, as the general loop below does it. */
+static void bicubic_value(const double *net, const double *bu, const double *bv, double *h)
+{
+    for (size_t k = 0; k < B; k++) {
+        double u0 = bu[k], u1 = bu[B + k], u2 = bu[2 * B + k], u3 = bu[3 * B + k];
+#define Q(j) (u0 * net[j] + u1 * net[4 + (j)] + u2 * net[8 + (j)] + u3 * net[12 + (j)])
+        h[k] = bv[k] * Q(0) + bv[B + k] * Q(1) + bv[2 * B + k] * Q(2) + bv[3 * B + k] * Q(3);
+#undef Q
+    }
+}
+
+/* Bicubic value and first partials: the general loop below with every index fixed, so the same
+ * operations in the same order per point (same bits), kept in registers and vectorised over the
+ * block's points. */
+static void bicubic_first(const double *net, const double *bu, const double *bum, const double *bv,
+                          const double *bvm, double *h, double *hu, double *hv)
+{
+#define P(i, j) net[(i) * 4 + (j)]
+#define D(i, j) (P((i) + 1, j) - P(i, j))
+#define E(i, j) (P(i, (j) + 1) - P(i, j))
+    double d[3][4], e[4][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            d[i][j] = D(i, j);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 3; j++)
+            e[i][j] = E(i, j);
+    for (size_t k = 0; k < B; k++) {
+        double u0 = bu[k], u1 = bu[B + k], u2 = bu[2 * B + k], u3 = bu[3 * B + k];
+        double m0 = bum[k], m1 = bum[B + k], m2 = bum[2 * B + k];
+#define Q(j) (u0 * P(0, j) + u1 * P(1, j) + u2 * P(2, j) + u3 * P(3, j))
+#define QU(j) (m0 * d[0][j] + m1 * d[1][j] + m2 * d[2][j])
+#define QV(j) (u0 * e[0][j] + u1 * e[1][j] + u2 * e[2][j] + u3 * e[3][j])
+#define V(j) bv[(j) * B + k]
+#define VM(j) bvm[(j) * B + k]
+        double acc = V(0) * Q(0) + V(1) * Q(1) + V(2) * Q(2) + V(3) * Q(3);
+        double accu = V(0) * QU(0) + V(1) * QU(1) + V(2) * QU(2) + V(3) * QU(3);
+        double accv = VM(0) * QV(0) + VM(1) * QV(1) + VM(2) * QV(2);
+#undef Q
+#undef QU
+#undef QV
+#undef V
+#undef VM
+        h[k] = acc;
+        hu[k] = 3.0 * accu;
+        hv[k] = 3.0 * accv;
+    }
+#undef P
+#undef D
+#undef E
+}
+
 void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
                           double *h, double *hu, double *hv)
 {
+    if (p->deg_u == 3 && p->deg_v == 3) {
+        double bu[4 * B], bum[3 * B], bv[4 * B], bvm[3 * B];
+        weights3(u, bu, bum);
+        weights3(v, bv, bvm);
+        for (size_t c = 0; c < p->ncoord; c++) {
+            if (first)
+                bicubic_first(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B, hu + c * B, hv + c * B);
+            else
+                bicubic_value(p->hom + c * p->nctrl, bu, bv, h + c * B);
+        }
+        return;
+    }
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
     double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
     block_weights(m, u, bu, bum);
