@@ -34,7 +34,7 @@ static void block_weights(size_t deg, const double *t, double *w, double *wm)
 }
 
 /* block_weights for degree 3 written out: the same operations per lane (same bits). */
-static void weights3(const double *t, double *w, double *wm)
+static void weights3(const double *restrict t, double *restrict w, double *restrict wm)
 {
     for (size_t k = 0; k < B; k++) {
         double x = t[k], s = 1.0 - x;
@@ -51,7 +51,8 @@ static void weights3(const double *t, double *w, double *wm)
 }
 
 /* Bicubic value only, as the general loop below does it. */
-static void bicubic_value(const double *net, const double *bu, const double *bv, double *h)
+static void bicubic_value(const double *restrict net, const double *restrict bu,
+                          const double *restrict bv, double *restrict h)
 {
     for (size_t k = 0; k < B; k++) {
         double u0 = bu[k], u1 = bu[B + k], u2 = bu[2 * B + k], u3 = bu[3 * B + k];
@@ -64,8 +65,10 @@ static void bicubic_value(const double *net, const double *bu, const double *bv,
 /* Bicubic value and first partials: the general loop below with every index fixed, so the same
  * operations in the same order per point (same bits), kept in registers and vectorised over the
  * block's points. */
-static void bicubic_first(const double *net, const double *bu, const double *bum, const double *bv,
-                          const double *bvm, double *h, double *hu, double *hv)
+static void bicubic_first(const double *restrict net, const double *restrict bu,
+                          const double *restrict bum, const double *restrict bv,
+                          const double *restrict bvm, double *restrict h, double *restrict hu,
+                          double *restrict hv)
 {
 #define P(i, j) net[(i) * 4 + (j)]
 #define D(i, j) (P((i) + 1, j) - P(i, j))
