@@ -73,19 +73,12 @@ static void bicubic_first(const double *restrict net, const double *restrict bu,
 #define P(i, j) net[(i) * 4 + (j)]
 #define D(i, j) (P((i) + 1, j) - P(i, j))
 #define E(i, j) (P(i, (j) + 1) - P(i, j))
-    double d[3][4], e[4][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            d[i][j] = D(i, j);
-    for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 3; j++)
-            e[i][j] = E(i, j);
     for (size_t k = 0; k < B; k++) {
         double u0 = bu[k], u1 = bu[B + k], u2 = bu[2 * B + k], u3 = bu[3 * B + k];
         double m0 = bum[k], m1 = bum[B + k], m2 = bum[2 * B + k];
 #define Q(j) (u0 * P(0, j) + u1 * P(1, j) + u2 * P(2, j) + u3 * P(3, j))
-#define QU(j) (m0 * d[0][j] + m1 * d[1][j] + m2 * d[2][j])
-#define QV(j) (u0 * e[0][j] + u1 * e[1][j] + u2 * e[2][j] + u3 * e[3][j])
+#define QU(j) (m0 * D(0, j) + m1 * D(1, j) + m2 * D(2, j))
+#define QV(j) (u0 * E(0, j) + u1 * E(1, j) + u2 * E(2, j) + u3 * E(3, j))
 #define V(j) bv[(j) * B + k]
 #define VM(j) bvm[(j) * B + k]
         double acc = V(0) * Q(0) + V(1) * Q(1) + V(2) * Q(2) + V(3) * Q(3);
@@ -108,8 +101,9 @@ static void bicubic_first(const double *restrict net, const double *restrict bu,
 void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
                           double *h, double *hu, double *hv)
 {
-    if (p->deg_u == 3 && p->deg_v == 3) {
-        double bu[4 * B], bum[3 * B], bv[4 * B], bvm[3 * B];
+    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
+    double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
+    if (m == 3 && n == 3) {
         weights3(u, bu, bum);
         weights3(v, bv, bvm);
         for (size_t c = 0; c < p->ncoord; c++) {
@@ -120,8 +114,6 @@ void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, i
         }
         return;
     }
-    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
-    double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
     block_weights(m, u, bu, bum);
     block_weights(n, v, bv, bvm);
     int du = first && m > 0, dv = first && n > 0;
