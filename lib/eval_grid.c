@@ -97,6 +97,36 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
             dst[b] = scale * dst[b];
 }
 
+/* Cubic rows of a polynomial 3-D patch, positions and normals only: the three coordinates'
+ * combine4 sums (value, S_u scaled by m, S_v by 3) and the regular normal rule, fused so that the
+ * derivatives never leave registers. Same operations per point as combine() followed by
+ * bsi_normal_block (same bits); flag[b] = 1.0 marks points left to bsi_normal. */
+static void cubic_pos_normal(size_t nb, const double *restrict w, const double *restrict wm,
+                             const double *restrict q, const double *restrict qu,
+                             const double *restrict qv, double m, double zu2, double zv2,
+                             double *restrict s0, double *restrict s1, double *restrict s2,
+                             double *restrict n0, double *restrict n1, double *restrict n2,
+                             double *restrict flag)
+{
+    for (size_t b = 0; b < nb; b++) {
+        double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
+        double v0 = wm[b], v1 = wm[COLS + b], v2 = wm[2 * COLS + b];
+#define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
+#define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
+        s0[b] = VAL(q);
+        s1[b] = VAL(q + 4);
+        s2[b] = VAL(q + 8);
+        bsi_rnormal r = bsi_regular_normal(m * VAL(qu), m * VAL(qu + 4), m * VAL(qu + 8), DV(qv),
+                                           DV(qv + 4), DV(qv + 8), zu2, zv2);
+#undef VAL
+#undef DV
+        n0[b] = r.n0;
+        n1[b] = r.n1;
+        n2[b] = r.n2;
+        flag[b] = r.flag;
+    }
+}
+
 static void fill(double *dst, size_t nb, double x)
 {
     for (size_t b = 0; b < nb; b++)
@@ -144,8 +174,49 @@ typedef struct grid_call {
     const bs_view *pos, *du, *dv, *nrm;
     unsigned char *kind;
     int first, normals, wdu, wdv;
+    int fused; /* cubic_pos_normal applies */
     bsi_nscale sc;
 } grid_call;
+
+/* row_pass for cubic rows of polynomial 3-D patches asked for positions and normals only. Points
+ * with non-finite parameters are left to row_pass (gc->fused is off when there are any). */
+static void fused_row(const grid_call *gc, grid_scratch *g, double t, const double *vcol,
+                      size_t nb, size_t idx0)
+{
+    double *ps[3], *pn[3];
+    for (size_t c = 0; c < 3; c++) {
+        ps[c] = target(gc->pos, c, idx0, g->s + c * COLS);
+        pn[c] = target(gc->nrm, c, idx0, g->nrm + c * COLS);
+    }
+    unsigned char *kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
+    double *flag = g->hu; /* free in this pass */
+    cubic_pos_normal(nb, g->wv, g->wvm, g->q, g->qu, g->qv, (double)gc->p->deg_u,
+                     gc->sc.zu * gc->sc.zu, gc->sc.zv * gc->sc.zv, ps[0], ps[1], ps[2], pn[0],
+                     pn[1], pn[2], flag);
+    for (size_t b = 0; b < nb; b++)
+        kd[b] = BS_NORMAL_REGULAR;
+    for (size_t b = 0; b < nb; b++) {
+        if (flag[b] == 0.0)
+            continue;
+        /* the derivatives again, by the same sums, for the full rule */
+        const double *w = g->wv + b, *wm = g->wvm + b;
+        double su[3], sv[3], r[3];
+        for (size_t c = 0; c < 3; c++) {
+            const double *qu = g->qu + 4 * c, *qv = g->qv + 4 * c;
+            su[c] = (double)gc->p->deg_u *
+                    (w[0] * qu[0] + w[COLS] * qu[1] + w[2 * COLS] * qu[2] + w[3 * COLS] * qu[3]);
+            sv[c] = 3.0 * (wm[0] * qv[0] + wm[COLS] * qv[1] + wm[2 * COLS] * qv[2]);
+        }
+        kd[b] = bsi_normal(gc->p, &gc->sc, t, vcol[b], su, sv, r);
+        pn[0][b] = r[0];
+        pn[1][b] = r[1];
+        pn[2][b] = r[2];
+    }
+    for (size_t c = 0; c < 3; c++) {
+        store(gc->pos, c, idx0, ps[c], nb);
+        store(gc->nrm, c, idx0, pn[c], nb);
+    }
+}
 
 /* One row pass: nb columns of row u = t starting at output index idx0. */
 static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, const double *vcol,
@@ -158,6 +229,10 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     contract_row(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
     int rational = p->rational, first = gc->first;
     double *ps[BS_MAX_DIM], *pu[BS_MAX_DIM], *pv[BS_MAX_DIM];
+    if (gc->fused) {
+        fused_row(gc, g, t, vcol, nb, idx0);
+        return;
+    }
     for (size_t c = 0; c < p->ncoord; c++) {
         /* Polynomial patches write Cartesian results directly; rational ones go through h. */
         int cart = !rational && c < dim;
@@ -287,7 +362,7 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
 
     for (size_t b0 = 0; b0 < nv; b0 += COLS) {
         size_t nb = nv - b0 < COLS ? nv - b0 : COLS;
-        int anybadv = 0;
+        int anybadv = 0, anybadu = 0;
         for (size_t b = 0; b < nb; b++) {
             double t = bsi_cget(v, b0 + b), w[NMAX], wm[NMAX];
             g.badv[b] = (unsigned char)!isfinite(t);
@@ -299,6 +374,10 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
             for (size_t j = 0; j < n; j++)
                 g.wvm[j * COLS + b] = wm[j];
         }
+        for (size_t a = 0; a < nu; a++)
+            anybadu |= !isfinite(bsi_cget(u, a));
+        gc.fused = !p->rational && p->dim == 3 && n == 3 && m > 0 && gc.normals && du == NULL &&
+                   dv == NULL && !anybadu && !anybadv;
         for (size_t a = 0; a < nu; a++) {
             double t = bsi_cget(u, a);
             int badu = !isfinite(t);

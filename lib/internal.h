@@ -220,4 +220,30 @@ void bsi_export_obj(const bs_mesh *m, bsi_sink *s);
 void bsi_export_ply(const bs_mesh *m, int binary, bsi_sink *s);
 void bsi_export_stl(const bs_mesh *m, bsi_sink *s);
 
+/* ---- The regular normal rule at one point (lib/normal.c, lib/eval_grid.c) ----
+ * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
+ * when the point needs bsi_normal. Inline so that every vectorised caller does the same
+ * operations (and gets the same bits). zu2, zv2: the squared zero thresholds of bsi_nscale. */
+#include <math.h>
+typedef struct bsi_rnormal {
+    double n0, n1, n2, flag;
+} bsi_rnormal;
+static inline bsi_rnormal bsi_regular_normal(double x0, double x1, double x2, double y0,
+                                             double y1, double y2, double zu2, double zv2)
+{
+    double qa = x0 * x0 + x1 * x1 + x2 * x2;
+    double qb = y0 * y0 + y1 * y1 + y2 * y2;
+    double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
+    double qc = c0 * c0 + c1 * c1 + c2 * c2;
+    long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
+              (qb > zv2) & (qc > 0x1p-60 * (qa * qb));
+    double inv = 1.0 / sqrt(qc);
+    bsi_rnormal r;
+    r.n0 = c0 * inv;
+    r.n1 = c1 * inv;
+    r.n2 = c2 * inv;
+    r.flag = ok ? 0.0 : 1.0;
+    return r;
+}
+
 #endif

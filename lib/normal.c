@@ -80,7 +80,7 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
  * computed partial derivative cannot be told from zero. */
 static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b)
 {
-    double f = sc->noise * ldexp(1.0, a + b) * ipow(sc->rho, a + b);
+    double f = sc->noise * ipow(2.0, a + b) * ipow(sc->rho, a + b); /* 2^k exact */
     for (int r = 0; r < a; r++)
         f *= (double)(p->deg_u > (size_t)r ? p->deg_u - (size_t)r : 1);
     for (int r = 0; r < b; r++)
@@ -123,7 +123,11 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
     double scratch[(KD + 1) * (BS_MAX_DEGREE + 1) * 2 + (BS_MAX_DEGREE + 1) + (KD + 1) * (KD + 1) * 4];
     double tab[(KD + 1) * (KD + 1) * 3];
     bsi_deriv_table(p, u, v, KD, KD, scratch, tab);
-    double A[KD][3], Bv[KD][3], binom[KD + 1], fact = 1.0;
+    double A[KD][3], Bv[KD][3], binom[KD + 1], fact = 1.0, pu[KD + 1], pv[KD + 1];
+    for (int k = 0; k <= KD; k++) { /* the values of ipow(du, k), ipow(dv, k) */
+        pu[k] = ipow(du, k);
+        pv[k] = ipow(dv, k);
+    }
     for (int c = 0; c < 3; c++) {
         A[0][c] = a0[c];
         Bv[0][c] = b0[c];
@@ -135,14 +139,14 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
             binom[a] = binom[a - 1] * (k - a + 1) / a;
         double na = 0.0, nb = 0.0;
         for (int a = 0; a <= k; a++) {
-            double w = fabs(binom[a] * ipow(du, a) * ipow(dv, k - a));
+            double w = fabs(binom[a] * pu[a] * pv[k - a]);
             na += w * deriv_noise(p, sc, a + 1, k - a);
             nb += w * deriv_noise(p, sc, a, k - a + 1);
         }
         for (int c = 0; c < 3; c++) {
             double sa = 0.0, sb = 0.0;
             for (int a = 0; a <= k; a++) {
-                double w = binom[a] * ipow(du, a) * ipow(dv, k - a);
+                double w = binom[a] * pu[a] * pv[k - a];
                 sa += w * tab[((size_t)(a + 1) * (KD + 1) + (size_t)(k - a)) * 3 + (size_t)c];
                 sb += w * tab[((size_t)a * (KD + 1) + (size_t)(k - a + 1)) * 3 + (size_t)c];
             }
@@ -219,18 +223,11 @@ static void regular_kernel(size_t ne, const double *restrict a0, const double *r
                            double *restrict n2, double *restrict flag)
 {
     for (size_t b = 0; b < ne; b++) {
-        double x0 = a0[b], x1 = a1[b], x2 = a2[b], y0 = b0[b], y1 = b1[b], y2 = b2[b];
-        double qa = x0 * x0 + x1 * x1 + x2 * x2;
-        double qb = y0 * y0 + y1 * y1 + y2 * y2;
-        double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
-        double qc = c0 * c0 + c1 * c1 + c2 * c2;
-        long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) &
-                  (qa > zu2) & (qb > zv2) & (qc > (TAU * TAU) * (qa * qb));
-        double inv = 1.0 / sqrt(qc);
-        n0[b] = c0 * inv;
-        n1[b] = c1 * inv;
-        n2[b] = c2 * inv;
-        flag[b] = ok ? 0.0 : 1.0;
+        bsi_rnormal r = bsi_regular_normal(a0[b], a1[b], a2[b], b0[b], b1[b], b2[b], zu2, zv2);
+        n0[b] = r.n0;
+        n1[b] = r.n1;
+        n2[b] = r.n2;
+        flag[b] = r.flag;
     }
 }
 
