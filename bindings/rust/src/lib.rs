@@ -1,0 +1,64 @@
+//! Safe Rust binding to libbezsurf, a C library for rectangular (tensor-product) Bezier surface
+//! patches.
+//!
+//! The raw C API is in [`sys`]; the rest of the crate wraps it safely: owned handles that free
+//! themselves ([`Patch`], [`Surface`]), failures as [`Error`], slices and strided views
+//! ([`Strided`], [`StridedMut`], [`PointsMut`]) for buffers.
+//!
+//! ```
+//! use bezsurf::Patch;
+//!
+//! // A biquadratic patch in 3-D: 3 x 3 control points, row i along u.
+//! let net = [
+//!     1.0, 0.0, 2.0,   1.0, 2.0, 4.0,   1.0, 3.0, 2.0,
+//!     2.0, 1.0, 0.0,   2.0, 2.0, 2.0,   2.0, 4.0, 0.0,
+//!     4.0, 1.0, 0.0,   3.0, 3.0, 2.0,   4.0, 4.0, 2.0,
+//! ];
+//! let patch = Patch::new(2, 2, 3, &net)?;
+//! assert_eq!((patch.degree_u(), patch.degree_v(), patch.dim()), (2, 2, 3));
+//! assert_eq!(patch.ctrl(), net);
+//! # Ok::<(), bezsurf::Error>(())
+//! ```
+//!
+//! Threads: patches are immutable, so `Patch` and `&PatchRef` are `Send + Sync` and may be
+//! evaluated from any number of threads at once. Lifetimes: a patch borrowed from a surface is a
+//! `&PatchRef` that cannot outlive the surface.
+
+pub mod sys;
+
+mod error;
+mod patch;
+mod strided;
+mod surface;
+
+pub use error::{status_string, Error, ErrorKind, Result};
+pub use patch::{Patch, PatchRef};
+pub use strided::{PointsMut, Strided, StridedMut};
+pub use surface::Surface;
+
+use std::ffi::CStr;
+
+/// Largest degree per direction (`BS_MAX_DEGREE`).
+pub const MAX_DEGREE: usize = sys::BS_MAX_DEGREE;
+/// Largest dimension of a control point (`BS_MAX_DIM`).
+pub const MAX_DIM: usize = sys::BS_MAX_DIM;
+/// The major version of the C library this crate is written for.
+pub const ABI_MAJOR: u32 = 1;
+
+/// Run-time library version number, major*10000 + minor*100 + patch (`bs_version_number`).
+pub fn version_number() -> u32 {
+    // SAFETY: no arguments, no state.
+    unsafe { sys::bs_version_number() }
+}
+
+/// Run-time library version as "MAJOR.MINOR.PATCH" (`bs_version_string`).
+pub fn version_string() -> &'static str {
+    // SAFETY: returns a static NUL-terminated ASCII string, never NULL.
+    unsafe { CStr::from_ptr(sys::bs_version_string()) }.to_str().unwrap_or("")
+}
+
+/// Run-time library version as (major, minor, patch).
+pub fn version() -> (u32, u32, u32) {
+    let n = version_number();
+    (n / 10000, n / 100 % 100, n % 100)
+}

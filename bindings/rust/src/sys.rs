@@ -1,0 +1,146 @@
+//! Raw declarations of the C API (`include/bezsurf/*.h`), written by hand.
+//!
+//! Everything here mirrors the header exactly: the `#[repr(C)]` structs have the C layout (checked
+//! against the header by `tests/layout.rs`), the constants have the header's values and every
+//! function has the C signature (`size_t` is `usize`, `ptrdiff_t` is `isize`, `int` is `c_int`,
+//! `unsigned` is `c_uint`). Calling these is `unsafe`; the safe layer is the rest of the crate.
+
+#![allow(non_camel_case_types)]
+
+use std::os::raw::{c_char, c_int, c_uchar, c_uint};
+
+/// `bs_status`: 0 is success, failures are negative.
+pub type bs_status = c_int;
+
+pub const BS_OK: bs_status = 0;
+pub const BS_ERR_INVALID_ARG: bs_status = -1;
+pub const BS_ERR_NO_MEMORY: bs_status = -2;
+pub const BS_ERR_DEGREE: bs_status = -3;
+pub const BS_ERR_DIMENSION: bs_status = -4;
+pub const BS_ERR_SIZE: bs_status = -5;
+pub const BS_ERR_DOMAIN: bs_status = -6;
+pub const BS_ERR_NONFINITE: bs_status = -7;
+pub const BS_ERR_PARSE: bs_status = -8;
+pub const BS_ERR_IO: bs_status = -9;
+pub const BS_ERR_INCOMPATIBLE: bs_status = -10;
+pub const BS_ERR_UNSUPPORTED: bs_status = -11;
+
+pub const BS_MAX_DEGREE: usize = 64;
+pub const BS_MAX_DIM: usize = 8;
+
+pub const BS_NORMAL_REGULAR: c_uchar = 0;
+pub const BS_NORMAL_LIMIT: c_uchar = 1;
+pub const BS_NORMAL_UNDEFINED: c_uchar = 2;
+
+pub const BS_DIR_U: c_int = 0;
+pub const BS_DIR_V: c_int = 1;
+
+/// A strided output buffer of doubles (`bs_view`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_view {
+    pub data: *mut f64,
+    pub count: usize,
+    pub stride: isize,
+}
+
+/// A strided input buffer of doubles (`bs_cview`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_cview {
+    pub data: *const f64,
+    pub count: usize,
+    pub stride: isize,
+}
+
+/// Opaque patch handle (`bs_patch`); only ever used behind a pointer.
+#[repr(C)]
+pub struct bs_patch {
+    _opaque: [u8; 0],
+}
+
+/// Opaque surface handle (`bs_surface`); only ever used behind a pointer.
+#[repr(C)]
+pub struct bs_surface {
+    _opaque: [u8; 0],
+}
+
+extern "C" {
+    // ---- core.h: status and version ----
+    pub fn bs_version_number() -> c_uint;
+    pub fn bs_version_string() -> *const c_char;
+    pub fn bs_status_string(s: bs_status) -> *const c_char;
+
+    // ---- core.h: patches ----
+    pub fn bs_patch_create(
+        deg_u: usize,
+        deg_v: usize,
+        dim: usize,
+        ctrl: *const f64,
+        weights: *const f64,
+        out: *mut *mut bs_patch,
+    ) -> bs_status;
+    pub fn bs_patch_destroy(p: *mut bs_patch);
+    pub fn bs_patch_clone(p: *const bs_patch, out: *mut *mut bs_patch) -> bs_status;
+    pub fn bs_patch_degree_u(p: *const bs_patch) -> usize;
+    pub fn bs_patch_degree_v(p: *const bs_patch) -> usize;
+    pub fn bs_patch_dim(p: *const bs_patch) -> usize;
+    pub fn bs_patch_is_rational(p: *const bs_patch) -> c_int;
+    pub fn bs_patch_get_ctrl(
+        p: *const bs_patch,
+        ctrl: *mut f64,
+        ctrl_cap: usize,
+        weights: *mut f64,
+        weights_cap: usize,
+    ) -> bs_status;
+
+    // ---- core.h: evaluation ----
+    pub fn bs_patch_eval(
+        p: *const bs_patch,
+        n: usize,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        du: *const bs_view,
+        dv: *const bs_view,
+    ) -> bs_status;
+    pub fn bs_patch_eval_deriv(
+        p: *const bs_patch,
+        ku: c_uint,
+        kv: c_uint,
+        n: usize,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        out: *const bs_view,
+    ) -> bs_status;
+    pub fn bs_patch_eval_normal(
+        p: *const bs_patch,
+        n: usize,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut c_uchar,
+    ) -> bs_status;
+    pub fn bs_patch_eval_grid(
+        p: *const bs_patch,
+        nu: usize,
+        u: *const bs_cview,
+        nv: usize,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        du: *const bs_view,
+        dv: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut c_uchar,
+    ) -> bs_status;
+
+    // ---- surface.h ----
+    pub fn bs_surface_create(out: *mut *mut bs_surface) -> bs_status;
+    pub fn bs_surface_destroy(s: *mut bs_surface);
+    pub fn bs_surface_clone(s: *const bs_surface, out: *mut *mut bs_surface) -> bs_status;
+    pub fn bs_surface_add(s: *mut bs_surface, p: *const bs_patch, index: *mut usize) -> bs_status;
+    pub fn bs_surface_count(s: *const bs_surface) -> usize;
+    pub fn bs_surface_dim(s: *const bs_surface) -> usize;
+    pub fn bs_surface_get(s: *const bs_surface, i: usize) -> *const bs_patch;
+}
