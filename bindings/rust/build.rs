@@ -5,7 +5,6 @@
 //! linker's default search path. The crate always links the shared library (`dylib=bezsurf`).
 
 use std::env;
-use std::path::Path;
 use std::process::Command;
 
 fn main() {
@@ -20,15 +19,10 @@ fn main() {
     };
     for dir in &dirs {
         println!("cargo:rustc-link-search=native={dir}");
-        // Lets this crate's own tests and examples find the library at run time without
-        // LD_LIBRARY_PATH; crates that depend on this one are not affected.
-        // (Cargo rejects these instructions for target kinds the package does not have.)
-        if Path::new("tests").is_dir() {
-            println!("cargo:rustc-link-arg-tests=-Wl,-rpath,{dir}");
-        }
-        if Path::new("examples").is_dir() {
-            println!("cargo:rustc-link-arg-examples=-Wl,-rpath,{dir}");
-        }
+        // Lets this package's own test and example programs find the library at run time
+        // without LD_LIBRARY_PATH; crates that depend on this one are not affected (link
+        // arguments do not propagate). Doc tests are linked by rustdoc without it.
+        println!("cargo:rustc-link-arg=-Wl,-rpath,{dir}");
     }
     if let Some(dir) = dirs.first() {
         // Published to dependents as DEP_BEZSURF_LIB_DIR (thanks to `links = "bezsurf"`).

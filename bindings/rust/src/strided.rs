@@ -286,3 +286,56 @@ impl<'a> From<Vec<StridedMut<'a>>> for PointsMut<'a> {
         PointsMut::views(views)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn strided_reads_every_stride_th_element() {
+        let data = [0., 1., 2., 3., 4., 5., 6.];
+        let s = Strided::new(&data[1..], 3);
+        assert_eq!(s.len(), 2);
+        assert_eq!(s.iter().collect::<Vec<_>>(), [1., 4.]);
+        assert_eq!(s.get(2), None);
+        assert_eq!(s.rev().iter().collect::<Vec<_>>(), [4., 1.]);
+        let c = s.rev().as_cview();
+        assert_eq!((c.count, c.stride), (2, -24));
+        assert_eq!(Strided::new(&data, 1).len(), 7);
+        assert!(Strided::new(&[], 4).is_empty());
+    }
+
+    #[test]
+    #[should_panic(expected = "stride")]
+    fn zero_stride_panics() {
+        let _ = Strided::new(&[1.0], 0);
+    }
+
+    #[test]
+    fn interleaved_split_is_disjoint_and_covers_whole_points() {
+        let mut xyz = [0.0; 7];
+        let [mut x, mut y, mut z] = StridedMut::split_interleaved::<3>(&mut xyz);
+        assert_eq!((x.len(), y.len(), z.len()), (2, 2, 2));
+        for k in 0..2 {
+            x.set(k, 1.0 + k as f64);
+            y.set(k, 10.0 + k as f64);
+            z.set(k, 100.0 + k as f64);
+        }
+        assert!(!z.set(2, -1.0));
+        assert_eq!(xyz, [1., 10., 100., 2., 11., 101., 0.]);
+    }
+
+    #[test]
+    fn points_views_check_their_dimension() {
+        let mut buf = [0.0; 10];
+        let mut p = PointsMut::from(&mut buf[..]);
+        let v = p.c_views(3).unwrap();
+        assert_eq!((v[2].count, v[2].stride), (3, 24));
+        assert_eq!(p.c_views(0).unwrap_err().kind(), crate::ErrorKind::Dimension);
+        let mut a = [0.0; 2];
+        let mut b = [0.0; 2];
+        let mut q = PointsMut::from([StridedMut::from(&mut a[..]), StridedMut::from(&mut b[..])]);
+        assert!(q.c_views(2).is_ok());
+        assert_eq!(q.c_views(3).unwrap_err().kind(), crate::ErrorKind::Dimension);
+    }
+}
