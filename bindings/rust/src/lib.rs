@@ -27,11 +27,13 @@
 pub mod sys;
 
 mod error;
+mod ops;
 mod patch;
 mod strided;
 mod surface;
 
 pub use error::{status_string, Error, ErrorKind, Result};
+pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
 pub use strided::{PointsMut, Strided, StridedMut};
 pub use surface::Surface;

@@ -53,6 +53,16 @@ pub struct bs_cview {
     pub stride: isize,
 }
 
+/// A Bezier curve given to the constructions (`bs_curve`, ops.h).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_curve {
+    pub degree: usize,
+    pub dim: usize,
+    pub ctrl: *const f64,
+    pub weights: *const f64,
+}
+
 /// Opaque patch handle (`bs_patch`); only ever used behind a pointer.
 #[repr(C)]
 pub struct bs_patch {
@@ -133,6 +143,63 @@ extern "C" {
         dv: *const bs_view,
         nrm: *const bs_view,
         kind: *mut c_uchar,
+    ) -> bs_status;
+
+    // ---- ops.h ----
+    pub fn bs_patch_split(
+        p: *const bs_patch,
+        dir: c_int,
+        t: f64,
+        lo: *mut *mut bs_patch,
+        hi: *mut *mut bs_patch,
+    ) -> bs_status;
+    pub fn bs_patch_split4(p: *const bs_patch, u: f64, v: f64, out: *mut *mut bs_patch) -> bs_status;
+    pub fn bs_patch_subpatch(
+        p: *const bs_patch,
+        u0: f64,
+        u1: f64,
+        v0: f64,
+        v1: f64,
+        out: *mut *mut bs_patch,
+    ) -> bs_status;
+    pub fn bs_patch_elevate(
+        p: *const bs_patch,
+        raise_u: usize,
+        raise_v: usize,
+        out: *mut *mut bs_patch,
+    ) -> bs_status;
+    pub fn bs_patch_derivative(
+        p: *const bs_patch,
+        ku: c_uint,
+        kv: c_uint,
+        out: *mut *mut bs_patch,
+    ) -> bs_status;
+    pub fn bs_patch_isocurve(
+        p: *const bs_patch,
+        dir: c_int,
+        t: f64,
+        ctrl: *mut f64,
+        ctrl_cap: usize,
+        weights: *mut f64,
+        weights_cap: usize,
+    ) -> bs_status;
+    pub fn bs_patch_bounds(p: *const bs_patch, lo: *mut f64, hi: *mut f64) -> bs_status;
+    pub fn bs_patch_transform(
+        p: *const bs_patch,
+        affine: *const f64,
+        out: *mut *mut bs_patch,
+    ) -> bs_status;
+
+    pub fn bs_patch_swap_uv(p: *const bs_patch, out: *mut *mut bs_patch) -> bs_status;
+    pub fn bs_patch_reverse(p: *const bs_patch, dir: c_int, out: *mut *mut bs_patch) -> bs_status;
+    pub fn bs_patch_ruled(c0: *const bs_curve, c1: *const bs_curve, out: *mut *mut bs_patch)
+        -> bs_status;
+    pub fn bs_patch_coons(
+        v0: *const bs_curve,
+        v1: *const bs_curve,
+        u0: *const bs_curve,
+        u1: *const bs_curve,
+        out: *mut *mut bs_patch,
     ) -> bs_status;
 
     // ---- surface.h ----

@@ -25,6 +25,8 @@ int main(void)
 {
     SIZE(bs_view); OFF(bs_view, data); OFF(bs_view, count); OFF(bs_view, stride);
     SIZE(bs_cview); OFF(bs_cview, data); OFF(bs_cview, count); OFF(bs_cview, stride);
+    SIZE(bs_curve); OFF(bs_curve, degree); OFF(bs_curve, dim); OFF(bs_curve, ctrl);
+    OFF(bs_curve, weights);
     SIZE(bs_status); SIZE(size_t); SIZE(ptrdiff_t);
     CONST(BS_OK); CONST(BS_ERR_INVALID_ARG); CONST(BS_ERR_NO_MEMORY); CONST(BS_ERR_DEGREE);
     CONST(BS_ERR_DIMENSION); CONST(BS_ERR_SIZE); CONST(BS_ERR_DOMAIN); CONST(BS_ERR_NONFINITE);
@@ -84,6 +86,12 @@ fn sys_matches_the_c_header() {
         ("offset bs_cview.data", offset_of!(sys::bs_cview, data) as i64),
         ("offset bs_cview.count", offset_of!(sys::bs_cview, count) as i64),
         ("offset bs_cview.stride", offset_of!(sys::bs_cview, stride) as i64),
+        ("size bs_curve", size_of::<sys::bs_curve>() as i64),
+        ("align bs_curve", align_of::<sys::bs_curve>() as i64),
+        ("offset bs_curve.degree", offset_of!(sys::bs_curve, degree) as i64),
+        ("offset bs_curve.dim", offset_of!(sys::bs_curve, dim) as i64),
+        ("offset bs_curve.ctrl", offset_of!(sys::bs_curve, ctrl) as i64),
+        ("offset bs_curve.weights", offset_of!(sys::bs_curve, weights) as i64),
         ("size bs_status", size_of::<sys::bs_status>() as i64),
         ("size size_t", size_of::<usize>() as i64),
         ("size ptrdiff_t", size_of::<isize>() as i64),
