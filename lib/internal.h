@@ -110,4 +110,53 @@ static inline size_t bsi_net_size(size_t ncoord, size_t deg_u, size_t deg_v)
 bs_status bsi_elevate_net(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
                           size_t raise, double *out);
 
+/* ---- Bernstein basis (lib/basis.c) ----
+ * All by the triangular recurrence B(r,k) = (1-t) B(r-1,k) + t B(r-1,k-1), so every value is a
+ * sum of non-negative terms for t in [0,1]. */
+
+/* b[0..deg] = B(deg,i)(t). */
+void bsi_bernstein(size_t deg, double t, double *b);
+/* b[0..deg] = B(deg,i)(t) and, when deg > 0, bm[0..deg-1] = B(deg-1,i)(t) (the weights of the
+ * first-derivative difference net). b is bit-identical to bsi_bernstein(deg, t, b). */
+void bsi_bernstein_first(size_t deg, double t, double *b, double *bm);
+/* b[0..deg] = d^k/dt^k B(deg,i)(t): B(deg-k, .) differenced k times and scaled by deg!/(deg-k)!;
+ * all zero when k > deg. */
+void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
+
+/* ---- Evaluation kernels (lib/eval.c, lib/deriv.c) ---- */
+
+/* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
+ * its position in a block, so results do not depend on batch size. */
+#define BSI_BLOCK 8
+
+/* Homogeneous value h and, when first != 0, first partials hu, hv at BSI_BLOCK finite parameter
+ * pairs; each output is [ncoord][BSI_BLOCK]. The u-direction is contracted first (per column j,
+ * i ascending), then v (j ascending), with the derivatives taken from inline difference nets;
+ * the grid evaluator repeats exactly this arithmetic. */
+void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
+                          double *h, double *hu, double *hv);
+
+/* Cartesian S (and S_u, S_v when su != NULL) of one point from its homogeneous values; element c
+ * of h, hu, hv is at index c*stride. */
+void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
+                       size_t stride, double *s, double *su, double *sv);
+
+/* All Cartesian partials S^(a,b), a <= ka, b <= kb, at one finite point:
+ * out[(a*(kb+1) + b)*dim + c]. scratch holds bsi_deriv_table_scratch(p, ka, kb) doubles. */
+size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
+void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
+                     double *scratch, double *out);
+
+/* ---- Normals (lib/normal.c) ---- */
+
+/* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
+typedef struct bsi_nscale {
+    double lu, lv; /* bounds on |S_u| and |S_v| over the unit square */
+} bsi_nscale;
+
+void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
+/* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
+unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
+                         const double *su, const double *sv, double *nrm);
+
 #endif

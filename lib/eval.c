@@ -1,0 +1,161 @@
+/* Scattered evaluation of positions and first partial derivatives. */
+#include "internal.h"
+
+#include <math.h>
+
+#define B BSI_BLOCK
+#define NMAX (BS_MAX_DEGREE + 1)
+
+/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k]. */
+static void block_weights(size_t deg, const double *t, double *w, double *wm)
+{
+    double b[NMAX], bm[NMAX];
+    for (size_t k = 0; k < B; k++) {
+        bsi_bernstein_first(deg, t[k], b, bm);
+        for (size_t i = 0; i <= deg; i++)
+            w[i * B + k] = b[i];
+        for (size_t i = 0; i < deg; i++)
+            wm[i * B + k] = bm[i];
+    }
+}
+
+void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
+                          double *h, double *hu, double *hv)
+{
+    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
+    double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
+    double q[NMAX * B], qu[NMAX * B], qv[NMAX * B];
+    block_weights(m, u, bu, bum);
+    block_weights(n, v, bv, bvm);
+    int du = first && m > 0, dv = first && n > 0;
+
+    for (size_t c = 0; c < p->ncoord; c++) {
+        const double *net = p->hom + c * p->nctrl;
+        for (size_t x = 0; x < n1 * B; x++)
+            q[x] = qu[x] = qv[x] = 0.0;
+        /* Contract u: q[j] = sum_i B(m,i)(u) P[i][j], qu and qv from the difference nets. */
+        for (size_t i = 0; i <= m; i++) {
+            const double *row = net + i * n1;
+            const double *wi = bu + i * B, *wmi = bum + i * B;
+            for (size_t j = 0; j <= n; j++) {
+                double pij = row[j];
+                double *qj = q + j * B;
+                for (size_t k = 0; k < B; k++)
+                    qj[k] += wi[k] * pij;
+                if (du && i < m) {
+                    double d = row[j + n1] - pij;
+                    double *qs = qu + j * B;
+                    for (size_t k = 0; k < B; k++)
+                        qs[k] += wmi[k] * d;
+                }
+                if (dv && j < n) {
+                    double d = row[j + 1] - pij;
+                    double *qs = qv + j * B;
+                    for (size_t k = 0; k < B; k++)
+                        qs[k] += wi[k] * d;
+                }
+            }
+        }
+        /* Contract v, j ascending. */
+        double acc[B], accu[B], accv[B];
+        for (size_t k = 0; k < B; k++)
+            acc[k] = accu[k] = accv[k] = 0.0;
+        for (size_t j = 0; j <= n; j++) {
+            for (size_t k = 0; k < B; k++)
+                acc[k] += bv[j * B + k] * q[j * B + k];
+            if (du)
+                for (size_t k = 0; k < B; k++)
+                    accu[k] += bv[j * B + k] * qu[j * B + k];
+            if (dv && j < n)
+                for (size_t k = 0; k < B; k++)
+                    accv[k] += bvm[j * B + k] * qv[j * B + k];
+        }
+        for (size_t k = 0; k < B; k++) {
+            h[c * B + k] = acc[k];
+            if (first) {
+                hu[c * B + k] = du ? (double)m * accu[k] : 0.0;
+                hv[c * B + k] = dv ? (double)n * accv[k] : 0.0;
+            }
+        }
+    }
+}
+
+void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
+                       size_t stride, double *s, double *su, double *sv)
+{
+    size_t dim = p->dim;
+    if (!p->rational) {
+        for (size_t c = 0; c < dim; c++) {
+            s[c] = h[c * stride];
+            if (su != NULL) {
+                su[c] = hu[c * stride];
+                sv[c] = hv[c * stride];
+            }
+        }
+        return;
+    }
+    /* S = A / w; S_u = (A_u - w_u S) / w (quotient rule). */
+    double w = h[dim * stride];
+    for (size_t c = 0; c < dim; c++) {
+        s[c] = h[c * stride] / w;
+        if (su != NULL) {
+            su[c] = (hu[c * stride] - hu[dim * stride] * s[c]) / w;
+            sv[c] = (hv[c * stride] - hv[dim * stride] * s[c]) / w;
+        }
+    }
+}
+
+static void put(const bs_view *views, size_t dim, size_t idx, const double *val)
+{
+    if (views == NULL)
+        return;
+    for (size_t c = 0; c < dim; c++)
+        *bsi_at(&views[c], idx) = val[c];
+}
+
+bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
+                        const bs_view *pos, const bs_view *du, const bs_view *dv)
+{
+    if (p == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (n == 0)
+        return BS_OK;
+    bs_status st;
+    size_t dim = p->dim;
+    if ((st = bsi_check_cview(u, n)) != BS_OK || (st = bsi_check_cview(v, n)) != BS_OK)
+        return st;
+    if ((pos && (st = bsi_check_views(pos, dim, n)) != BS_OK) ||
+        (du && (st = bsi_check_views(du, dim, n)) != BS_OK) ||
+        (dv && (st = bsi_check_views(dv, dim, n)) != BS_OK))
+        return st;
+    int first = du != NULL || dv != NULL;
+    double h[(BS_MAX_DIM + 1) * B], hu[(BS_MAX_DIM + 1) * B], hv[(BS_MAX_DIM + 1) * B];
+    for (size_t k0 = 0; k0 < n; k0 += B) {
+        size_t nb = n - k0 < B ? n - k0 : B;
+        double ub[B], vb[B];
+        int bad[B];
+        for (size_t k = 0; k < B; k++) {
+            ub[k] = vb[k] = 0.0;
+            bad[k] = 0;
+            if (k < nb) {
+                ub[k] = bsi_cget(u, k0 + k);
+                vb[k] = bsi_cget(v, k0 + k);
+                bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
+                if (bad[k])
+                    ub[k] = vb[k] = 0.0;
+            }
+        }
+        bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
+        for (size_t k = 0; k < nb; k++) {
+            double s[BS_MAX_DIM], su[BS_MAX_DIM], sv[BS_MAX_DIM];
+            bsi_project_first(p, h + k, hu + k, hv + k, B, s, first ? su : NULL, sv);
+            if (bad[k])
+                for (size_t c = 0; c < dim; c++)
+                    s[c] = su[c] = sv[c] = NAN;
+            put(pos, dim, k0 + k, s);
+            put(du, dim, k0 + k, su);
+            put(dv, dim, k0 + k, sv);
+        }
+    }
+    return BS_OK;
+}

@@ -1,0 +1,204 @@
+/* Unit normals: the regular rule S_u x S_v and the limit rule where that cross product vanishes
+ * (docs/normals.md), and the scattered normal evaluator. */
+#include "internal.h"
+
+#include <math.h>
+
+#define B BSI_BLOCK
+
+/* A vector counts as zero below TAU times its scale; see docs/normals.md. */
+#define TAU 0x1p-30
+/* Highest Taylor order of S_u x S_v tried along the approach direction. */
+#define KMAX 6
+
+static double norm3(const double *a)
+{
+    double s = fmax(fabs(a[0]), fmax(fabs(a[1]), fabs(a[2])));
+    if (s == 0.0 || !isfinite(s))
+        return s;
+    double x = a[0] / s, y = a[1] / s, z = a[2] / s;
+    return s * sqrt(x * x + y * y + z * z);
+}
+
+static void cross3(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
+{
+    /* D: diagonal of the net's bounding box; rho: weight ratio. |S_u| <= m D rho on [0,1]^2 is a
+     * (generous) bound for the scale of the zero tests, not a precise one. */
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t k = 0; k < p->nctrl; k++)
+        for (size_t c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], p->ctrl[k * 3 + c]);
+            hi[c] = fmax(hi[c], p->ctrl[k * 3 + c]);
+        }
+    double ext[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    double d = norm3(ext), rho = 1.0;
+    if (p->rational) {
+        double wmin = INFINITY, wmax = 0.0;
+        for (size_t k = 0; k < p->nctrl; k++) {
+            wmin = fmin(wmin, p->weights[k]);
+            wmax = fmax(wmax, p->weights[k]);
+        }
+        rho = wmax / wmin;
+    }
+    sc->lu = (double)(p->deg_u > 0 ? p->deg_u : 1) * d * rho;
+    sc->lv = (double)(p->deg_v > 0 ? p->deg_v : 1) * d * rho;
+}
+
+static unsigned char unit(const double *c, double *nrm, unsigned char kind)
+{
+    double len = norm3(c);
+    if (!(len > 0.0) || !isfinite(len)) {
+        nrm[0] = nrm[1] = nrm[2] = 0.0;
+        return BS_NORMAL_UNDEFINED;
+    }
+    for (int k = 0; k < 3; k++)
+        nrm[k] = c[k] / len;
+    if (!isfinite(nrm[0]) || !isfinite(nrm[1]) || !isfinite(nrm[2])) {
+        nrm[0] = nrm[1] = nrm[2] = 0.0;
+        return BS_NORMAL_UNDEFINED;
+    }
+    return kind;
+}
+
+/* Lowest non-vanishing Taylor coefficient of S_u x S_v along the line (u,v) + s (du,dv), s > 0.
+ * With A_k = D^k S_u / k!, B_k = D^k S_v / k! (D = du d/du + dv d/dv) the cross product is
+ * sum_K s^K c_K, c_K = sum_k A_k x B_(K-k); its direction tends to that of the first c_K that is
+ * not zero relative to sum_k |A_k||B_(K-k)|. */
+static unsigned char limit_normal(const bs_patch *p, double u, double v, const double *a0,
+                                  const double *b0, double *nrm)
+{
+    enum { KD = KMAX + 1 };
+    double du = 0.5 - u, dv = 0.5 - v; /* towards the centre of the domain */
+    double big = fmax(fabs(du), fabs(dv));
+    if (big == 0.0) {
+        du = dv = 1.0;
+    } else {
+        du /= big;
+        dv /= big;
+    }
+    double scratch[(KD + 1) * (BS_MAX_DEGREE + 1) * 2 + (BS_MAX_DEGREE + 1) + (KD + 1) * (KD + 1) * 4];
+    double tab[(KD + 1) * (KD + 1) * 3];
+    bsi_deriv_table(p, u, v, KD, KD, scratch, tab);
+    double A[KD][3], Bv[KD][3], binom[KD + 1], fact = 1.0;
+    for (int c = 0; c < 3; c++) {
+        A[0][c] = a0[c];
+        Bv[0][c] = b0[c];
+    }
+    for (int k = 1; k < KD; k++) {
+        fact *= k;
+        binom[0] = 1.0;
+        for (int a = 1; a <= k; a++)
+            binom[a] = binom[a - 1] * (k - a + 1) / a;
+        for (int c = 0; c < 3; c++) {
+            double sa = 0.0, sb = 0.0;
+            for (int a = 0; a <= k; a++) {
+                double w = binom[a] * pow(du, a) * pow(dv, k - a);
+                sa += w * tab[((size_t)(a + 1) * (KD + 1) + (size_t)(k - a)) * 3 + (size_t)c];
+                sb += w * tab[((size_t)a * (KD + 1) + (size_t)(k - a + 1)) * 3 + (size_t)c];
+            }
+            A[k][c] = sa / fact;
+            Bv[k][c] = sb / fact;
+        }
+    }
+    for (int K = 1; K < KD; K++) {
+        double ck[3] = {0.0, 0.0, 0.0}, mag = 0.0;
+        for (int k = 0; k <= K; k++) {
+            double x[3];
+            cross3(A[k], Bv[K - k], x);
+            for (int c = 0; c < 3; c++)
+                ck[c] += x[c];
+            mag += norm3(A[k]) * norm3(Bv[K - k]);
+        }
+        if (!isfinite(mag))
+            break;
+        if (mag > 0.0 && norm3(ck) > TAU * mag)
+            return unit(ck, nrm, BS_NORMAL_LIMIT);
+    }
+    nrm[0] = nrm[1] = nrm[2] = 0.0;
+    return BS_NORMAL_UNDEFINED;
+}
+
+unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
+                         const double *su, const double *sv, double *nrm)
+{
+    double a0[3], b0[3], c0[3];
+    double lu = norm3(su), lv = norm3(sv);
+    if (!isfinite(lu) || !isfinite(lv)) {
+        nrm[0] = nrm[1] = nrm[2] = 0.0;
+        return BS_NORMAL_UNDEFINED;
+    }
+    /* A derivative within rounding of zero relative to its scale over the patch is zero. */
+    for (int c = 0; c < 3; c++) {
+        a0[c] = lu <= TAU * sc->lu ? 0.0 : su[c];
+        b0[c] = lv <= TAU * sc->lv ? 0.0 : sv[c];
+    }
+    cross3(a0, b0, c0);
+    double lc = norm3(c0);
+    if (lc > TAU * norm3(a0) * norm3(b0))
+        return unit(c0, nrm, BS_NORMAL_REGULAR);
+    return limit_normal(p, u, v, a0, b0, nrm);
+}
+
+bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
+                               const bs_view *pos, const bs_view *nrm, unsigned char *kind)
+{
+    if (p == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (p->dim != 3)
+        return BS_ERR_DIMENSION;
+    if (n == 0)
+        return BS_OK;
+    bs_status st;
+    if ((st = bsi_check_cview(u, n)) != BS_OK || (st = bsi_check_cview(v, n)) != BS_OK)
+        return st;
+    if ((pos && (st = bsi_check_views(pos, 3, n)) != BS_OK) ||
+        (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
+        return st;
+    bsi_nscale sc;
+    bsi_normal_scale(p, &sc);
+    double h[4 * B], hu[4 * B], hv[4 * B];
+    for (size_t k0 = 0; k0 < n; k0 += B) {
+        size_t nb = n - k0 < B ? n - k0 : B;
+        double ub[B], vb[B];
+        int bad[B];
+        for (size_t k = 0; k < B; k++) {
+            ub[k] = vb[k] = 0.0;
+            bad[k] = 0;
+            if (k < nb) {
+                ub[k] = bsi_cget(u, k0 + k);
+                vb[k] = bsi_cget(v, k0 + k);
+                bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
+                if (bad[k])
+                    ub[k] = vb[k] = 0.0;
+            }
+        }
+        bsi_eval_first_block(p, ub, vb, 1, h, hu, hv);
+        for (size_t k = 0; k < nb; k++) {
+            double s[3], su[3], sv[3], nv[3];
+            unsigned char kd;
+            bsi_project_first(p, h + k, hu + k, hv + k, B, s, su, sv);
+            if (bad[k]) {
+                s[0] = s[1] = s[2] = nv[0] = nv[1] = nv[2] = NAN;
+                kd = BS_NORMAL_UNDEFINED;
+            } else {
+                kd = bsi_normal(p, &sc, ub[k], vb[k], su, sv, nv);
+            }
+            for (size_t c = 0; c < 3; c++) {
+                if (pos)
+                    *bsi_at(&pos[c], k0 + k) = s[c];
+                if (nrm)
+                    *bsi_at(&nrm[c], k0 + k) = nv[c];
+            }
+            if (kind)
+                kind[k0 + k] = kd;
+        }
+    }
+    return BS_OK;
+}
