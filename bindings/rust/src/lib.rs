@@ -15,8 +15,9 @@
 //!     4.0, 1.0, 0.0,   3.0, 3.0, 2.0,   4.0, 4.0, 2.0,
 //! ];
 //! let patch = Patch::new(2, 2, 3, &net)?;
-//! assert_eq!((patch.degree_u(), patch.degree_v(), patch.dim()), (2, 2, 3));
-//! assert_eq!(patch.ctrl(), net);
+//! let mut pos = [0.0; 3];
+//! patch.eval(&[0.5], &[0.5], &mut pos)?;
+//! assert_eq!(pos, [17.0 / 8.0, 9.0 / 4.0, 13.0 / 8.0]);
 //! # Ok::<(), bezsurf::Error>(())
 //! ```
 //!
@@ -28,11 +29,13 @@ pub mod sys;
 
 mod error;
 mod ops;
+mod eval;
 mod patch;
 mod strided;
 mod surface;
 
 pub use error::{status_string, Error, ErrorKind, Result};
+pub use eval::{NormalKind, Outputs};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
 pub use strided::{PointsMut, Strided, StridedMut};

@@ -235,8 +235,9 @@ impl<'a> PointsMut<'a> {
                 let len = data.len() / dim;
                 let base = data.as_mut_ptr();
                 for (c, view) in out.iter_mut().take(dim).enumerate() {
-                    // SAFETY: c < dim <= data.len() when len > 0; when len is 0 the pointer is
-                    // never read because count is 0 (wrapping_add keeps it computable).
+                    // Coordinate c of point k is data[k * dim + c] < data.len() for k < len.
+                    // When len is 0 the library never reads the pointer (count is 0), hence
+                    // wrapping_add rather than add.
                     *view = sys::bs_view {
                         data: base.wrapping_add(c),
                         count: len,
