@@ -5,6 +5,7 @@
  *   bezsurf/core.h     status codes, version, views, patches, evaluation
  *   bezsurf/ops.h      exact operations: subdivision, elevation, hodographs, iso-curves, constructions
  *   bezsurf/surface.h  multi-patch surfaces
+ *   bezsurf/io.h       the .bpt text format, the built-in tea set
  * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
  */
 #ifndef BEZSURF_H
@@ -14,5 +15,6 @@
 #include "bezsurf/core.h"
 #include "bezsurf/ops.h"
 #include "bezsurf/surface.h"
+#include "bezsurf/io.h"
 
 #endif
