@@ -38,17 +38,43 @@ pub enum ErrorKind {
     Unknown,
 }
 
-/// A failed call: the C status code and the library's description of it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+/// A failed call: the C status code and the library's description of it, plus, for the readers,
+/// where and why the input was rejected.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Error {
     code: sys::bs_status,
     message: &'static str,
+    position: Option<(usize, usize)>,
+    detail: Option<String>,
 }
 
 impl Error {
     /// The error for a status code, with its text from `bs_status_string`.
     pub fn from_code(code: i32) -> Error {
-        Error { code, message: status_string(code) }
+        Error { code, message: status_string(code), position: None, detail: None }
+    }
+
+    /// The error for a status code with what a reader reported in its `bs_parse_error`.
+    pub(crate) fn with_parse_error(code: i32, err: &sys::bs_parse_error) -> Error {
+        let mut e = Error::from_code(code);
+        if err.line > 0 {
+            e.position = Some((err.line, err.column));
+        }
+        let bytes: Vec<u8> = err.message.iter().take_while(|&&c| c != 0).map(|&c| c as u8).collect();
+        if !bytes.is_empty() {
+            e.detail = Some(String::from_utf8_lossy(&bytes).into_owned());
+        }
+        e
+    }
+
+    /// For parse errors: the 1-based line and byte column of the first error.
+    pub fn position(&self) -> Option<(usize, usize)> {
+        self.position
+    }
+
+    /// For parse and I/O errors of the readers: the library's account of what is wrong.
+    pub fn detail(&self) -> Option<&str> {
+        self.detail.as_deref()
     }
 
     /// The C status code (negative; one of the `sys::BS_ERR_` constants).
@@ -82,7 +108,14 @@ impl Error {
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} (bezsurf status {})", self.message, self.code)
+        write!(f, "{}", self.message)?;
+        if let Some((line, column)) = self.position {
+            write!(f, " at line {line}, column {column}")?;
+        }
+        if let Some(detail) = &self.detail {
+            write!(f, ": {detail}")?;
+        }
+        write!(f, " (bezsurf status {})", self.code)
     }
 }
 

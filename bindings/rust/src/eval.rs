@@ -168,9 +168,7 @@ impl PatchRef {
         let dv = CPoints::new(out.dv.as_mut(), dim)?;
         // SAFETY: every view was built from a borrowed slice it stays inside; the output views
         // come from exclusive borrows, so they do not overlap each other or the inputs.
-        check(unsafe {
-            sys::bs_patch_eval(self.as_ptr(), n, &u, &v, pos.as_ptr(), du.as_ptr(), dv.as_ptr())
-        })
+        check(unsafe { sys::bs_patch_eval(self.as_ptr(), n, &u, &v, pos.as_ptr(), du.as_ptr(), dv.as_ptr()) })
     }
 
     /// The mixed partial derivative d^(ku+kv) S / du^ku dv^kv at n scattered points

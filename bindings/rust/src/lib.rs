@@ -28,14 +28,16 @@
 pub mod sys;
 
 mod error;
-mod ops;
 mod eval;
+mod io;
+mod ops;
 mod patch;
 mod strided;
 mod surface;
 
 pub use error::{status_string, Error, ErrorKind, Result};
 pub use eval::{NormalKind, Outputs};
+pub use io::builtin_names;
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
 pub use strided::{PointsMut, Strided, StridedMut};

@@ -177,12 +177,7 @@ impl<'a> Curve<'a> {
     }
 
     /// A rational curve: as [`Curve::new`] plus degree + 1 weights.
-    pub fn new_rational(
-        degree: usize,
-        dim: usize,
-        ctrl: &'a [f64],
-        weights: &'a [f64],
-    ) -> Result<Curve<'a>> {
+    pub fn new_rational(degree: usize, dim: usize, ctrl: &'a [f64], weights: &'a [f64]) -> Result<Curve<'a>> {
         Curve::make(degree, dim, ctrl, Some(weights))
     }
 

@@ -63,6 +63,15 @@ pub struct bs_curve {
     pub weights: *const f64,
 }
 
+/// Where and why parsing failed (`bs_parse_error`, io.h).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_parse_error {
+    pub line: usize,
+    pub column: usize,
+    pub message: [c_char; 96],
+}
+
 /// Opaque patch handle (`bs_patch`); only ever used behind a pointer.
 #[repr(C)]
 pub struct bs_patch {
@@ -184,16 +193,11 @@ extern "C" {
         weights_cap: usize,
     ) -> bs_status;
     pub fn bs_patch_bounds(p: *const bs_patch, lo: *mut f64, hi: *mut f64) -> bs_status;
-    pub fn bs_patch_transform(
-        p: *const bs_patch,
-        affine: *const f64,
-        out: *mut *mut bs_patch,
-    ) -> bs_status;
+    pub fn bs_patch_transform(p: *const bs_patch, affine: *const f64, out: *mut *mut bs_patch) -> bs_status;
 
     pub fn bs_patch_swap_uv(p: *const bs_patch, out: *mut *mut bs_patch) -> bs_status;
     pub fn bs_patch_reverse(p: *const bs_patch, dir: c_int, out: *mut *mut bs_patch) -> bs_status;
-    pub fn bs_patch_ruled(c0: *const bs_curve, c1: *const bs_curve, out: *mut *mut bs_patch)
-        -> bs_status;
+    pub fn bs_patch_ruled(c0: *const bs_curve, c1: *const bs_curve, out: *mut *mut bs_patch) -> bs_status;
     pub fn bs_patch_coons(
         v0: *const bs_curve,
         v1: *const bs_curve,
@@ -210,4 +214,26 @@ extern "C" {
     pub fn bs_surface_count(s: *const bs_surface) -> usize;
     pub fn bs_surface_dim(s: *const bs_surface) -> usize;
     pub fn bs_surface_get(s: *const bs_surface, i: usize) -> *const bs_patch;
+
+    // ---- io.h ----
+    pub fn bs_surface_read_bpt(
+        text: *const c_char,
+        len: usize,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_surface,
+    ) -> bs_status;
+    pub fn bs_surface_read_bpt_file(
+        path: *const c_char,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_surface,
+    ) -> bs_status;
+    pub fn bs_surface_write_bpt(
+        s: *const bs_surface,
+        buf: *mut c_char,
+        cap: usize,
+        size: *mut usize,
+    ) -> bs_status;
+    pub fn bs_surface_write_bpt_file(s: *const bs_surface, path: *const c_char) -> bs_status;
+    pub fn bs_surface_create_builtin(name: *const c_char, out: *mut *mut bs_surface) -> bs_status;
+    pub fn bs_builtin_name(i: usize) -> *const c_char;
 }

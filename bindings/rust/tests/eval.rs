@@ -100,8 +100,7 @@ fn higher_derivatives() {
 fn regular_normals() {
     let p = graph();
     let (mut pos, mut nrm, mut kind) = (vec![0.0; 15], vec![0.0; 15], vec![9u8; 5]);
-    p.eval_normal(&US, &VS, Outputs::new().pos(&mut pos).normal(&mut nrm).kind(&mut kind))
-        .unwrap();
+    p.eval_normal(&US, &VS, Outputs::new().pos(&mut pos).normal(&mut nrm).kind(&mut kind)).unwrap();
     for k in 0..5 {
         close(&pos[3 * k..3 * k + 3], &s(US[k], VS[k]));
         close(&nrm[3 * k..3 * k + 3], &unit_normal(US[k], VS[k]));
@@ -114,8 +113,7 @@ fn limit_and_undefined_normals() {
     // S = (u(1-v), uv, 0): the edge u = 0 is collapsed; S_u x S_v = (0, 0, u).
     let fan = Patch::new(1, 1, 3, &[0., 0., 0., 0., 0., 0., 1., 0., 0., 0., 1., 0.]).unwrap();
     let (mut nrm, mut kind) = ([0.0; 6], [9u8; 2]);
-    fan.eval_normal(&[0.0, 0.5], &[0.5, 0.5], Outputs::new().normal(&mut nrm).kind(&mut kind))
-        .unwrap();
+    fan.eval_normal(&[0.0, 0.5], &[0.5, 0.5], Outputs::new().normal(&mut nrm).kind(&mut kind)).unwrap();
     close(&nrm, &[0., 0., 1., 0., 0., 1.]);
     assert_eq!(kind, [bezsurf::sys::BS_NORMAL_LIMIT, bezsurf::sys::BS_NORMAL_REGULAR]);
     // A net on a line has no normal anywhere.

@@ -15,6 +15,7 @@ const PROBE: &str = r#"
 #include "bezsurf/core.h"
 #include "bezsurf/ops.h"
 #include "bezsurf/surface.h"
+#include "bezsurf/io.h"
 
 #define ALIGNOF(T) offsetof(struct { char c; T t; }, t)
 #define SIZE(T) printf("size " #T " %zu\n", sizeof(T)); printf("align " #T " %zu\n", ALIGNOF(T))
@@ -27,6 +28,8 @@ int main(void)
     SIZE(bs_cview); OFF(bs_cview, data); OFF(bs_cview, count); OFF(bs_cview, stride);
     SIZE(bs_curve); OFF(bs_curve, degree); OFF(bs_curve, dim); OFF(bs_curve, ctrl);
     OFF(bs_curve, weights);
+    SIZE(bs_parse_error); OFF(bs_parse_error, line); OFF(bs_parse_error, column);
+    OFF(bs_parse_error, message);
     SIZE(bs_status); SIZE(size_t); SIZE(ptrdiff_t);
     CONST(BS_OK); CONST(BS_ERR_INVALID_ARG); CONST(BS_ERR_NO_MEMORY); CONST(BS_ERR_DEGREE);
     CONST(BS_ERR_DIMENSION); CONST(BS_ERR_SIZE); CONST(BS_ERR_DOMAIN); CONST(BS_ERR_NONFINITE);
@@ -92,6 +95,11 @@ fn sys_matches_the_c_header() {
         ("offset bs_curve.dim", offset_of!(sys::bs_curve, dim) as i64),
         ("offset bs_curve.ctrl", offset_of!(sys::bs_curve, ctrl) as i64),
         ("offset bs_curve.weights", offset_of!(sys::bs_curve, weights) as i64),
+        ("size bs_parse_error", size_of::<sys::bs_parse_error>() as i64),
+        ("align bs_parse_error", align_of::<sys::bs_parse_error>() as i64),
+        ("offset bs_parse_error.line", offset_of!(sys::bs_parse_error, line) as i64),
+        ("offset bs_parse_error.column", offset_of!(sys::bs_parse_error, column) as i64),
+        ("offset bs_parse_error.message", offset_of!(sys::bs_parse_error, message) as i64),
         ("size bs_status", size_of::<sys::bs_status>() as i64),
         ("size size_t", size_of::<usize>() as i64),
         ("size ptrdiff_t", size_of::<isize>() as i64),
