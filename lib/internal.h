@@ -151,7 +151,9 @@ void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigne
 
 /* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
 typedef struct bsi_nscale {
-    double lu, lv; /* bounds on |S_u| and |S_v| over the unit square */
+    double lu, lv;   /* bounds on |S_u| and |S_v| over the unit square */
+    double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
+    double rho;      /* wmax / wmin, 1 for polynomial patches */
 } bsi_nscale;
 
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);

@@ -2,12 +2,15 @@
  * (docs/normals.md), and the scattered normal evaluator. */
 #include "internal.h"
 
+#include <float.h>
 #include <math.h>
 
 #define B BSI_BLOCK
 
 /* A vector counts as zero below TAU times its scale; see docs/normals.md. */
 #define TAU 0x1p-30
+/* A Taylor coefficient counts as zero below CLEAN times the accuracy bound of its derivatives. */
+#define CLEAN 4.0
 /* Highest Taylor order of S_u x S_v tried along the approach direction. */
 #define KMAX 6
 
@@ -47,8 +50,25 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
         }
         rho = wmax / wmin;
     }
+    double pmax = 0.0;
+    for (size_t k = 0; k < p->nctrl; k++)
+        pmax = fmax(pmax, norm3(p->ctrl + 3 * k));
+    sc->rho = rho;
+    sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * pmax * rho;
     sc->lu = (double)(p->deg_u > 0 ? p->deg_u : 1) * d * rho;
     sc->lv = (double)(p->deg_v > 0 ? p->deg_v : 1) * d * rho;
+}
+
+/* The documented accuracy bound (docs/accuracy.md) of S^(a,b), the rounding scale below which a
+ * computed partial derivative cannot be told from zero. */
+static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b)
+{
+    double f = sc->noise * ldexp(1.0, a + b) * pow(sc->rho, a + b);
+    for (int r = 0; r < a; r++)
+        f *= (double)(p->deg_u > (size_t)r ? p->deg_u - (size_t)r : 1);
+    for (int r = 0; r < b; r++)
+        f *= (double)(p->deg_v > (size_t)r ? p->deg_v - (size_t)r : 1);
+    return f;
 }
 
 static unsigned char unit(const double *c, double *nrm, unsigned char kind)
@@ -71,7 +91,7 @@ static unsigned char unit(const double *c, double *nrm, unsigned char kind)
  * With A_k = D^k S_u / k!, B_k = D^k S_v / k! (D = du d/du + dv d/dv) the cross product is
  * sum_K s^K c_K, c_K = sum_k A_k x B_(K-k); its direction tends to that of the first c_K that is
  * not zero relative to sum_k |A_k||B_(K-k)|. */
-static unsigned char limit_normal(const bs_patch *p, double u, double v, const double *a0,
+static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v, const double *a0,
                                   const double *b0, double *nrm)
 {
     enum { KD = KMAX + 1 };
@@ -96,6 +116,12 @@ static unsigned char limit_normal(const bs_patch *p, double u, double v, const d
         binom[0] = 1.0;
         for (int a = 1; a <= k; a++)
             binom[a] = binom[a - 1] * (k - a + 1) / a;
+        double na = 0.0, nb = 0.0;
+        for (int a = 0; a <= k; a++) {
+            double w = fabs(binom[a] * pow(du, a) * pow(dv, k - a));
+            na += w * deriv_noise(p, sc, a + 1, k - a);
+            nb += w * deriv_noise(p, sc, a, k - a + 1);
+        }
         for (int c = 0; c < 3; c++) {
             double sa = 0.0, sb = 0.0;
             for (int a = 0; a <= k; a++) {
@@ -106,6 +132,11 @@ static unsigned char limit_normal(const bs_patch *p, double u, double v, const d
             A[k][c] = sa / fact;
             Bv[k][c] = sb / fact;
         }
+        /* A term within rounding of zero is zero: noise must not pass for a direction. */
+        if (norm3(A[k]) <= CLEAN * na / fact)
+            A[k][0] = A[k][1] = A[k][2] = 0.0;
+        if (norm3(Bv[k]) <= CLEAN * nb / fact)
+            Bv[k][0] = Bv[k][1] = Bv[k][2] = 0.0;
     }
     for (int K = 1; K < KD; K++) {
         double ck[3] = {0.0, 0.0, 0.0}, mag = 0.0;
@@ -136,14 +167,14 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
     }
     /* A derivative within rounding of zero relative to its scale over the patch is zero. */
     for (int c = 0; c < 3; c++) {
-        a0[c] = lu <= TAU * sc->lu ? 0.0 : su[c];
-        b0[c] = lv <= TAU * sc->lv ? 0.0 : sv[c];
+        a0[c] = lu <= fmax(TAU * sc->lu, CLEAN * deriv_noise(p, sc, 1, 0)) ? 0.0 : su[c];
+        b0[c] = lv <= fmax(TAU * sc->lv, CLEAN * deriv_noise(p, sc, 0, 1)) ? 0.0 : sv[c];
     }
     cross3(a0, b0, c0);
     double lc = norm3(c0);
     if (lc > TAU * norm3(a0) * norm3(b0))
         return unit(c0, nrm, BS_NORMAL_REGULAR);
-    return limit_normal(p, u, v, a0, b0, nrm);
+    return limit_normal(p, sc, u, v, a0, b0, nrm);
 }
 
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,

@@ -1,0 +1,290 @@
+/* bs_patch_eval_normal: regular normals against the reference; limit normals on collapsed edges
+ * (the teapot, synthetic nets collapsed on each side, polynomial and rational), cone and
+ * parallel-derivative corners; undefined normals; never NaN for finite parameters. */
+#include "eval_util.h"
+
+#ifndef BS_DATA_DIR
+#define BS_DATA_DIR "data"
+#endif
+
+static double worst_regular, worst_limit;
+
+static unsigned char normal1(const bs_patch *p, double u, double v, double *nrm)
+{
+    bs_cview cu = cview_of(&u, 1), cv = cview_of(&v, 1);
+    bs_view vn[3];
+    views_of(nrm, 3, 1, vn);
+    unsigned char kind = 99;
+    CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, NULL, vn, &kind), BS_OK);
+    return kind;
+}
+
+static double dist3(const double *a, const long double *b)
+{
+    long double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
+    return (double)sqrtl(d0 * d0 + d1 * d1 + d2 * d2);
+}
+
+/* The reference normal at a point 1e-9 inside the domain, towards its centre (long double keeps
+ * ~1e-10 relative accuracy there; the normal moves by O(1e-9) from the limit). */
+static int inside_normal(const ref_net *r, double u, double v, long double *nrm)
+{
+    long double du = 0.5L - u, dv = 0.5L - v, big = fmaxl(fabsl(du), fabsl(dv));
+    return ref_normal(r, u + 1e-9L * du / big, v + 1e-9L * dv / big, nrm);
+}
+
+/* Checks one point by its kind; returns the kind. */
+static unsigned char check_point(const bs_patch *p, const ref_net *r, double u, double v)
+{
+    double n[3];
+    unsigned char kind = normal1(p, u, v, n);
+    CHECK(isfinite(n[0]) && isfinite(n[1]) && isfinite(n[2]));
+    long double e[3] = {0, 0, 0};
+    if (kind == BS_NORMAL_REGULAR) {
+        CHECK(ref_normal(r, u, v, e));
+        double d = dist3(n, e);
+        worst_regular = fmax(worst_regular, d);
+        CHECKF(d <= 1e-9, "regular normal at (%g,%g) off by %g", u, v, d);
+    } else if (kind == BS_NORMAL_LIMIT) {
+        CHECK(inside_normal(r, u, v, e));
+        double d = dist3(n, e);
+        worst_limit = fmax(worst_limit, d);
+        CHECKF(d <= 1e-6, "limit normal at (%g,%g) off by %g", u, v, d);
+    } else {
+        CHECK(kind == BS_NORMAL_UNDEFINED && n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0);
+    }
+    return kind;
+}
+
+static void test_teapot(void)
+{
+    static double ctrl[32][48];
+    size_t np = load_bpt(BS_DATA_DIR "/teapot.bpt", ctrl, 32);
+    CHECKF(np == 32, "teapot.bpt: %zu patches", np);
+    int limits = 0;
+    for (size_t k = 0; k < np; k++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl[k], NULL, &p), BS_OK);
+        ref_net r = {3, 3, 3, ctrl[k], NULL};
+        /* patches 20..23 (lid top) and 28..31 (bottom) collapse their row i = 0 to a point */
+        int collapsed = (k >= 20 && k <= 23) || k >= 28;
+        for (int a = 0; a <= 8; a++)
+            for (int b = 0; b <= 8; b++) {
+                unsigned char kind = check_point(p, &r, a / 8.0, b / 8.0);
+                int want = collapsed && a == 0 ? BS_NORMAL_LIMIT : BS_NORMAL_REGULAR;
+                CHECKF(kind == want, "patch %zu (%d,%d): kind %d", k, a, b, kind);
+                limits += kind == BS_NORMAL_LIMIT;
+                if (kind == BS_NORMAL_LIMIT) {
+                    /* the analytic limit on u = 0 where S_v vanishes: S_u x S_uv */
+                    long double su[3], suv[3], n[3];
+                    ref_deriv(&r, 1, 0, 0.0L, b / 8.0L, su);
+                    ref_deriv(&r, 1, 1, 0.0L, b / 8.0L, suv);
+                    long double c[3] = {su[1] * suv[2] - su[2] * suv[1], su[2] * suv[0] - su[0] * suv[2],
+                                        su[0] * suv[1] - su[1] * suv[0]};
+                    long double len = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+                    for (int d = 0; d < 3; d++)
+                        n[d] = c[d] / len;
+                    double got[3];
+                    normal1(p, 0.0, b / 8.0, got);
+                    double err = dist3(got, n);
+                    worst_limit = fmax(worst_limit, err);
+                    CHECKF(err <= 1e-9, "patch %zu: analytic limit off by %g", k, err);
+                }
+            }
+        /* random interior points: regular, as the reference */
+        unsigned long long rng = 200 + k;
+        for (int t = 0; t < 20; t++)
+            CHECK(check_point(p, &r, bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1)) == BS_NORMAL_REGULAR);
+        bs_patch_destroy(p);
+    }
+    CHECK(limits == 8 * 9);
+}
+
+/* A wavy graph-like net of degree (m,n), then side `side` (0: u=0, 1: u=1, 2: v=0, 3: v=1)
+ * collapsed to one point. */
+static tnet collapsed_net(unsigned long long *rng, size_t m, size_t n, int side, int rational)
+{
+    tnet t = tnet_random(rng, m, n, 3, rational, 0.5, 2.0);
+    for (size_t i = 0; i <= m; i++)
+        for (size_t j = 0; j <= n; j++) {
+            double *P = t.ctrl + (i * (n + 1) + j) * 3;
+            P[0] = (double)i / (double)m + 0.1 * P[0];
+            P[1] = (double)j / (double)n + 0.1 * P[1];
+            P[2] = 0.5 * P[2];
+        }
+    for (size_t k = 0; k <= (side < 2 ? n : m); k++) {
+        size_t i = side == 0 ? 0 : side == 1 ? m : k, j = side == 2 ? 0 : side == 3 ? n : k;
+        size_t i0 = side == 0 ? 0 : side == 1 ? m : 0, j0 = side == 2 ? 0 : side == 3 ? n : 0;
+        memcpy(t.ctrl + (i * (n + 1) + j) * 3, t.ctrl + (i0 * (n + 1) + j0) * 3, 3 * sizeof(double));
+    }
+    return t;
+}
+
+static void test_collapsed_sides(void)
+{
+    unsigned long long rng = 300;
+    for (int rational = 0; rational < 2; rational++)
+        for (int side = 0; side < 4; side++)
+            for (int deg = 0; deg < 3; deg++) {
+                size_t m = deg == 0 ? 3 : deg == 1 ? 2 : 7, n = deg == 0 ? 3 : deg == 1 ? 5 : 4;
+                tnet t = collapsed_net(&rng, m, n, side, rational);
+                ref_net r = tnet_ref(&t);
+                bs_patch *p = tnet_patch(&t);
+                for (int k = 0; k <= 8; k++) {
+                    double s = k / 8.0;
+                    double u = side == 0 ? 0.0 : side == 1 ? 1.0 : s, v = side == 2 ? 0.0 : side == 3 ? 1.0 : s;
+                    unsigned char kind = check_point(p, &r, u, v);
+                    CHECKF(kind == BS_NORMAL_LIMIT, "side %d deg (%zu,%zu) rational %d t=%g: kind %d", side, m,
+                           n, rational, s, kind);
+                    /* the analytic limit: S_u x S_uv on u = 0, its opposite on u = 1; S_uv x S_v on
+                     * v = 0, its opposite on v = 1 */
+                    long double a[3], b[3], e[3];
+                    ref_deriv(&r, side < 2 ? 1 : 1, side < 2 ? 0 : 1, u, v, a);
+                    ref_deriv(&r, side < 2 ? 1 : 0, 1, u, v, b);
+                    long double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+                    long double len = sqrtl(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) * (side % 2 ? -1 : 1);
+                    for (int d = 0; d < 3; d++)
+                        e[d] = c[d] / len;
+                    double got[3];
+                    normal1(p, u, v, got);
+                    double err = dist3(got, e);
+                    worst_limit = fmax(worst_limit, err);
+                    CHECKF(err <= 1e-6, "side %d: analytic limit off by %g", side, err);
+                    /* orientation: the limit agrees with the regular normal just inside */
+                    double nl[3], ni[3];
+                    normal1(p, u, v, nl);
+                    double ui = u + 1e-3 * (0.5 - u), vi = v + 1e-3 * (0.5 - v);
+                    CHECK(normal1(p, ui, vi, ni) == BS_NORMAL_REGULAR);
+                    CHECK(nl[0] * ni[0] + nl[1] * ni[1] + nl[2] * ni[2] > 0.99);
+                }
+                for (int k = 0; k < 10; k++)
+                    CHECK(check_point(p, &r, bs_test_rand(&rng, 0.01, 0.99), bs_test_rand(&rng, 0.01, 0.99)) ==
+                          BS_NORMAL_REGULAR);
+                bs_patch_destroy(p);
+                tnet_free(&t);
+            }
+}
+
+/* Corners: a cone point (S_u = S_v = 0) and parallel S_u, S_v; the limit along the diagonal. */
+static void test_corners(void)
+{
+    unsigned long long rng = 400;
+    for (int rational = 0; rational < 2; rational++) {
+        tnet t = collapsed_net(&rng, 3, 3, -1, rational); /* side -1: nothing collapsed */
+        double *P00 = t.ctrl, *P10 = t.ctrl + 4 * 3, *P01 = t.ctrl + 3;
+        memcpy(P10, P00, 3 * sizeof(double));
+        memcpy(P01, P00, 3 * sizeof(double));
+        ref_net r = tnet_ref(&t);
+        bs_patch *p = tnet_patch(&t);
+        CHECK(check_point(p, &r, 0.0, 0.0) == BS_NORMAL_LIMIT);
+        bs_patch_destroy(p);
+        /* P01 - P00 = 2 (P10 - P00): S_u parallel to S_v at (0,0) */
+        for (int c = 0; c < 3; c++) {
+            P10[c] = P00[c] + 0.3 * (c + 1);
+            P01[c] = P00[c] + 0.6 * (c + 1);
+        }
+        p = tnet_patch(&t);
+        CHECK(check_point(p, &r, 0.0, 0.0) == BS_NORMAL_LIMIT);
+        CHECK(check_point(p, &r, 1.0, 1.0) == BS_NORMAL_REGULAR);
+        bs_patch_destroy(p);
+        tnet_free(&t);
+    }
+}
+
+/* No normal: a net on a line, a single point, a curve swept as a constant. */
+static void test_undefined(void)
+{
+    double line[16 * 3], pt[16 * 3];
+    for (int k = 0; k < 16; k++) {
+        double s = (k % 4) * 0.3 + (k / 4) * 0.7 - (k == 5) * 0.4;
+        line[3 * k] = 1 + s;
+        line[3 * k + 1] = 2 - 2 * s;
+        line[3 * k + 2] = 0.5 * s;
+        pt[3 * k] = 1.5;
+        pt[3 * k + 1] = -2;
+        pt[3 * k + 2] = 3;
+    }
+    const double *nets[2] = {line, pt};
+    for (int q = 0; q < 2; q++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, nets[q], NULL, &p), BS_OK);
+        for (int a = 0; a <= 4; a++)
+            for (int b = 0; b <= 4; b++) {
+                double n[3] = {7, 7, 7};
+                CHECK(normal1(p, a / 4.0, b / 4.0, n) == BS_NORMAL_UNDEFINED);
+                CHECK(n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0);
+            }
+        bs_patch_destroy(p);
+    }
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(0, 3, 3, line + 3, NULL, &p), BS_OK); /* degree 0 in u */
+    double n[3];
+    CHECK(normal1(p, 0.3, 0.4, n) == BS_NORMAL_UNDEFINED);
+    bs_patch_destroy(p);
+}
+
+/* Finite parameters, even far outside [0,1], never give NaN; NaN parameters give NaN. */
+static void test_finite_and_nan(void)
+{
+    unsigned long long rng = 500;
+    for (int side = 0; side < 4; side++) {
+        tnet t = collapsed_net(&rng, 3, 4, side, side % 2);
+        bs_patch *p = tnet_patch(&t);
+        for (int k = 0; k < 200; k++) {
+            double u = bs_test_rand(&rng, -3, 4), v = bs_test_rand(&rng, -3, 4), n[3];
+            if (k % 5 == 0)
+                u = k % 10 == 0 ? 1e300 : -1e200;
+            unsigned char kind = normal1(p, u, v, n);
+            CHECK(isfinite(n[0]) && isfinite(n[1]) && isfinite(n[2]));
+            double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            CHECK(kind == BS_NORMAL_UNDEFINED ? len == 0.0 : fabs(len - 1.0) <= 4 * EPS);
+        }
+        double n[3], pos[3];
+        double u = NAN, v = 0.5;
+        bs_cview cu = cview_of(&u, 1), cv = cview_of(&v, 1);
+        bs_view vn[3], vp[3];
+        views_of(n, 3, 1, vn);
+        views_of(pos, 3, 1, vp);
+        unsigned char kind = 0;
+        CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, vp, vn, &kind), BS_OK);
+        CHECK(kind == BS_NORMAL_UNDEFINED && isnan(n[0]) && isnan(n[2]) && isnan(pos[1]));
+        bs_patch_destroy(p);
+        tnet_free(&t);
+    }
+}
+
+/* Positions from the normal evaluator are those of bs_patch_eval, bit for bit. */
+static void test_positions_match_eval(void)
+{
+    unsigned long long rng = 600;
+    enum { N = 13 };
+    tnet t = tnet_random(&rng, 4, 6, 3, 1, 0.5, 2.0);
+    bs_patch *p = tnet_patch(&t);
+    double u[N], v[N], a[3 * N], b[3 * N];
+    for (int k = 0; k < N; k++) {
+        u[k] = bs_test_rand(&rng, 0, 1);
+        v[k] = bs_test_rand(&rng, 0, 1);
+    }
+    bs_cview cu = cview_of(u, N), cv = cview_of(v, N);
+    bs_view va[3], vb[3];
+    views_of(a, 3, N, va);
+    views_of(b, 3, N, vb);
+    CHECK_STATUS(bs_patch_eval(p, N, &cu, &cv, va, NULL, NULL), BS_OK);
+    CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, vb, NULL, NULL), BS_OK);
+    CHECK(memcmp(a, b, sizeof a) == 0);
+    bs_patch_destroy(p);
+    tnet_free(&t);
+}
+
+int main(void)
+{
+    test_teapot();
+    test_collapsed_sides();
+    test_corners();
+    test_undefined();
+    test_finite_and_nan();
+    test_positions_match_eval();
+    printf("normals: worst regular error %.3g (limit 1e-9), worst limit error %.3g (limit 1e-6)\n",
+           worst_regular, worst_limit);
+    return bs_test_exit("test_normal");
+}
