@@ -1,52 +1,91 @@
-//! Evaluate a biquadratic patch: a point with its partial derivatives and unit normal, then a
-//! small grid; finally the normal at the pole of the teapot's lid, where S_u x S_v vanishes.
+//! Evaluate a bicubic patch whose u = 0 edge is collapsed to one point (like the top of the Utah
+//! teapot's lid): positions, unit normals and their kinds at a few points, scattered and on a
+//! grid. The Rust twin of examples/eval_demo.c, with the same output.
 //!
 //! Run with `cargo run --example eval_demo` (see docs/rust.md for how the library is found).
 
-use bezsurf::{NormalKind, Outputs, Patch, Surface};
+use std::process::ExitCode;
 
-fn main() -> Result<(), bezsurf::Error> {
-    println!("libbezsurf {}", bezsurf::version_string());
+use bezsurf::{sys, Outputs, Patch, StridedMut};
 
-    // The worked example of MATH.md: 3 x 3 control points, row i along u.
-    let net = [
-        1., 0., 2., 1., 2., 4., 1., 3., 2., //
-        2., 1., 0., 2., 2., 2., 2., 4., 0., //
-        4., 1., 0., 3., 3., 2., 4., 4., 2.,
-    ];
-    let patch = Patch::new(2, 2, 3, &net)?;
+fn kind_name(k: u8) -> &'static str {
+    match k {
+        sys::BS_NORMAL_REGULAR => "regular",
+        sys::BS_NORMAL_LIMIT => "limit",
+        _ => "undefined",
+    }
+}
 
-    let (mut pos, mut du, mut dv) = ([0.0; 3], [0.0; 3], [0.0; 3]);
-    patch.eval_with(&[0.5], &[0.5], Outputs::new().pos(&mut pos).du(&mut du).dv(&mut dv))?;
-    let (mut nrm, mut kind) = ([0.0; 3], [0u8; 1]);
-    patch.eval_normal(&[0.5], &[0.5], Outputs::new().normal(&mut nrm).kind(&mut kind))?;
-    println!("S(1/2,1/2)   = {pos:?}   (exactly (17/8, 9/4, 13/8))");
-    println!("S_u(1/2,1/2) = {du:?}");
-    println!("S_v(1/2,1/2) = {dv:?}");
-    println!("N(1/2,1/2)   = {nrm:?} ({:?})", NormalKind::from_byte(kind[0]).unwrap());
-
-    // A 3 x 3 grid: point (a, b) at index a * 3 + b.
-    let t = [0.0, 0.5, 1.0];
-    let mut grid = [0.0; 27];
-    patch.eval_grid(&t, &t, Outputs::new().pos(&mut grid))?;
-    for (a, u) in t.iter().enumerate() {
-        for (b, v) in t.iter().enumerate() {
-            let k = 3 * (a * 3 + b);
-            println!("S({u:.1},{v:.1}) = ({:6.3}, {:6.3}, {:6.3})", grid[k], grid[k + 1], grid[k + 2]);
+fn run() -> Result<(), bezsurf::Error> {
+    // Row i = 0 is the apex (0, 0, 1); the other rows spread out into a dome.
+    let r = [0.0, 0.6, 1.0, 1.2];
+    let z = [1.0, 1.0, 0.6, 0.0];
+    let (x, y) = ([1.0, 1.0, 0.55, 0.0], [0.0, 0.55, 1.0, 1.0]); // quarter circle
+    let mut ctrl = Vec::with_capacity(48);
+    for i in 0..4 {
+        for j in 0..4 {
+            ctrl.extend([r[i] * x[j], r[i] * y[j], z[i]]);
         }
     }
+    let p = Patch::new(3, 3, 3, &ctrl)?;
 
-    // The teapot's lid is made of patches with a collapsed edge at the knob's top.
-    let teapot = Surface::builtin("teapot")?;
-    for (i, p) in teapot.iter().enumerate() {
-        let c = p.ctrl();
-        if c[..3] == c[3..6] && c[3..6] == c[6..9] && c[6..9] == c[9..12] {
-            let (mut n, mut k) = ([0.0; 3], [0u8; 1]);
-            p.eval_normal(&[0.0], &[0.5], Outputs::new().normal(&mut n).kind(&mut k))?;
-            let kind = NormalKind::from_byte(k[0]).unwrap();
-            println!("teapot patch {i:2}: pole at {:?}, normal {n:?} ({kind:?})", &c[..3]);
-            break;
-        }
+    const N: usize = 5;
+    let u = [0.0, 0.0, 0.5, 1.0, 0.25];
+    let v = [0.0, 0.5, 0.5, 1.0, 0.75];
+    // Structure of arrays, as in the C example: one array per coordinate.
+    let mut pos = [[0.0; N]; 3];
+    let mut nrm = [[0.0; N]; 3];
+    let mut kind = [0u8; N];
+    {
+        let [px, py, pz] = &mut pos;
+        let [nx, ny, nz] = &mut nrm;
+        let pos_views = [StridedMut::from(&mut px[..]), (&mut py[..]).into(), (&mut pz[..]).into()];
+        let nrm_views = [StridedMut::from(&mut nx[..]), (&mut ny[..]).into(), (&mut nz[..]).into()];
+        p.eval_normal(&u, &v, Outputs::new().pos(pos_views).normal(nrm_views).kind(&mut kind))?;
+    }
+    println!(
+        "libbezsurf {}: bicubic patch with its u = 0 edge collapsed to a point",
+        bezsurf::version_string()
+    );
+    println!("    u     v   |  position                 |  unit normal                 kind");
+    for k in 0..N {
+        println!(
+            "{:5.2} {:5.2} | {:7.4} {:7.4} {:7.4} | {:8.5} {:8.5} {:8.5}  {}",
+            u[k],
+            v[k],
+            pos[0][k],
+            pos[1][k],
+            pos[2][k],
+            nrm[0][k],
+            nrm[1][k],
+            nrm[2][k],
+            kind_name(kind[k])
+        );
+    }
+
+    // A 3 x 3 grid: only the points on u = 0 take the limit rule.
+    let g = [0.0, 0.5, 1.0];
+    let mut gn = [0.0; 27];
+    let mut gkind = [0u8; 9];
+    p.eval_grid(&g, &g, Outputs::new().normal(&mut gn).kind(&mut gkind))?;
+    println!("grid normal kinds (rows u = 0, 0.5, 1):");
+    for a in 0..3 {
+        println!(
+            "  {:<9} {:<9} {:<9}",
+            kind_name(gkind[a * 3]),
+            kind_name(gkind[a * 3 + 1]),
+            kind_name(gkind[a * 3 + 2])
+        );
     }
     Ok(())
+}
+
+fn main() -> ExitCode {
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("eval_demo: {e}");
+            ExitCode::FAILURE
+        }
+    }
 }
