@@ -82,33 +82,6 @@ typedef struct bsi_topology {
 bs_status bsi_topology_build(const bs_surface *s, double tol, bsi_topology *out);
 void bsi_topology_free(bsi_topology *t);
 
-/* ---- Curve operations applied fibre by fibre to coordinate-major nets (lib/fiber.c) ----
- * A net here is ncoord planes of (deg_u+1)(deg_v+1) doubles, as struct bs_patch's hom. A fibre is
- * one row of a plane along a direction: fixed j for BS_DIR_U (index i), fixed i for BS_DIR_V. */
-#define BSI_FIBER_MAX (2 * BS_MAX_DEGREE + 1)
-
-/* One coordinate of a curve: in[0..deg_in] -> out[0..deg_out] (deg_out < BSI_FIBER_MAX). */
-typedef void (*bsi_fiber_op)(const double *in, size_t deg_in, double *out, size_t deg_out,
-                             const void *ctx);
-
-/* Apply op along dir to every fibre of every plane; out has degree deg_out along dir. */
-void bsi_net_map(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
-                 size_t deg_out, bsi_fiber_op op, const void *ctx, double *out);
-
-/* Copy fibre positions first..first+deg_out along dir of every plane into a net of degree deg_out. */
-void bsi_net_slice(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
-                   size_t first, size_t deg_out, double *out);
-
-/* Size in doubles of a net with ncoord planes and the given degrees. */
-static inline size_t bsi_net_size(size_t ncoord, size_t deg_u, size_t deg_v)
-{
-    return ncoord * (deg_u + 1) * (deg_v + 1);
-}
-
-/* Raise a net's degree along dir by raise (deg + raise <= BS_MAX_DEGREE), writing a net of degree
- * deg + raise along dir to out (lib/elevate.c). BS_ERR_NO_MEMORY on failure. */
-bs_status bsi_elevate_net(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
-                          size_t raise, double *out);
 
 /* ---- Bernstein basis (lib/basis.c) ----
  * All by the triangular recurrence B(r,k) = (1-t) B(r-1,k) + t B(r-1,k-1), so every value is a
@@ -160,6 +133,33 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm);
+/* ---- Curve operations applied fibre by fibre to coordinate-major nets (lib/fiber.c) ----
+ * A net here is ncoord planes of (deg_u+1)(deg_v+1) doubles, as struct bs_patch's hom. A fibre is
+ * one row of a plane along a direction: fixed j for BS_DIR_U (index i), fixed i for BS_DIR_V. */
+#define BSI_FIBER_MAX (2 * BS_MAX_DEGREE + 1)
+
+/* One coordinate of a curve: in[0..deg_in] -> out[0..deg_out] (deg_out < BSI_FIBER_MAX). */
+typedef void (*bsi_fiber_op)(const double *in, size_t deg_in, double *out, size_t deg_out,
+                             const void *ctx);
+
+/* Apply op along dir to every fibre of every plane; out has degree deg_out along dir. */
+void bsi_net_map(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
+                 size_t deg_out, bsi_fiber_op op, const void *ctx, double *out);
+
+/* Copy fibre positions first..first+deg_out along dir of every plane into a net of degree deg_out. */
+void bsi_net_slice(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
+                   size_t first, size_t deg_out, double *out);
+
+/* Size in doubles of a net with ncoord planes and the given degrees. */
+static inline size_t bsi_net_size(size_t ncoord, size_t deg_u, size_t deg_v)
+{
+    return ncoord * (deg_u + 1) * (deg_v + 1);
+}
+
+/* Raise a net's degree along dir by raise (deg + raise <= BS_MAX_DEGREE), writing a net of degree
+ * deg + raise along dir to out (lib/elevate.c). BS_ERR_NO_MEMORY on failure. */
+bs_status bsi_elevate_net(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
+                          size_t raise, double *out);
 
 /* ---- .bpt numbers (lib/bpt_number.c): locale-independent decimal text ---- */
 #define BSI_NUMBER_MAX 400 /* longest number token accepted, in bytes */
