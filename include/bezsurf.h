@@ -6,6 +6,7 @@
  *   bezsurf/ops.h      exact operations: subdivision, elevation, hodographs, iso-curves, constructions
  *   bezsurf/surface.h  multi-patch surfaces
  *   bezsurf/io.h       the .bpt text format, the built-in tea set
+ *   bezsurf/continuity.h  shared and open edges of a surface, continuity across them
  * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
  */
 #ifndef BEZSURF_H
@@ -16,5 +17,6 @@
 #include "bezsurf/ops.h"
 #include "bezsurf/surface.h"
 #include "bezsurf/io.h"
+#include "bezsurf/continuity.h"
 
 #endif

@@ -7,6 +7,8 @@
 
 #include "core.h"
 
+#include <stdint.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -63,6 +65,54 @@ BS_API size_t bs_surface_dim(const bs_surface *s);
  * @since 1.0
  */
 BS_API const bs_patch *bs_surface_get(const bs_surface *s, size_t i);
+
+/* ------------------------------------------------------------------------------------------------
+ * Evaluation of scattered points across a surface: point k lies on patch ids[k] at (u[k], v[k]).
+ * Consecutive points with the same id are evaluated in one call to the patch evaluator, so sorting
+ * the points by id makes the per-point overhead vanish; results do not depend on the order.
+ * Arguments are checked in this order, the first failure returned with nothing written: s, ids, u or
+ * v NULL (BS_ERR_INVALID_ARG); normals of a surface whose dim is not 3 (BS_ERR_DIMENSION); each view
+ * as for bs_patch_eval() (BS_ERR_INVALID_ARG, BS_ERR_SIZE); an id not below bs_surface_count()
+ * (BS_ERR_INVALID_ARG). n = 0 with a surface is a successful no-op (nothing else is read). Parameters outside [0,1], NaN
+ * and Inf are handled per point as in bs_patch_eval().
+ * ---------------------------------------------------------------------------------------------- */
+
+/**
+ * @brief Evaluate positions and first partial derivatives at n scattered points of a surface.
+ * @param[in]  s    the surface.
+ * @param[in]  n    number of points.
+ * @param[in]  ids  n patch ids (indices into the surface), each below bs_surface_count(s).
+ * @param[in]  u    view of n u-parameters.
+ * @param[in]  v    view of n v-parameters.
+ * @param[out] pos  NULL or bs_surface_dim(s) views receiving S(u,v).
+ * @param[out] du   NULL or bs_surface_dim(s) views receiving dS/du.
+ * @param[out] dv   NULL or bs_surface_dim(s) views receiving dS/dv.
+ * @return BS_OK; BS_ERR_INVALID_ARG (s, ids, u or v NULL, NULL or misaligned view data, an id out of
+ *         range); BS_ERR_SIZE (a view shorter than n).
+ * @since 1.0
+ */
+BS_API bs_status bs_surface_eval(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
+                                 const bs_cview *v, const bs_view *pos, const bs_view *du, const bs_view *dv);
+
+/**
+ * @brief Evaluate positions and unit normals (with their kind) at n scattered points of a 3-D surface.
+ * Normals follow the rule of bs_patch_eval_normal().
+ * @param[in]  s     the surface (dim 3).
+ * @param[in]  n     number of points.
+ * @param[in]  ids   n patch ids, each below bs_surface_count(s).
+ * @param[in]  u     view of n u-parameters.
+ * @param[in]  v     view of n v-parameters.
+ * @param[out] pos   NULL or 3 views receiving S(u,v).
+ * @param[out] nrm   NULL or 3 views receiving the unit normal.
+ * @param[out] kind  NULL or n bytes receiving BS_NORMAL_REGULAR, _LIMIT or _UNDEFINED.
+ * @return BS_OK; BS_ERR_INVALID_ARG (s, ids, u or v NULL, NULL or misaligned view data, an id out of
+ *         range); BS_ERR_DIMENSION (n > 0 and the surface's dim is not 3, including an empty surface);
+ *         BS_ERR_SIZE (a view shorter than n).
+ * @since 1.0
+ */
+BS_API bs_status bs_surface_eval_normal(const bs_surface *s, size_t n, const uint32_t *ids,
+                                        const bs_cview *u, const bs_cview *v, const bs_view *pos,
+                                        const bs_view *nrm, unsigned char *kind);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,210 @@
+/* Continuity report: planar patches folded by a known angle, a patch split in two (C1), a handle
+ * stretched (G1 but not C1), poles, open edges, the tea set's figures, and the error paths. */
+#include "harness.h"
+
+#include <bezsurf.h>
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static bs_surface *surface_of(size_t np, const size_t *deg, const double *const *nets)
+{
+    bs_surface *s = NULL;
+    bs_surface_create(&s);
+    for (size_t k = 0; k < np; k++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(deg[2 * k], deg[2 * k + 1], 3, nets[k], NULL, &p), BS_OK);
+        CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
+        bs_patch_destroy(p);
+    }
+    return s;
+}
+
+/* Two bilinear patches: A = [0,1]x[0,1] in z = 0, B hinged on A's side u = 1 and folded up by
+ * theta. Both are planar, so the tangent planes meet at exactly theta everywhere. */
+static void test_fold(double theta)
+{
+    double c = cos(theta), sn = sin(theta);
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0};
+    /* B's side u = 0 is A's side u = 1 walked backwards (v reversed) to exercise the reversal. */
+    double b[12] = {1, 1, 0, 1, 0, 0, 1 + c, 1, sn, 1 + c, 0, sn};
+    size_t deg[4] = {1, 1, 1, 1};
+    const double *nets[2] = {a, b};
+    bs_surface *s = surface_of(2, deg, nets);
+    bs_edge_continuity e[4];
+    bs_open_edge o[8];
+    size_t ne = 99, no = 99;
+    CHECK_STATUS(bs_surface_continuity(s, 1e-12, 7, e, 4, &ne, o, 8, &no), BS_OK);
+    CHECK(ne == 1 && no == 6);
+    if (ne == 1) {
+        CHECK(e[0].patch_a == 0 && e[0].side_a == BS_SIDE_U1 && e[0].patch_b == 1 && e[0].side_b == BS_SIDE_U0);
+        CHECK(e[0].reversed == 1 && e[0].c0_gap == 0.0 && e[0].samples == 7);
+        CHECKF(fabs(e[0].g1_angle - fmin(theta, acos(-1.0) - theta)) < 1e-12, "angle %.17g for %.17g",
+               e[0].g1_angle, theta);
+        /* Outward derivatives: A's is (1,0,0), B's is -(c,0,sn): opposite only when theta = 0. */
+        double expect = sqrt((1 - c) * (1 - c) + sn * sn);
+        CHECKF(fabs(e[0].c1_defect - expect) < 1e-12, "defect %.17g, expected %.17g", e[0].c1_defect, expect);
+        CHECK(e[0].c1 == (expect <= 1e-12));
+    }
+    /* Open edges: A's v0, v1, u0 and B's v0, u1, v1, in patch and side order. */
+    CHECK(no == 6 && o[0].patch == 0 && o[0].side == BS_SIDE_V0 && o[1].side == BS_SIDE_V1 &&
+          o[2].side == BS_SIDE_U0 && o[3].patch == 1 && o[3].side == BS_SIDE_V0);
+    bs_surface_destroy(s);
+}
+
+/* de Casteljau split of a bicubic net at u = 1/2 (exact in binary): the halves meet C1. */
+static void split_u(const double *net, double *lo, double *hi)
+{
+    for (size_t j = 0; j < 4; j++)
+        for (size_t c = 0; c < 3; c++) {
+            double b[4];
+            for (size_t i = 0; i < 4; i++)
+                b[i] = net[(i * 4 + j) * 3 + c];
+            double t[4][4];
+            for (size_t i = 0; i < 4; i++)
+                t[0][i] = b[i];
+            for (size_t r = 1; r < 4; r++)
+                for (size_t i = 0; i + r < 4; i++)
+                    t[r][i] = 0.5 * (t[r - 1][i] + t[r - 1][i + 1]);
+            for (size_t i = 0; i < 4; i++) {
+                lo[(i * 4 + j) * 3 + c] = t[i][0];
+                hi[(i * 4 + j) * 3 + c] = t[3 - i][i];
+            }
+        }
+}
+
+static void test_split(void)
+{
+    unsigned long long seed = 99;
+    double net[48], lo[48], hi[48];
+    for (size_t i = 0; i < 4; i++)
+        for (size_t j = 0; j < 4; j++) {
+            net[(i * 4 + j) * 3 + 0] = (double)i + bs_test_rand(&seed, -0.2, 0.2);
+            net[(i * 4 + j) * 3 + 1] = (double)j + bs_test_rand(&seed, -0.2, 0.2);
+            net[(i * 4 + j) * 3 + 2] = bs_test_rand(&seed, -0.5, 0.5);
+        }
+    split_u(net, lo, hi);
+    size_t deg[4] = {3, 3, 3, 3};
+    const double *nets[2] = {lo, hi};
+    bs_surface *s = surface_of(2, deg, nets);
+    bs_edge_continuity e[2];
+    size_t ne = 0, no = 0;
+    CHECK_STATUS(bs_surface_continuity(s, 1e-12, 16, e, 2, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 1 && no == 6);
+    if (ne == 1) {
+        CHECK(e[0].side_a == BS_SIDE_U1 && e[0].side_b == BS_SIDE_U0 && e[0].reversed == 0);
+        CHECK(e[0].c0_gap == 0.0 && e[0].c1 == 1 && e[0].c1_defect < 1e-14 && e[0].flipped == 0);
+        CHECKF(e[0].g1_angle < 1e-7, "angle %g", e[0].g1_angle);
+    }
+    bs_surface_destroy(s);
+    /* Stretch hi's first handle row by 2 (collinear, longer): still G1, no longer C1. */
+    for (size_t j = 0; j < 4; j++)
+        for (size_t c = 0; c < 3; c++) {
+            size_t b0 = j * 3 + c, b1 = (4 + j) * 3 + c;
+            hi[b1] = hi[b0] + 2.0 * (hi[b1] - hi[b0]);
+        }
+    s = surface_of(2, deg, nets);
+    CHECK_STATUS(bs_surface_continuity(s, 1e-12, 16, e, 2, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 1 && e[0].c1 == 0 && e[0].c1_defect > 0.1 && e[0].g1_angle < 1e-7);
+    bs_surface_destroy(s);
+}
+
+/* The tea set: seams meet exactly (C0 gap 0); the report is consistent with its counts. */
+static void test_teaset(void)
+{
+    static const char *const names[] = {"teapot", "teacup", "teaspoon"};
+    for (size_t f = 0; f < 3; f++) {
+        bs_surface *s;
+        CHECK_STATUS(bs_surface_create_builtin(names[f], &s), BS_OK);
+        size_t ne = 0, no = 0;
+        CHECK_STATUS(bs_surface_continuity(s, 0.0, 16, NULL, 0, &ne, NULL, 0, &no), BS_OK);
+        bs_edge_continuity *e = malloc(ne * sizeof(*e) + 1);
+        bs_open_edge *o = malloc(no * sizeof(*o) + 1);
+        CHECK_STATUS(bs_surface_continuity(s, 0.0, 16, e, ne, &ne, o, no, &no), BS_OK);
+        double gap = 0.0, g1 = 0.0;
+        for (size_t k = 0; k < ne; k++) {
+            gap = fmax(gap, e[k].c0_gap);
+            g1 = fmax(g1, e[k].g1_angle);
+            CHECK(e[k].patch_a <= e[k].patch_b && e[k].samples <= 16);
+        }
+        /* Every side is shared, open or a pole: 4 per patch. */
+        CHECK(2 * ne + no <= 4 * bs_surface_count(s));
+        CHECKF(gap == 0.0, "%s: C0 gap %g", names[f], gap);
+        printf("%s: %zu shared edges, %zu open, max G1 angle %.3g degrees\n", names[f], ne, no,
+               g1 * 180.0 / acos(-1.0));
+        if (f == 0) {
+            /* 32 patches: the body, lid, handle and spout rings share their seams. */
+            CHECKF(ne >= 40, "teapot: only %zu shared edges", ne);
+        }
+        free(e);
+        free(o);
+        bs_surface_destroy(s);
+    }
+}
+
+static void test_errors(void)
+{
+    bs_surface *s;
+    bs_surface_create_builtin("teacup", &s);
+    size_t ne = 0, no = 0;
+    CHECK_STATUS(bs_surface_continuity(NULL, 0.0, 4, NULL, 0, &ne, NULL, 0, &no), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_surface_continuity(s, -1.0, 4, NULL, 0, &ne, NULL, 0, &no), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_surface_continuity(s, NAN, 4, NULL, 0, &ne, NULL, 0, &no), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_surface_continuity(s, INFINITY, 4, NULL, 0, &ne, NULL, 0, &no), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 0, NULL, 0, &ne, NULL, 0, &no), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 4097, NULL, 0, &ne, NULL, 0, &no), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, NULL, 0, NULL, NULL, 0, NULL), BS_OK);
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, NULL, 0, &ne, NULL, 0, &no), BS_OK);
+    /* Too small: nothing written, counts untouched. */
+    bs_edge_continuity e[1];
+    memset(e, 0x5a, sizeof e);
+    size_t ne2 = 12345;
+    if (ne > 1) {
+        CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, e, ne - 1, &ne2, NULL, 0, NULL), BS_ERR_SIZE);
+        CHECK(ne2 == 12345 && e[0].patch_a == 0x5a5a5a5au);
+    }
+    if (no > 0) {
+        bs_open_edge o[1];
+        CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, NULL, 0, NULL, o, no - 1, &ne2), BS_ERR_SIZE);
+        CHECK(ne2 == 12345);
+    }
+    bs_surface_destroy(s);
+    /* Not 3-D; empty. */
+    double net2[8] = {0, 0, 1, 0, 0, 1, 1, 1};
+    bs_patch *p;
+    bs_patch_create(1, 1, 2, net2, NULL, &p);
+    bs_surface_create(&s);
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, NULL, 0, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 0 && no == 0);
+    bs_surface_add(s, p, NULL);
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, NULL, 0, &ne, NULL, 0, &no), BS_ERR_DIMENSION);
+    bs_surface_destroy(s);
+    bs_patch_destroy(p);
+}
+
+/* A pole: a patch whose side u = 0 collapses to a point is neither shared nor open there. */
+static void test_pole(void)
+{
+    double cone[12] = {0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 1, 0};
+    size_t deg[2] = {1, 1};
+    const double *nets[1] = {cone};
+    bs_surface *s = surface_of(1, deg, nets);
+    size_t ne = 9, no = 9;
+    CHECK_STATUS(bs_surface_continuity(s, 0.0, 4, NULL, 0, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 0 && no == 3);
+    bs_surface_destroy(s);
+}
+
+int main(void)
+{
+    test_fold(0.0);
+    test_fold(0.3);
+    test_fold(1.2);
+    test_fold(2.5); /* beyond 90 degrees: the tangent planes meet at pi - theta */
+    test_split();
+    test_teaset();
+    test_errors();
+    test_pole();
+    return bs_test_exit("test_continuity");
+}

@@ -1,0 +1,135 @@
+/* Helpers shared by the subcommands of the bezsurf tool. */
+#include "cmds.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int cli_is_help(const char *arg) { return strcmp(arg, "-h") == 0 || strcmp(arg, "--help") == 0; }
+
+int cli_fail(const char *cmd, int code, const char *fmt, ...)
+{
+    fprintf(stderr, "bezsurf %s: ", cmd);
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    return code;
+}
+
+int cli_take_builtin(int argc, char **argv, int *i, cli_input *in)
+{
+    if (strcmp(argv[*i], "--builtin") != 0 && strcmp(argv[*i], "-b") != 0)
+        return 0;
+    if (*i + 1 >= argc) {
+        cli_fail(argv[0], CLI_USAGE, "%s needs a name (teapot, teacup or teaspoon)", argv[*i]);
+        return -1;
+    }
+    in->builtin = argv[++*i];
+    in->path = NULL;
+    return 1;
+}
+
+const char *cli_input_name(const cli_input *in)
+{
+    if (in->path == NULL)
+        return in->builtin ? in->builtin : "teapot";
+    return strcmp(in->path, "-") == 0 ? "<stdin>" : in->path;
+}
+
+static int read_stdin(const char *cmd, bs_surface **out)
+{
+    size_t len = 0, cap = 0;
+    char *buf = NULL;
+    for (;;) {
+        if (len == cap) {
+            char *grown = realloc(buf, cap ? 2 * cap : 65536);
+            if (grown == NULL) {
+                free(buf);
+                return cli_fail(cmd, CLI_INTERNAL, "out of memory");
+            }
+            buf = grown;
+            cap = cap ? 2 * cap : 65536;
+        }
+        size_t got = fread(buf + len, 1, cap - len, stdin);
+        len += got;
+        if (got == 0)
+            break;
+    }
+    if (ferror(stdin)) {
+        free(buf);
+        return cli_fail(cmd, CLI_INPUT, "<stdin>: cannot read");
+    }
+    bs_parse_error err;
+    bs_status st = bs_surface_read_bpt(buf, len, &err, out);
+    free(buf);
+    if (st == BS_ERR_PARSE)
+        return cli_fail(cmd, CLI_INPUT, "<stdin>:%zu:%zu: %s", err.line, err.column, err.message);
+    if (st != BS_OK)
+        return cli_fail(cmd, CLI_INTERNAL, "<stdin>: %s", bs_status_string(st));
+    return CLI_OK;
+}
+
+int cli_load(const char *cmd, const cli_input *in, bs_surface **out)
+{
+    *out = NULL;
+    if (in->path == NULL) {
+        const char *name = in->builtin ? in->builtin : "teapot";
+        bs_status st = bs_surface_create_builtin(name, out);
+        if (st == BS_ERR_INVALID_ARG)
+            return cli_fail(cmd, CLI_INPUT, "no built-in surface named '%s' (teapot, teacup, teaspoon)", name);
+        return st == BS_OK ? CLI_OK : cli_fail(cmd, CLI_INTERNAL, "%s", bs_status_string(st));
+    }
+    if (strcmp(in->path, "-") == 0)
+        return read_stdin(cmd, out);
+    bs_parse_error err;
+    errno = 0;
+    bs_status st = bs_surface_read_bpt_file(in->path, &err, out);
+    if (st == BS_ERR_PARSE)
+        return cli_fail(cmd, CLI_INPUT, "%s:%zu:%zu: %s", in->path, err.line, err.column, err.message);
+    if (st == BS_ERR_IO)
+        return cli_fail(cmd, CLI_INPUT, "%s: %s", in->path, errno ? strerror(errno) : err.message);
+    if (st != BS_OK)
+        return cli_fail(cmd, CLI_INTERNAL, "%s: %s", in->path, bs_status_string(st));
+    return CLI_OK;
+}
+
+int cli_parse_double(const char *text, double *out)
+{
+    char *end = NULL;
+    double x = strtod(text, &end);
+    if (end == text || *end != '\0' || !isfinite(x))
+        return 0;
+    *out = x;
+    return 1;
+}
+
+int cli_parse_size(const char *text, size_t *out)
+{
+    char *end = NULL;
+    if (text[0] < '0' || text[0] > '9')
+        return 0;
+    errno = 0;
+    unsigned long long v = strtoull(text, &end, 10);
+    if (*end != '\0' || errno != 0 || v > (unsigned long long)(size_t)-1)
+        return 0;
+    *out = (size_t)v;
+    return 1;
+}
+
+int cli_finish(const char *cmd)
+{
+    if (fflush(stdout) != 0 || ferror(stdout))
+        return cli_fail(cmd, CLI_OUTPUT, "cannot write the output");
+    return CLI_OK;
+}
+
+const char *cli_side_name(int side)
+{
+    static const char *const names[4] = {"v0", "u1", "v1", "u0"};
+    return side >= 0 && side < 4 ? names[side] : "?";
+}

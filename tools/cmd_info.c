@@ -1,0 +1,85 @@
+/* bezsurf info: what a surface is made of. */
+#include "cmds.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static void help(void)
+{
+    printf("usage: bezsurf info [--builtin NAME] [--tol T] [FILE]\n"
+           "Print the number of patches, their degrees, the bounds of the control points (which\n"
+           "contain the surface) and the numbers of shared and open edges (sides matched when their\n"
+           "control points agree within T per coordinate, default 1e-9).\n");
+}
+
+int cmd_info(int argc, char **argv)
+{
+    const char *cmd = argv[0];
+    cli_input in = {NULL, "teapot"};
+    double tol = 1e-9;
+    for (int i = 1; i < argc; i++) {
+        int b = cli_take_builtin(argc, argv, &i, &in);
+        if (b < 0)
+            return CLI_USAGE;
+        if (b > 0)
+            continue;
+        if (cli_is_help(argv[i])) {
+            help();
+            return cli_finish(cmd);
+        }
+        if (strcmp(argv[i], "--tol") == 0) {
+            if (i + 1 >= argc || !cli_parse_double(argv[++i], &tol) || tol < 0)
+                return cli_fail(cmd, CLI_USAGE, "--tol needs a finite number >= 0");
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            return cli_fail(cmd, CLI_USAGE, "unknown option '%s' (try 'bezsurf info --help')", argv[i]);
+        } else if (in.path != NULL) {
+            return cli_fail(cmd, CLI_USAGE, "more than one input file");
+        } else {
+            in.path = argv[i];
+        }
+    }
+    bs_surface *s;
+    int rc = cli_load(cmd, &in, &s);
+    if (rc != CLI_OK)
+        return rc;
+    size_t np = bs_surface_count(s), dim = bs_surface_dim(s), nrat = 0;
+    static size_t hist[BS_MAX_DEGREE + 1][BS_MAX_DEGREE + 1];
+    memset(hist, 0, sizeof hist);
+    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
+    for (size_t c = 0; c < BS_MAX_DIM; c++)
+        lo[c] = 1.0 / 0.0, hi[c] = -1.0 / 0.0;
+    for (size_t k = 0; k < np; k++) {
+        const bs_patch *p = bs_surface_get(s, k);
+        size_t m = bs_patch_degree_u(p), n = bs_patch_degree_v(p), cnt = (m + 1) * (n + 1) * dim;
+        hist[m][n]++;
+        nrat += (size_t)bs_patch_is_rational(p);
+        double ctrl[(BS_MAX_DEGREE + 1) * (BS_MAX_DEGREE + 1) * 3];
+        if (dim <= 3 && bs_patch_get_ctrl(p, ctrl, cnt, NULL, 0) == BS_OK)
+            for (size_t i = 0; i < cnt; i++) {
+                lo[i % dim] = ctrl[i] < lo[i % dim] ? ctrl[i] : lo[i % dim];
+                hi[i % dim] = ctrl[i] > hi[i % dim] ? ctrl[i] : hi[i % dim];
+            }
+    }
+    printf("input: %s%s\n", cli_input_name(&in), in.path ? "" : " (built-in)");
+    printf("patches: %zu\n", np);
+    printf("dimension: %zu\n", dim);
+    printf("degrees:");
+    for (size_t m = 0; m <= BS_MAX_DEGREE; m++)
+        for (size_t n = 0; n <= BS_MAX_DEGREE; n++)
+            if (hist[m][n])
+                printf(" %zux%zu (%zu)", m, n, hist[m][n]);
+    printf("\nrational patches: %zu\n", nrat);
+    printf("bounds:");
+    static const char axis[3] = {'x', 'y', 'z'};
+    for (size_t c = 0; np > 0 && c < dim && c < 3; c++)
+        printf("%s %c %.17g .. %.17g", c ? "," : "", axis[c], lo[c], hi[c]);
+    printf("%s\n", np > 0 ? "" : " none");
+    size_t ne = 0, no = 0;
+    bs_status st = bs_surface_continuity(s, tol, 1, NULL, 0, &ne, NULL, 0, &no);
+    if (st == BS_OK)
+        printf("shared edges: %zu\nopen edges: %zu\n", ne, no);
+    bs_surface_destroy(s);
+    if (st != BS_OK)
+        return cli_fail(cmd, CLI_INTERNAL, "edges: %s", bs_status_string(st));
+    return cli_finish(cmd);
+}
