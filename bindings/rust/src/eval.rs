@@ -44,11 +44,11 @@ impl NormalKind {
 /// ```
 #[derive(Debug, Default)]
 pub struct Outputs<'a> {
-    pos: Option<PointsMut<'a>>,
-    du: Option<PointsMut<'a>>,
-    dv: Option<PointsMut<'a>>,
-    nrm: Option<PointsMut<'a>>,
-    kind: Option<&'a mut [u8]>,
+    pub(crate) pos: Option<PointsMut<'a>>,
+    pub(crate) du: Option<PointsMut<'a>>,
+    pub(crate) dv: Option<PointsMut<'a>>,
+    pub(crate) nrm: Option<PointsMut<'a>>,
+    pub(crate) kind: Option<&'a mut [u8]>,
 }
 
 impl<'a> Outputs<'a> {
@@ -85,30 +85,33 @@ impl<'a> Outputs<'a> {
 }
 
 /// C views for an optional output, holding the array the C call points into.
-struct CPoints {
+pub(crate) struct CPoints {
     views: Option<[sys::bs_view; sys::BS_MAX_DIM]>,
 }
 
 impl CPoints {
-    fn new(out: Option<&mut PointsMut<'_>>, dim: usize) -> Result<CPoints> {
+    pub(crate) fn new(out: Option<&mut PointsMut<'_>>, dim: usize) -> Result<CPoints> {
         Ok(CPoints { views: out.map(|o| o.c_views(dim)).transpose()? })
     }
-    fn as_ptr(&self) -> *const sys::bs_view {
+    pub(crate) fn none() -> CPoints {
+        CPoints { views: None }
+    }
+    pub(crate) fn as_ptr(&self) -> *const sys::bs_view {
         self.views.as_ref().map_or(ptr::null(), |v| v.as_ptr())
     }
 }
 
-fn invalid() -> Error {
+pub(crate) fn invalid() -> Error {
     Error::from_code(sys::BS_ERR_INVALID_ARG)
 }
 
-fn size_error() -> Error {
+pub(crate) fn size_error() -> Error {
     Error::from_code(sys::BS_ERR_SIZE)
 }
 
 /// The kind buffer as the C pointer, after checking it holds `n` bytes (the C API has no
 /// capacity for it).
-fn kind_ptr(kind: Option<&mut [u8]>, n: usize) -> Result<*mut u8> {
+pub(crate) fn kind_ptr(kind: Option<&mut [u8]>, n: usize) -> Result<*mut u8> {
     match kind {
         None => Ok(ptr::null_mut()),
         Some(k) if k.len() >= n => Ok(k.as_mut_ptr()),
@@ -117,7 +120,7 @@ fn kind_ptr(kind: Option<&mut [u8]>, n: usize) -> Result<*mut u8> {
 }
 
 /// Parameters for scattered evaluation: u and v must have the same length n.
-fn scattered<'u, 'v>(
+pub(crate) fn scattered<'u, 'v>(
     u: impl Into<Strided<'u>>,
     v: impl Into<Strided<'v>>,
 ) -> Result<(usize, sys::bs_cview, sys::bs_cview)> {

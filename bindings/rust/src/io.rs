@@ -14,7 +14,7 @@ fn empty_parse_error() -> sys::bs_parse_error {
 }
 
 /// A path as the C string `fopen` receives; a NUL byte inside it is `InvalidArg`.
-fn c_path(path: &Path) -> Result<CString> {
+pub(crate) fn c_path(path: &Path) -> Result<CString> {
     #[cfg(unix)]
     let bytes = {
         use std::os::unix::ffi::OsStrExt;

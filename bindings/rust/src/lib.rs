@@ -27,17 +27,22 @@
 
 pub mod sys;
 
+mod continuity;
 mod error;
 mod eval;
 mod io;
+mod mesh;
 mod ops;
 mod patch;
 mod strided;
 mod surface;
+mod surface_eval;
 
+pub use continuity::{Continuity, EdgeContinuity, OpenEdge, Side};
 pub use error::{status_string, Error, ErrorKind, Result};
 pub use eval::{NormalKind, Outputs};
 pub use io::builtin_names;
+pub use mesh::{Mesh, MeshFormat, TessFlags, TESS_MAX_RATE};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
 pub use strided::{PointsMut, Strided, StridedMut};

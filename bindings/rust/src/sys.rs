@@ -7,7 +7,7 @@
 
 #![allow(non_camel_case_types)]
 
-use std::os::raw::{c_char, c_int, c_uchar, c_uint};
+use std::os::raw::{c_char, c_int, c_uchar, c_uint, c_void};
 
 /// `bs_status`: 0 is success, failures are negative.
 pub type bs_status = c_int;
@@ -34,6 +34,20 @@ pub const BS_NORMAL_UNDEFINED: c_uchar = 2;
 
 pub const BS_DIR_U: c_int = 0;
 pub const BS_DIR_V: c_int = 1;
+
+pub const BS_SIDE_V0: c_int = 0;
+pub const BS_SIDE_U1: c_int = 1;
+pub const BS_SIDE_V1: c_int = 2;
+pub const BS_SIDE_U0: c_int = 3;
+
+pub const BS_TESS_RELATIVE: c_int = 1;
+pub const BS_TESS_STRIPS: c_int = 2;
+pub const BS_TESS_MAX_RATE: usize = 1024;
+
+pub const BS_MESH_OBJ: c_int = 0;
+pub const BS_MESH_PLY: c_int = 1;
+pub const BS_MESH_PLY_ASCII: c_int = 2;
+pub const BS_MESH_STL: c_int = 3;
 
 /// A strided output buffer of doubles (`bs_view`).
 #[repr(C)]
@@ -70,6 +84,37 @@ pub struct bs_parse_error {
     pub line: usize,
     pub column: usize,
     pub message: [c_char; 96],
+}
+
+/// How two patches meet along one shared edge (`bs_edge_continuity`, continuity.h).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_edge_continuity {
+    pub patch_a: u32,
+    pub patch_b: u32,
+    pub side_a: c_int,
+    pub side_b: c_int,
+    pub reversed: c_int,
+    pub c1: c_int,
+    pub flipped: c_int,
+    pub samples: c_int,
+    pub c0_gap: f64,
+    pub g1_angle: f64,
+    pub c1_defect: f64,
+}
+
+/// A side of a patch that no other patch shares (`bs_open_edge`, continuity.h).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_open_edge {
+    pub patch: u32,
+    pub side: c_int,
+}
+
+/// Opaque mesh handle (`bs_mesh`, mesh.h); only ever used behind a pointer.
+#[repr(C)]
+pub struct bs_mesh {
+    _opaque: [u8; 0],
 }
 
 /// Opaque patch handle (`bs_patch`); only ever used behind a pointer.
@@ -214,6 +259,82 @@ extern "C" {
     pub fn bs_surface_count(s: *const bs_surface) -> usize;
     pub fn bs_surface_dim(s: *const bs_surface) -> usize;
     pub fn bs_surface_get(s: *const bs_surface, i: usize) -> *const bs_patch;
+
+    pub fn bs_surface_eval(
+        s: *const bs_surface,
+        n: usize,
+        ids: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        du: *const bs_view,
+        dv: *const bs_view,
+    ) -> bs_status;
+    pub fn bs_surface_eval_normal(
+        s: *const bs_surface,
+        n: usize,
+        ids: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut c_uchar,
+    ) -> bs_status;
+
+    // ---- continuity.h ----
+    pub fn bs_surface_continuity(
+        s: *const bs_surface,
+        tol: f64,
+        samples: usize,
+        edges: *mut bs_edge_continuity,
+        edges_cap: usize,
+        n_edges: *mut usize,
+        open: *mut bs_open_edge,
+        open_cap: usize,
+        n_open: *mut usize,
+    ) -> bs_status;
+
+    // ---- mesh.h ----
+    pub fn bs_surface_tessellate_uniform(
+        s: *const bs_surface,
+        nu: usize,
+        nv: usize,
+        flags: c_int,
+        out: *mut *mut bs_mesh,
+    ) -> bs_status;
+    pub fn bs_surface_tessellate_adaptive(
+        s: *const bs_surface,
+        tolerance: f64,
+        flags: c_int,
+        out: *mut *mut bs_mesh,
+    ) -> bs_status;
+    pub fn bs_mesh_destroy(m: *mut bs_mesh);
+    pub fn bs_mesh_vertex_count(m: *const bs_mesh) -> usize;
+    pub fn bs_mesh_triangle_count(m: *const bs_mesh) -> usize;
+    pub fn bs_mesh_strip_count(m: *const bs_mesh) -> usize;
+    pub fn bs_mesh_strip_index_count(m: *const bs_mesh) -> usize;
+    pub fn bs_mesh_copy_positions(m: *const bs_mesh, xyz: *const bs_view) -> bs_status;
+    pub fn bs_mesh_copy_normals(m: *const bs_mesh, nrm: *const bs_view) -> bs_status;
+    pub fn bs_mesh_copy_uv(m: *const bs_mesh, uv: *const bs_view) -> bs_status;
+    pub fn bs_mesh_copy_patch_ids(m: *const bs_mesh, ids: *mut u32, cap: usize) -> bs_status;
+    pub fn bs_mesh_copy_triangles(m: *const bs_mesh, idx: *mut u32, cap: usize) -> bs_status;
+    pub fn bs_mesh_copy_triangle_patch_ids(m: *const bs_mesh, ids: *mut u32, cap: usize) -> bs_status;
+    pub fn bs_mesh_copy_corner_uv(m: *const bs_mesh, uv: *const bs_view) -> bs_status;
+    pub fn bs_mesh_copy_strips(
+        m: *const bs_mesh,
+        idx: *mut u32,
+        idx_cap: usize,
+        start: *mut u32,
+        start_cap: usize,
+    ) -> bs_status;
+    pub fn bs_mesh_write(m: *const bs_mesh, format: c_int, path: *const c_char) -> bs_status;
+    pub fn bs_mesh_write_memory(
+        m: *const bs_mesh,
+        format: c_int,
+        buf: *mut c_void,
+        cap: usize,
+        size: *mut usize,
+    ) -> bs_status;
 
     // ---- io.h ----
     pub fn bs_surface_read_bpt(

@@ -16,6 +16,8 @@ const PROBE: &str = r#"
 #include "bezsurf/ops.h"
 #include "bezsurf/surface.h"
 #include "bezsurf/io.h"
+#include "bezsurf/continuity.h"
+#include "bezsurf/mesh.h"
 
 #define ALIGNOF(T) offsetof(struct { char c; T t; }, t)
 #define SIZE(T) printf("size " #T " %zu\n", sizeof(T)); printf("align " #T " %zu\n", ALIGNOF(T))
@@ -30,6 +32,12 @@ int main(void)
     OFF(bs_curve, weights);
     SIZE(bs_parse_error); OFF(bs_parse_error, line); OFF(bs_parse_error, column);
     OFF(bs_parse_error, message);
+    SIZE(bs_edge_continuity); OFF(bs_edge_continuity, patch_a); OFF(bs_edge_continuity, patch_b);
+    OFF(bs_edge_continuity, side_a); OFF(bs_edge_continuity, side_b);
+    OFF(bs_edge_continuity, reversed); OFF(bs_edge_continuity, c1); OFF(bs_edge_continuity, flipped);
+    OFF(bs_edge_continuity, samples); OFF(bs_edge_continuity, c0_gap);
+    OFF(bs_edge_continuity, g1_angle); OFF(bs_edge_continuity, c1_defect);
+    SIZE(bs_open_edge); OFF(bs_open_edge, patch); OFF(bs_open_edge, side);
     SIZE(bs_status); SIZE(size_t); SIZE(ptrdiff_t);
     CONST(BS_OK); CONST(BS_ERR_INVALID_ARG); CONST(BS_ERR_NO_MEMORY); CONST(BS_ERR_DEGREE);
     CONST(BS_ERR_DIMENSION); CONST(BS_ERR_SIZE); CONST(BS_ERR_DOMAIN); CONST(BS_ERR_NONFINITE);
@@ -37,6 +45,9 @@ int main(void)
     CONST(BS_MAX_DEGREE); CONST(BS_MAX_DIM);
     CONST(BS_NORMAL_REGULAR); CONST(BS_NORMAL_LIMIT); CONST(BS_NORMAL_UNDEFINED);
     CONST(BS_DIR_U); CONST(BS_DIR_V);
+    CONST(BS_SIDE_V0); CONST(BS_SIDE_U1); CONST(BS_SIDE_V1); CONST(BS_SIDE_U0);
+    CONST(BS_TESS_RELATIVE); CONST(BS_TESS_STRIPS); CONST(BS_TESS_MAX_RATE);
+    CONST(BS_MESH_OBJ); CONST(BS_MESH_PLY); CONST(BS_MESH_PLY_ASCII); CONST(BS_MESH_STL);
     return 0;
 }
 "#;
@@ -100,6 +111,23 @@ fn sys_matches_the_c_header() {
         ("offset bs_parse_error.line", offset_of!(sys::bs_parse_error, line) as i64),
         ("offset bs_parse_error.column", offset_of!(sys::bs_parse_error, column) as i64),
         ("offset bs_parse_error.message", offset_of!(sys::bs_parse_error, message) as i64),
+        ("size bs_edge_continuity", size_of::<sys::bs_edge_continuity>() as i64),
+        ("align bs_edge_continuity", align_of::<sys::bs_edge_continuity>() as i64),
+        ("offset bs_edge_continuity.patch_a", offset_of!(sys::bs_edge_continuity, patch_a) as i64),
+        ("offset bs_edge_continuity.patch_b", offset_of!(sys::bs_edge_continuity, patch_b) as i64),
+        ("offset bs_edge_continuity.side_a", offset_of!(sys::bs_edge_continuity, side_a) as i64),
+        ("offset bs_edge_continuity.side_b", offset_of!(sys::bs_edge_continuity, side_b) as i64),
+        ("offset bs_edge_continuity.reversed", offset_of!(sys::bs_edge_continuity, reversed) as i64),
+        ("offset bs_edge_continuity.c1", offset_of!(sys::bs_edge_continuity, c1) as i64),
+        ("offset bs_edge_continuity.flipped", offset_of!(sys::bs_edge_continuity, flipped) as i64),
+        ("offset bs_edge_continuity.samples", offset_of!(sys::bs_edge_continuity, samples) as i64),
+        ("offset bs_edge_continuity.c0_gap", offset_of!(sys::bs_edge_continuity, c0_gap) as i64),
+        ("offset bs_edge_continuity.g1_angle", offset_of!(sys::bs_edge_continuity, g1_angle) as i64),
+        ("offset bs_edge_continuity.c1_defect", offset_of!(sys::bs_edge_continuity, c1_defect) as i64),
+        ("size bs_open_edge", size_of::<sys::bs_open_edge>() as i64),
+        ("align bs_open_edge", align_of::<sys::bs_open_edge>() as i64),
+        ("offset bs_open_edge.patch", offset_of!(sys::bs_open_edge, patch) as i64),
+        ("offset bs_open_edge.side", offset_of!(sys::bs_open_edge, side) as i64),
         ("size bs_status", size_of::<sys::bs_status>() as i64),
         ("size size_t", size_of::<usize>() as i64),
         ("size ptrdiff_t", size_of::<isize>() as i64),
@@ -107,7 +135,7 @@ fn sys_matches_the_c_header() {
         ("align size_t", align_of::<usize>() as i64),
         ("align ptrdiff_t", align_of::<isize>() as i64),
     ];
-    let consts: [(&str, i64); 19] = [
+    let consts: [(&str, i64); 30] = [
         ("BS_OK", sys::BS_OK as i64),
         ("BS_ERR_INVALID_ARG", sys::BS_ERR_INVALID_ARG as i64),
         ("BS_ERR_NO_MEMORY", sys::BS_ERR_NO_MEMORY as i64),
@@ -127,6 +155,17 @@ fn sys_matches_the_c_header() {
         ("BS_NORMAL_UNDEFINED", sys::BS_NORMAL_UNDEFINED as i64),
         ("BS_DIR_U", sys::BS_DIR_U as i64),
         ("BS_DIR_V", sys::BS_DIR_V as i64),
+        ("BS_SIDE_V0", sys::BS_SIDE_V0 as i64),
+        ("BS_SIDE_U1", sys::BS_SIDE_U1 as i64),
+        ("BS_SIDE_V1", sys::BS_SIDE_V1 as i64),
+        ("BS_SIDE_U0", sys::BS_SIDE_U0 as i64),
+        ("BS_TESS_RELATIVE", sys::BS_TESS_RELATIVE as i64),
+        ("BS_TESS_STRIPS", sys::BS_TESS_STRIPS as i64),
+        ("BS_TESS_MAX_RATE", sys::BS_TESS_MAX_RATE as i64),
+        ("BS_MESH_OBJ", sys::BS_MESH_OBJ as i64),
+        ("BS_MESH_PLY", sys::BS_MESH_PLY as i64),
+        ("BS_MESH_PLY_ASCII", sys::BS_MESH_PLY_ASCII as i64),
+        ("BS_MESH_STL", sys::BS_MESH_STL as i64),
     ];
     let names: Vec<String> = consts.iter().map(|(n, _)| format!("const {n}")).collect();
     rust.extend(names.iter().zip(consts.iter()).map(|(k, (_, v))| (k.as_str(), *v)));
