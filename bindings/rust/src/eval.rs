@@ -132,7 +132,7 @@ pub(crate) fn scattered<'u, 'v>(
 }
 
 impl PatchRef {
-    /// Positions at the n points (u[k], v[k]) (`bs_patch_eval`). `u` and `v` are slices or
+    /// Positions at the n points (`u[k]`, `v[k]`) (`bs_patch_eval`). `u` and `v` are slices or
     /// [`Strided`] views of the same length n (else `Size`); `pos` receives n points of
     /// [`dim`](PatchRef::dim) coordinates (interleaved slice or one view per coordinate; too
     /// short is `Size`). Parameters outside [0, 1] extrapolate; a NaN parameter gives NaN.
@@ -214,7 +214,7 @@ impl PatchRef {
         })
     }
 
-    /// Every u[a] with every v[b] (`bs_patch_eval_grid`), point (a, b) written at index
+    /// Every `u[a]` with every `v[b]` (`bs_patch_eval_grid`), point (a, b) written at index
     /// a·nv + b, nu = `u.len()`, nv = `v.len()`. Any of the outputs may be set; `normal` and
     /// `kind` need a 3-D patch (else `Dimension`).
     pub fn eval_grid<'u, 'v>(

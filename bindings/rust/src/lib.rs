@@ -2,8 +2,11 @@
 //! patches.
 //!
 //! The raw C API is in [`sys`]; the rest of the crate wraps it safely: owned handles that free
-//! themselves ([`Patch`], [`Surface`]), failures as [`Error`], slices and strided views
-//! ([`Strided`], [`StridedMut`], [`PointsMut`]) for buffers.
+//! themselves ([`Patch`], [`Surface`], [`Mesh`]), failures as [`Error`], slices and strided views
+//! ([`Strided`], [`StridedMut`], [`PointsMut`]) for buffers. Patches are evaluated with
+//! [`PatchRef::eval`] and its siblings, changed into new patches by the exact operations
+//! ([`PatchRef::split`], [`PatchRef::elevate`], ...); surfaces are read and written as `.bpt`
+//! text, evaluated, checked for continuity and tessellated into meshes.
 //!
 //! ```
 //! use bezsurf::Patch;
@@ -21,8 +24,9 @@
 //! # Ok::<(), bezsurf::Error>(())
 //! ```
 //!
-//! Threads: patches are immutable, so `Patch` and `&PatchRef` are `Send + Sync` and may be
-//! evaluated from any number of threads at once. Lifetimes: a patch borrowed from a surface is a
+//! Threads: patches and meshes are immutable and the library has no mutable global state, so
+//! `Patch`, `&PatchRef`, `Surface` and `Mesh` are `Send + Sync` and may be used from any number
+//! of threads at once (only `Surface::add` needs `&mut`). Lifetimes: a patch borrowed from a surface is a
 //! `&PatchRef` that cannot outlive the surface.
 
 pub mod sys;

@@ -252,8 +252,8 @@ impl Mesh {
     }
 
     /// Copies the triangle strips (`bs_mesh_copy_strips`): strip k is
-    /// `idx[start[k] as usize..start[k + 1] as usize]`, its triangle i being (s[i], s[i+1], s[i+2])
-    /// for even i and (s[i+1], s[i], s[i+2]) for odd i; triangles with a repeated index are
+    /// `idx[start[k] as usize..start[k + 1] as usize]`, its triangle i being (`s[i]`, `s[i+1]`, `s[i+2]`)
+    /// for even i and (`s[i+1]`, `s[i]`, `s[i+2]`) for odd i; triangles with a repeated index are
     /// degenerate (at poles) and to be dropped.
     pub fn copy_strips(&self, idx: &mut [u32], start: &mut [u32]) -> Result<()> {
         // SAFETY: each slice holds the capacity passed with it.

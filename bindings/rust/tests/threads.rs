@@ -76,3 +76,22 @@ fn patches_and_surfaces_are_send_and_sync() {
     check::<Surface>();
     check::<&bezsurf::PatchRef>();
 }
+
+#[test]
+fn tessellating_one_surface_from_several_threads_matches_serial() {
+    let teapot = Surface::builtin("teapot").unwrap();
+    let snapshot = |m: &bezsurf::Mesh| {
+        let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
+        (bits, m.triangles())
+    };
+    let serial = snapshot(&teapot.tessellate_adaptive(1e-3, bezsurf::TessFlags::RELATIVE).unwrap());
+    let teapot = &teapot;
+    thread::scope(|scope| {
+        let handles: Vec<_> = (0..3)
+            .map(|_| scope.spawn(|| teapot.tessellate_adaptive(1e-3, bezsurf::TessFlags::RELATIVE).unwrap()))
+            .collect();
+        for h in handles {
+            assert!(snapshot(&h.join().unwrap()) == serial);
+        }
+    });
+}
