@@ -64,7 +64,10 @@ fn probe() -> HashMap<String, i64> {
     let exe = dir.join("probe");
     std::fs::write(&src, PROBE).unwrap();
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".to_owned());
+    // A sanitizer runtime preloaded into this test (see run-sanitized-tests.sh) is not for the
+    // compiler or the probe.
     let status = Command::new(&cc)
+        .env_remove("LD_PRELOAD")
         .arg("-std=c99")
         .arg("-I")
         .arg(&include)
@@ -74,7 +77,7 @@ fn probe() -> HashMap<String, i64> {
         .status()
         .unwrap_or_else(|e| panic!("cannot run the C compiler `{cc}`: {e}"));
     assert!(status.success(), "the layout probe did not compile");
-    let out = Command::new(&exe).output().expect("run the layout probe");
+    let out = Command::new(&exe).env_remove("LD_PRELOAD").output().expect("run the layout probe");
     assert!(out.status.success());
     String::from_utf8(out.stdout)
         .unwrap()
