@@ -2,7 +2,7 @@
  * m!/(m-k)! n!/(n-l)! Delta^(k,l) P, and it evaluates to the reference derivative of the parent. */
 #include "ops_check.h"
 
-static double worst_net, worst_eval;
+static double worst_net, worst_eval, worst_lib;
 
 static long double falling(size_t deg, unsigned k)
 {
@@ -71,6 +71,29 @@ static void check_hodograph(const tnet *net, const bs_patch *p, unsigned ku, uns
                 worst_eval = err > worst_eval ? err : worst_eval;
             }
         }
+        /* the library's own derivative evaluator agrees with the hodograph's reference value */
+        enum { NPT = 5 };
+        double us[NPT], vs[NPT], res[BS_MAX_DIM][NPT];
+        for (int k = 0; k < NPT; k++) {
+            us[k] = bs_test_rand(rng, 0, 1);
+            vs[k] = bs_test_rand(rng, 0, 1);
+        }
+        bs_cview cu = {us, NPT, 0}, cv = {vs, NPT, 0};
+        bs_view outv[BS_MAX_DIM];
+        for (size_t c = 0; c < net->dim; c++) {
+            outv[c].data = res[c];
+            outv[c].count = NPT;
+            outv[c].stride = 0;
+        }
+        CHECK_STATUS(bs_patch_eval_deriv(p, ku, kv, NPT, &cu, &cv, outv), BS_OK);
+        for (int k = 0; k < NPT; k++) {
+            ref_eval(&a, (long double)us[k], (long double)vs[k], x);
+            for (size_t c = 0; c < net->dim; c++) {
+                double err = (double)fabsl((long double)res[c][k] - x[c]) / bound;
+                CHECKF(err <= 1.0, "bs_patch_eval_deriv differs from the hodograph by %g of the bound", err);
+                worst_lib = err > worst_lib ? err : worst_lib;
+            }
+        }
         free(ex.h);
     }
     tnet_free(&got);
@@ -121,5 +144,6 @@ int main(void)
     test_small_exact();
     print_worst("hodograph nets vs difference formula", worst_net);
     print_worst("hodograph evaluation vs reference derivative", worst_eval);
+    print_worst("bs_patch_eval_deriv vs hodograph (reference)", worst_lib);
     return bs_test_exit("test_hodograph");
 }
