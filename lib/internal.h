@@ -128,6 +128,7 @@ typedef struct bsi_nscale {
     double lu, lv;   /* bounds on |S_u| and |S_v| over the unit square */
     double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
     double rho;      /* wmax / wmin, 1 for polynomial patches */
+    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero */
 } bsi_nscale;
 
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);

@@ -197,7 +197,8 @@ BS_API bs_status bs_patch_get_ctrl(const bs_patch *p, double *ctrl, size_t ctrl_
  *   of points or a byte extent (n-1)*|stride| that overflows ptrdiff_t (BS_ERR_SIZE).
  * - n = 0 (or nu = 0 or nv = 0) is a successful no-op once p and the orders or dimension have been
  *   checked; the views are then neither checked nor read.
- * - u and v may lie outside [0,1]: the polynomial is extrapolated (and may overflow to Inf far away).
+ * - u and v may lie outside [0,1]: the polynomial is extrapolated (and may overflow to Inf far away;
+ *   a rational patch's denominator may vanish there, giving Inf or NaN).
  *   A NaN or infinite parameter gives NaN in every output of that point only (kind
  *   BS_NORMAL_UNDEFINED).
  * - Results do not depend on the batch size, the strides or the alignment of the buffers: the same
