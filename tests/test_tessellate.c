@@ -10,6 +10,8 @@
 #include <math.h>
 #include <string.h>
 
+#define M_PI_2_ 1.57079632679489661923
+
 typedef struct mesh_data {
     size_t nv, nt, ns, nsi;
     double *pos, *nrm, *uv, *cuv;
@@ -54,10 +56,12 @@ static void free_mesh(mesh_data *d)
     free(d->tpatch); free(d->vpatch); free(d->sidx); free(d->sstart);
 }
 
-static ref_net net_of(const bs_patch *p, double *store)
+static ref_net net_of(const bs_patch *p, double *store, double *wstore)
 {
     ref_net r = {bs_patch_degree_u(p), bs_patch_degree_v(p), 3, store, NULL};
-    bs_patch_get_ctrl(p, store, 65 * 65 * 3, NULL, 0);
+    bs_patch_get_ctrl(p, store, 65 * 65 * 3, wstore, 65 * 65);
+    if (bs_patch_is_rational(p))
+        r.w = wstore;
     return r;
 }
 
@@ -156,14 +160,14 @@ static void check_mesh(const bs_surface *s, const bs_mesh *m, double tol, const 
     /* Every corner's vertex is the surface at the corner's (u,v) on the triangle's patch (this also
      * checks that welded vertices were matched with the right orientation), and every triangle is
      * within tol of the surface at its centroid and edge midpoints. */
-    static double store[65 * 65 * 3];
+    static double store[65 * 65 * 3], wstore[65 * 65];
     long double worst_vertex = 0.0L, worst_chord = 0.0L;
     uint32_t last = UINT32_MAX;
     ref_net net = {0, 0, 3, NULL, NULL};
     for (size_t t = 0; t < d.nt; t++) {
         if (d.tpatch[t] != last) {
             last = d.tpatch[t];
-            net = net_of(bs_surface_get(s, last), store);
+            net = net_of(bs_surface_get(s, last), store, wstore);
         }
         const double *cu = d.cuv + 6 * t;
         long double S[3];
@@ -373,6 +377,42 @@ static void grids(void)
     }
 }
 
+/* A full circular cylinder of radius 2 and height 3 from four rational quarter patches (quadratic
+ * in u with weights 1, 1/sqrt(2), 1; linear in v): shared sides found through proportional weights,
+ * and the adaptive mesh within its tolerance of the exact surface. */
+static void cylinder(void)
+{
+    bs_surface *s = NULL;
+    bs_surface_create(&s);
+    double h = sqrt(0.5);
+    for (int q = 0; q < 4; q++) {
+        double a0 = q * M_PI_2_, a1 = a0 + M_PI_2_, net[3 * 2 * 3], w[6];
+        double px[3] = {cos(a0), cos(a0) + cos(a1), cos(a1)}, py[3] = {sin(a0), sin(a0) + sin(a1), sin(a1)};
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 2; j++) {
+                double *p = net + (i * 2 + j) * 3;
+                p[0] = 2 * px[i];
+                p[1] = 2 * py[i];
+                p[2] = 3.0 * j;
+                w[i * 2 + j] = i == 1 ? h : 1.0;
+            }
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(2, 1, 3, net, w, &p), BS_OK);
+        bs_surface_add(s, p, NULL);
+        bs_patch_destroy(p);
+    }
+    static const double tols[] = {0.05, 1e-3};
+    for (int k = 0; k < 2; k++) {
+        bs_mesh *m = NULL;
+        CHECK_STATUS(bs_surface_tessellate_adaptive(s, tols[k], BS_TESS_STRIPS, &m), BS_OK);
+        char what[64];
+        snprintf(what, sizeof what, "rational cylinder adaptive %g", tols[k]);
+        check_mesh(s, m, tols[k], what);
+        bs_mesh_destroy(m);
+    }
+    bs_surface_destroy(s);
+}
+
 static void errors(void)
 {
     bs_surface *s = NULL, *empty = NULL, *flat = NULL;
@@ -447,6 +487,7 @@ int main(void)
 {
     errors();
     grids();
+    cylinder();
     teapot();
     return bs_test_exit("test_tessellate");
 }

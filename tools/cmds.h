@@ -24,6 +24,8 @@ typedef struct cli_command {
 int cmd_info(int argc, char **argv);
 int cmd_eval(int argc, char **argv);
 int cmd_continuity(int argc, char **argv);
+int cmd_tessellate(int argc, char **argv);
+int cmd_render(int argc, char **argv);
 
 /* ---- helpers (tools/cli.c) ---- */
 
