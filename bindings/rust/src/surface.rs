@@ -10,6 +10,35 @@ use crate::sys;
 /// releases its patches. Patches borrowed from it ([`Surface::get`], [`Surface::iter`]) are
 /// `&PatchRef` tied to the borrow of the surface, so they cannot outlive it, and
 /// [`Surface::add`] (which takes `&mut self`) cannot run while one is held.
+///
+/// ```
+/// let teapot = bezsurf::Surface::builtin("teapot")?;
+/// let rim = teapot.get(0).unwrap(); // &PatchRef borrowed from `teapot`
+/// assert_eq!((rim.degree_u(), rim.degree_v()), (3, 3));
+/// let owned = rim.to_patch()?; // an independent copy may outlive the surface
+/// drop(teapot);
+/// assert_eq!(owned.dim(), 3);
+/// # Ok::<(), bezsurf::Error>(())
+/// ```
+///
+/// A borrowed patch cannot outlive its surface:
+///
+/// ```compile_fail,E0597
+/// let rim;
+/// {
+///     let teapot = bezsurf::Surface::builtin("teapot").unwrap();
+///     rim = teapot.get(0).unwrap();
+/// } // `teapot` dropped here while still borrowed
+/// rim.degree_u();
+/// ```
+///
+/// nor be held while the surface grows:
+///
+/// ```compile_fail,E0502
+/// let mut teapot = bezsurf::Surface::builtin("teapot").unwrap();
+/// let rim = teapot.get(0).unwrap();
+/// teapot.add(rim).unwrap(); // needs `&mut teapot` while `rim` borrows it
+/// ```
 pub struct Surface {
     ptr: NonNull<sys::bs_surface>,
 }
