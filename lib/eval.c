@@ -53,26 +53,28 @@ void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, i
             double q[B], qu[B], qv[B];
             for (size_t k = 0; k < B; k++)
                 q[k] = qu[k] = qv[k] = 0.0;
-            for (size_t i = 0; i <= m; i++) {
-                double pij = net[i * n1 + j];
-                const double *wi = bu + i * B;
-                for (size_t k = 0; k < B; k++)
-                    q[k] += wi[k] * pij;
-            }
-            if (du) {
-                for (size_t i = 0; i < m; i++) {
-                    double d = net[(i + 1) * n1 + j] - net[i * n1 + j];
-                    const double *wi = bum + i * B;
-                    for (size_t k = 0; k < B; k++)
-                        qu[k] += wi[k] * d;
-                }
-            }
-            if (dv && j < n) {
+            if (!first) {
                 for (size_t i = 0; i <= m; i++) {
-                    double d = net[i * n1 + j + 1] - net[i * n1 + j];
+                    double pij = net[i * n1 + j];
                     const double *wi = bu + i * B;
                     for (size_t k = 0; k < B; k++)
-                        qv[k] += wi[k] * d;
+                        q[k] += wi[k] * pij;
+                }
+            } else {
+                /* One pass over the column; each accumulator still sums i ascending. */
+                int jv = dv && j < n;
+                for (size_t i = 0; i <= m; i++) {
+                    double pij = net[i * n1 + j];
+                    double dvij = jv ? net[i * n1 + j + 1] - pij : 0.0;
+                    double duij = du && i < m ? net[(i + 1) * n1 + j] - pij : 0.0;
+                    const double *wi = bu + i * B, *wmi = bum + i * B;
+                    for (size_t k = 0; k < B; k++) {
+                        q[k] += wi[k] * pij;
+                        qv[k] += wi[k] * dvij;
+                    }
+                    if (du && i < m)
+                        for (size_t k = 0; k < B; k++)
+                            qu[k] += wmi[k] * duij;
                 }
             }
             const double *wj = bv + j * B, *wmj = bvm + j * B;
