@@ -214,3 +214,25 @@ fn errors_write_nothing() {
     // No points: nothing to do, buffers unread.
     p.eval(&[], &[], &mut []).unwrap();
 }
+
+#[test]
+fn rational_quarter_circle() {
+    // (1,0), (1,1), (0,1) with weights 1, sqrt(2)/2, 1: the unit quarter circle, swept along v.
+    let w = std::f64::consts::FRAC_1_SQRT_2;
+    let ctrl = [1., 0., 1., 0., 1., 1., 1., 1., 0., 1., 0., 1.];
+    let p = Patch::new_rational(2, 1, 2, &ctrl, &[1., 1., w, w, 1., 1.]).unwrap();
+    for (u, angle) in [(0.0, 0.0), (0.5, std::f64::consts::FRAC_PI_4), (1.0, std::f64::consts::FRAC_PI_2)] {
+        close(&p.eval_point(u, 0.3).unwrap(), &[angle.cos(), angle.sin()]);
+    }
+    // Every point lies on the circle.
+    let u: Vec<f64> = (0..=16).map(|k| k as f64 / 16.0).collect();
+    let mut pos = vec![0.0; 2 * u.len()];
+    p.eval(&u, &vec![0.5; u.len()], &mut pos).unwrap();
+    for xy in pos.chunks(2) {
+        assert!((xy[0].hypot(xy[1]) - 1.0).abs() < 1e-15);
+    }
+    // The tangent at u = 0 points along +y with length 2 * w (the quotient rule: 2 w1/w0 (P1 - P0)).
+    let mut du = [0.0; 2];
+    p.eval_deriv(1, 0, &[0.0], &[0.5], &mut du).unwrap();
+    close(&du, &[0.0, 2.0 * w]);
+}
