@@ -178,9 +178,9 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
         cross3(su, sv, c0);
         double qc = c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2];
         if (qc > (TAU * TAU) * (qa * qb)) {
-            double len = sqrt(qc);
+            double inv = 1.0 / sqrt(qc); /* one division; the unit vector is good to 2 ulp */
             for (int k = 0; k < 3; k++)
-                nrm[k] = c0[k] / len;
+                nrm[k] = c0[k] * inv;
             return BS_NORMAL_REGULAR;
         }
     }
