@@ -83,6 +83,26 @@ typedef struct bsi_topology {
 bs_status bsi_topology_build(const bs_surface *s, double tol, bsi_topology *out);
 void bsi_topology_free(bsi_topology *t);
 
+/* ---- .bpt numbers (lib/bpt_number.c): locale-independent decimal text ---- */
+#define BSI_NUMBER_MAX 400 /* longest number token accepted, in bytes */
+
+/* Parse the whole token tok[0..len) as a C-notation decimal number (no hex, no nan/inf). Returns 1
+ * and sets *out when it is valid and finite, 0 when it is not a number, -1 when it is a number too
+ * large for a double (the value underflows quietly to a subnormal or zero, correctly rounded). */
+int bsi_parse_double(const char *tok, size_t len, double *out);
+
+/* Write the shortest of "%.15g", "%.16g", "%.17g" that reads back to x exactly, with '.' as the
+ * decimal point, into buf (room for 32 bytes); returns its length (NUL not counted). */
+size_t bsi_format_double(double x, char *buf);
+
+/* The built-in tea set's .bpt texts (lib/teaset_data.c, generated from data/ at build time). */
+typedef struct bsi_builtin {
+    const char *name;
+    const char *text;
+    size_t len;
+} bsi_builtin;
+extern const bsi_builtin bsi_builtins[];
+extern const size_t bsi_builtin_count;
 
 /* ---- Bernstein basis (lib/basis.c) ----
  * All by the triangular recurrence B(r,k) = (1-t) B(r-1,k) + t B(r-1,k-1), so every value is a
@@ -162,27 +182,6 @@ static inline size_t bsi_net_size(size_t ncoord, size_t deg_u, size_t deg_v)
  * deg + raise along dir to out (lib/elevate.c). BS_ERR_NO_MEMORY on failure. */
 bs_status bsi_elevate_net(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
                           size_t raise, double *out);
-
-/* ---- .bpt numbers (lib/bpt_number.c): locale-independent decimal text ---- */
-#define BSI_NUMBER_MAX 400 /* longest number token accepted, in bytes */
-
-/* Parse the whole token tok[0..len) as a C-notation decimal number (no hex, no nan/inf). Returns 1
- * and sets *out when it is valid and finite, 0 when it is not a number, -1 when it is a number too
- * large for a double (the value underflows quietly to a subnormal or zero, correctly rounded). */
-int bsi_parse_double(const char *tok, size_t len, double *out);
-
-/* Write the shortest of "%.15g", "%.16g", "%.17g" that reads back to x exactly, with '.' as the
- * decimal point, into buf (room for 32 bytes); returns its length (NUL not counted). */
-size_t bsi_format_double(double x, char *buf);
-
-/* The built-in tea set's .bpt texts (lib/teaset_data.c, generated from data/ at build time). */
-typedef struct bsi_builtin {
-    const char *name;
-    const char *text;
-    size_t len;
-} bsi_builtin;
-extern const bsi_builtin bsi_builtins[];
-extern const size_t bsi_builtin_count;
 
 /* ---- Meshes (lib/mesh.c); filled by lib/tessellate.c, read by the exporters ----
  * Arrays are packed: pos, nrm 3 per vertex, uv 2 per vertex, tri 3 per triangle, corner_uv 6 per
