@@ -54,8 +54,8 @@ static void contract_row(const bs_patch *p, const double *bu, const double *bum,
  * the compiler keeps the sum in registers and vectorises over b. */
 #define W(j) w[(j) * COLS + b]
 #define COMBINE(NAME, EXPR)                                                                        \
-    static void NAME(size_t nb, const double *w, const double *q, int scaled, double scale,       \
-                     double *dst)                                                                  \
+    static void NAME(size_t nb, const double *restrict w, const double *restrict q, int scaled,  \
+                     double scale, double *restrict dst)                                           \
     {                                                                                              \
         if (scaled)                                                                                \
             for (size_t b = 0; b < nb; b++)                                                        \

@@ -269,6 +269,21 @@ void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const 
     }
 }
 
+/* nb values of coordinate c to views[c] from element idx0 on (a plain loop for packed views). */
+static void put_coord(const bs_view *views, size_t c, size_t idx0, const double *x, size_t nb)
+{
+    if (views == NULL)
+        return;
+    if (bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double)) {
+        double *d = (double *)views[c].data + idx0;
+        for (size_t k = 0; k < nb; k++)
+            d[k] = x[k];
+        return;
+    }
+    for (size_t k = 0; k < nb; k++)
+        *bsi_at(&views[c], idx0 + k) = x[k];
+}
+
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
                                const bs_view *pos, const bs_view *nrm, unsigned char *kind)
 {
@@ -318,20 +333,17 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
         const double *pu[3] = {hu, hu + B, hu + 2 * B}, *pv[3] = {hv, hv + B, hv + 2 * B};
         double *pn[3] = {nv, nv + B, nv + 2 * B};
         bsi_normal_block(p, &sc, nb, ub, 1, vb, pu, pv, pn, kd);
-        for (size_t k = 0; k < nb; k++) {
+        for (size_t k = 0; k < nb; k++)
             if (bad[k]) {
                 h[k] = h[B + k] = h[2 * B + k] = nv[k] = nv[B + k] = nv[2 * B + k] = NAN;
                 kd[k] = BS_NORMAL_UNDEFINED;
             }
-            for (size_t c = 0; c < 3; c++) {
-                if (pos)
-                    *bsi_at(&pos[c], k0 + k) = h[c * B + k];
-                if (nrm)
-                    *bsi_at(&nrm[c], k0 + k) = nv[c * B + k];
-            }
-            if (kind)
-                kind[k0 + k] = kd[k];
+        for (size_t c = 0; c < 3; c++) {
+            put_coord(pos, c, k0, h + c * B, nb);
+            put_coord(nrm, c, k0, nv + c * B, nb);
         }
+        for (size_t k = 0; kind != NULL && k < nb; k++)
+            kind[k0 + k] = kd[k];
     }
     return BS_OK;
 }
