@@ -18,43 +18,28 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Growable arrays. */
+/* Output arrays, sized once before emission and filled without checks. */
 typedef struct dbuf { double *v; size_t n, cap; } dbuf;
 typedef struct ubuf { uint32_t *v; size_t n, cap; } ubuf;
 
-static int grow(void **v, size_t *cap, size_t need, size_t elem)
+/* Allocate room for exactly `need` elements (none when need is 0). */
+static int reserve(void **v, size_t *cap, size_t need, size_t elem)
 {
-    if (need <= *cap)
+    if (need == 0)
         return 1;
-    size_t c = *cap ? *cap : 64;
-    while (c < need) {
-        if (c > SIZE_MAX / 2 / elem)
-            return 0;
-        c *= 2;
-    }
-    void *nv = realloc(*v, c * elem);
+    if (need > SIZE_MAX / elem)
+        return 0;
+    void *nv = malloc(need * elem);
     if (nv == NULL)
         return 0;
     *v = nv;
-    *cap = c;
+    *cap = need;
     return 1;
 }
 
-static int dpush(dbuf *b, double x)
-{
-    if (!grow((void **)&b->v, &b->cap, b->n + 1, sizeof(double)))
-        return 0;
-    b->v[b->n++] = x;
-    return 1;
-}
-
-static int upush(ubuf *b, uint32_t x)
-{
-    if (!grow((void **)&b->v, &b->cap, b->n + 1, sizeof(uint32_t)))
-        return 0;
-    b->v[b->n++] = x;
-    return 1;
-}
+/* Appends into reserved room. */
+#define UPUT(b, x) ((b).v[(b).n++] = (x))
+#define DPUT(b, x) ((b).v[(b).n++] = (x))
 
 /* Per-patch sampling. */
 typedef struct patch_plan {
@@ -64,6 +49,7 @@ typedef struct patch_plan {
     int regular;        /* sides sampled at the own rates: plain grid */
     size_t slot0;       /* first slot: corners 0..3, then inner samples of sides 0..3 */
     size_t side_off[4]; /* offset of side s's inner samples from slot0 */
+    size_t vert0;       /* first vertex id of this patch: its root slots, then the interior */
     size_t inner0;      /* first vertex id of the interior grid points */
 } patch_plan;
 
@@ -83,7 +69,15 @@ typedef struct tess {
     unsigned char *kind;
     ubuf tri, tpatch, sidx, sstart;
     dbuf cuv;
+    /* scratch: grid parameters i/g per direction, vertex ids of one patch's grid points */
+    double *pu, *pv;
+    uint32_t *gid;
+    double *soa; /* 6 x GRID_CHUNK: positions and normals of a block of grid rows, by coordinate */
 } tess;
+
+/* Grid points evaluated per call into packed scratch (the evaluator writes packed arrays in
+ * place; the mesh's packed triples are filled from them). */
+#define GRID_CHUNK 4096
 
 static const int side_from[4] = {0, 1, 3, 0}; /* start corner of each side (0:c00 1:c10 2:c11 3:c01) */
 static const int side_to[4] = {1, 2, 2, 3};
@@ -171,11 +165,12 @@ static corner side_corner(const tess *t, const patch_plan *pl, int s, size_t k)
     return c;
 }
 
-/* Append a triangle unless degenerate; orient it counter-clockwise in (u,v) when asked. */
-static int emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orient)
+/* Append a triangle unless degenerate (into reserved room); orient it counter-clockwise in (u,v)
+ * when asked. */
+static void emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orient)
 {
     if (a.id == b.id || b.id == c.id || a.id == c.id)
-        return 1;
+        return;
     if (orient) {
         double area = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
         if (area < 0.0) {
@@ -185,43 +180,89 @@ static int emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orien
         }
     }
     if (t->strips) {
-        if (!upush(&t->sstart, (uint32_t)t->sidx.n) || !upush(&t->sidx, a.id) || !upush(&t->sidx, b.id) ||
-            !upush(&t->sidx, c.id))
-            return 0;
+        UPUT(t->sstart, (uint32_t)t->sidx.n);
+        UPUT(t->sidx, a.id);
+        UPUT(t->sidx, b.id);
+        UPUT(t->sidx, c.id);
     }
-    return upush(&t->tri, a.id) && upush(&t->tri, b.id) && upush(&t->tri, c.id) && upush(&t->tpatch, patch) &&
-           dpush(&t->cuv, a.u) && dpush(&t->cuv, a.v) && dpush(&t->cuv, b.u) && dpush(&t->cuv, b.v) &&
-           dpush(&t->cuv, c.u) && dpush(&t->cuv, c.v);
+    UPUT(t->tri, a.id);
+    UPUT(t->tri, b.id);
+    UPUT(t->tri, c.id);
+    UPUT(t->tpatch, patch);
+    DPUT(t->cuv, a.u);
+    DPUT(t->cuv, a.v);
+    DPUT(t->cuv, b.u);
+    DPUT(t->cuv, b.v);
+    DPUT(t->cuv, c.u);
+    DPUT(t->cuv, c.v);
 }
 
-/* Quads of grid rows i0..i1-1 and columns j0..j1-1 as two triangles each, and one strip per row. */
-static int emit_grid(tess *t, uint32_t patch, const patch_plan *pl, size_t i0, size_t i1, size_t j0, size_t j1)
+/* Vertex ids of the patch's grid points into t->gid ((gu+1) x (gv+1), row i = u index): the
+ * interior always, the border too when the patch is regular (its border points are side samples). */
+static void grid_ids(tess *t, const patch_plan *pl)
 {
+    size_t w = pl->gv + 1;
+    uint32_t *g = t->gid;
+    for (size_t i = 1; i < pl->gu; i++) {
+        uint32_t first = (uint32_t)(pl->inner0 + (i - 1) * (pl->gv - 1));
+        for (size_t j = 1; j < pl->gv; j++)
+            g[i * w + j] = first + (uint32_t)(j - 1);
+    }
+    if (!pl->regular)
+        return;
+    for (size_t i = 0; i <= pl->gu; i++) {
+        g[i * w] = grid_vertex(t, pl, i, 0);
+        g[i * w + pl->gv] = grid_vertex(t, pl, i, pl->gv);
+    }
+    for (size_t j = 1; j < pl->gv; j++) {
+        g[j] = grid_vertex(t, pl, 0, j);
+        g[pl->gu * w + j] = grid_vertex(t, pl, pl->gu, j);
+    }
+}
+
+/* Quads of grid rows i0..i1-1 and columns j0..j1-1 as two triangles each (a b d, d b c with
+ * a = (i,j), b = (i+1,j), c = (i+1,j+1), d = (i,j+1)), and one strip per row; t->gid holds the
+ * ids and t->pu, t->pv the parameters. */
+static void emit_grid(tess *t, uint32_t patch, const patch_plan *pl, size_t i0, size_t i1, size_t j0, size_t j1)
+{
+    size_t w = pl->gv + 1;
+    const double *pu = t->pu, *pv = t->pv;
     for (size_t i = i0; i < i1; i++) {
+        const uint32_t *r0 = t->gid + i * w, *r1 = r0 + w;
         if (t->strips && j1 > j0) {
-            if (!upush(&t->sstart, (uint32_t)t->sidx.n))
-                return 0;
-            for (size_t j = j0; j <= j1; j++)
-                if (!upush(&t->sidx, grid_vertex(t, pl, i, j)) || !upush(&t->sidx, grid_vertex(t, pl, i + 1, j)))
-                    return 0;
+            UPUT(t->sstart, (uint32_t)t->sidx.n);
+            uint32_t *o = t->sidx.v + t->sidx.n;
+            for (size_t j = j0; j <= j1; j++) {
+                *o++ = r0[j];
+                *o++ = r1[j];
+            }
+            t->sidx.n += 2 * (j1 - j0 + 1);
         }
-        int keep = t->strips;
-        t->strips = 0; /* the row strip above already holds these triangles */
+        uint32_t *tri = t->tri.v + t->tri.n, *tp = t->tpatch.v + t->tpatch.n;
+        double *cuv = t->cuv.v + t->cuv.n;
+        double u0 = pu[i], u1 = pu[i + 1];
         for (size_t j = j0; j < j1; j++) {
-            corner a = grid_corner(t, pl, i, j), b = grid_corner(t, pl, i + 1, j);
-            corner c = grid_corner(t, pl, i + 1, j + 1), d = grid_corner(t, pl, i, j + 1);
-            if (!emit(t, patch, a, b, d, 0) || !emit(t, patch, d, b, c, 0)) {
-                t->strips = keep;
-                return 0;
+            uint32_t a = r0[j], b = r1[j], c = r1[j + 1], d = r0[j + 1];
+            double v0 = pv[j], v1 = pv[j + 1];
+            if (a != b && b != d && a != d) {
+                tri[0] = a, tri[1] = b, tri[2] = d, tri += 3;
+                *tp++ = patch;
+                cuv[0] = u0, cuv[1] = v0, cuv[2] = u1, cuv[3] = v0, cuv[4] = u0, cuv[5] = v1, cuv += 6;
+            }
+            if (d != b && b != c && d != c) {
+                tri[0] = d, tri[1] = b, tri[2] = c, tri += 3;
+                *tp++ = patch;
+                cuv[0] = u0, cuv[1] = v1, cuv[2] = u1, cuv[3] = v0, cuv[4] = u1, cuv[5] = v1, cuv += 6;
             }
         }
-        t->strips = keep;
+        t->tri.n = (size_t)(tri - t->tri.v);
+        t->tpatch.n = (size_t)(tp - t->tpatch.v);
+        t->cuv.n = (size_t)(cuv - t->cuv.v);
     }
-    return 1;
 }
 
 /* Stitch side s's samples to the adjacent row of the inner grid. */
-static int emit_ring_side(tess *t, uint32_t patch, const patch_plan *pl, int s)
+static void emit_ring_side(tess *t, uint32_t patch, const patch_plan *pl, int s)
 {
     size_t e = pl->e[s];
     int along_u = (s == BSI_SIDE_V0 || s == BSI_SIDE_V1);
@@ -249,17 +290,14 @@ static int emit_ring_side(tess *t, uint32_t patch, const patch_plan *pl, int s)
             outer = mo <= mi;
         }
         if (outer) {
-            if (!emit(t, patch, o0, side_corner(t, pl, s, i + 1), in0, 1))
-                return 0;
+            emit(t, patch, o0, side_corner(t, pl, s, i + 1), in0, 1);
             i++;
         } else {
             corner in1 = along_u ? grid_corner(t, pl, gi + 1, gj) : grid_corner(t, pl, gi, gj + 1);
-            if (!emit(t, patch, o0, in0, in1, 1))
-                return 0;
+            emit(t, patch, o0, in0, in1, 1);
             j++;
         }
     }
-    return 1;
 }
 
 /* Second-difference bounds of the net: |S_uu| <= muu, |S_uv| <= muv, |S_vv| <= mvv everywhere. */
@@ -330,6 +368,10 @@ static void tess_free(tess *t)
     free(t->sidx.v);
     free(t->sstart.v);
     free(t->cuv.v);
+    free(t->pu);
+    free(t->pv);
+    free(t->gid);
+    free(t->soa);
 }
 
 static double max_abs_coord(const bs_surface *s)
@@ -402,6 +444,7 @@ static bs_status plan(tess *t)
     for (size_t p = 0; p < np; p++) {
         patch_plan *pl = &t->plan[p];
         size_t end = p + 1 < np ? t->plan[p + 1].slot0 : nslot;
+        pl->vert0 = nvert;
         for (size_t k = pl->slot0; k < end; k++)
             if (uf_find(t->parent, k) == k)
                 t->slot_vert[k] = (uint32_t)nvert++;
@@ -417,20 +460,56 @@ static bs_status plan(tess *t)
     return BS_OK;
 }
 
-/* Parameters of every vertex, then positions and normals patch by patch. */
+/* Grid parameters i/n, i = 0..n, exactly 0 and 1 at the ends. */
+static void grid_params(double *dst, size_t n)
+{
+    for (size_t i = 0; i <= n; i++)
+        dst[i] = grid_param(i, n);
+}
+
+/* Packed triples dst[3k + c] = src[c * GRID_CHUNK + k], k < n. */
+static void interleave(double *restrict dst, const double *restrict src, size_t n)
+{
+    const double *x = src, *y = src + GRID_CHUNK, *z = src + 2 * GRID_CHUNK;
+    for (size_t k = 0; k < n; k++) {
+        dst[3 * k] = x[k];
+        dst[3 * k + 1] = y[k];
+        dst[3 * k + 2] = z[k];
+    }
+}
+
+/* Views of coordinates 0..2 of the packed triples x[3*first ...], n elements. */
+static void triple_views(double *x, size_t first, size_t n, bs_view out[3])
+{
+    for (size_t c = 0; c < 3; c++) {
+        out[c].data = x + 3 * first + c;
+        out[c].count = n;
+        out[c].stride = (ptrdiff_t)(3 * sizeof(double));
+    }
+}
+
+/* Parameters of every vertex, then positions and normals patch by patch: the patch's own side
+ * samples (vertices vert0..inner0-1) as a list, its interior grid in one grid call. */
 static bs_status evaluate(tess *t)
 {
-    size_t nv = t->nvert;
+    size_t nv = t->nvert, gmax = 1;
+    for (size_t p = 0; p < t->np; p++) {
+        gmax = t->plan[p].gu > gmax ? t->plan[p].gu : gmax;
+        gmax = t->plan[p].gv > gmax ? t->plan[p].gv : gmax;
+    }
     t->pos = malloc((nv ? nv : 1) * 3 * sizeof(double));
     t->nrm = malloc((nv ? nv : 1) * 3 * sizeof(double));
     t->uv = malloc((nv ? nv : 1) * 2 * sizeof(double));
     t->vpatch = malloc((nv ? nv : 1) * sizeof(uint32_t));
     t->kind = malloc(nv ? nv : 1);
-    if (!t->pos || !t->nrm || !t->uv || !t->vpatch || !t->kind)
+    t->pu = malloc((gmax + 1) * sizeof(double));
+    t->pv = malloc((gmax + 1) * sizeof(double));
+    t->soa = malloc(6 * GRID_CHUNK * sizeof(double));
+    if (!t->pos || !t->nrm || !t->uv || !t->vpatch || !t->kind || !t->pu || !t->pv || !t->soa)
         return BS_ERR_NO_MEMORY;
     for (size_t p = 0; p < t->np; p++) {
         const patch_plan *pl = &t->plan[p];
-        size_t first = (size_t)-1, last = 0;
+        const bs_patch *patch = bs_surface_get(t->s, p);
         for (int s = 0; s < 4; s++)
             for (size_t k = 0; k <= pl->e[s]; k++) {
                 size_t slot = side_slot(pl, s, k);
@@ -438,56 +517,111 @@ static bs_status evaluate(tess *t)
                     continue;
                 uint32_t id = t->slot_vert[slot];
                 side_param(pl, s, k, &t->uv[2 * id], &t->uv[2 * id + 1]);
-                t->vpatch[id] = (uint32_t)p;
-                first = id < first ? id : first;
-                last = id > last ? id : last;
             }
-        for (size_t i = 1; i < pl->gu; i++)
-            for (size_t j = 1; j < pl->gv; j++) {
-                uint32_t id = grid_vertex(t, pl, i, j);
-                t->uv[2 * id] = grid_param(i, pl->gu);
-                t->uv[2 * id + 1] = grid_param(j, pl->gv);
-                t->vpatch[id] = (uint32_t)p;
-                first = id < first ? id : first;
-                last = id > last ? id : last;
-            }
-        if (first == (size_t)-1)
-            continue;
-        /* This patch's vertices are the contiguous ids first..last. */
-        size_t n = last - first + 1;
-        ptrdiff_t s2 = (ptrdiff_t)(2 * sizeof(double)), s3 = (ptrdiff_t)(3 * sizeof(double));
-        bs_cview cu = {t->uv + 2 * first, n, s2}, cv = {t->uv + 2 * first + 1, n, s2};
+        for (size_t id = pl->vert0; id < pl->inner0; id++)
+            t->vpatch[id] = (uint32_t)p;
+        size_t n = pl->inner0 - pl->vert0;
+        ptrdiff_t s2 = (ptrdiff_t)(2 * sizeof(double));
         bs_view pos[3], nrm[3];
-        for (size_t c = 0; c < 3; c++) {
-            pos[c].data = t->pos + 3 * first + c;
-            pos[c].count = n;
-            pos[c].stride = s3;
-            nrm[c].data = t->nrm + 3 * first + c;
-            nrm[c].count = n;
-            nrm[c].stride = s3;
+        if (n > 0) {
+            bs_cview cu = {t->uv + 2 * pl->vert0, n, s2}, cv = {t->uv + 2 * pl->vert0 + 1, n, s2};
+            triple_views(t->pos, pl->vert0, n, pos);
+            triple_views(t->nrm, pl->vert0, n, nrm);
+            bs_status st = bs_patch_eval_normal(patch, n, &cu, &cv, pos, nrm, t->kind + pl->vert0);
+            if (st != BS_OK)
+                return st;
         }
-        bs_status st = bs_patch_eval_normal(bs_surface_get(t->s, p), n, &cu, &cv, pos, nrm, t->kind + first);
-        if (st != BS_OK)
-            return st;
+        size_t ni = pl->gu - 1, nj = pl->gv - 1;
+        if (ni == 0 || nj == 0)
+            continue;
+        grid_params(t->pu, pl->gu);
+        grid_params(t->pv, pl->gv);
+        double *uv = t->uv + 2 * pl->inner0;
+        for (size_t i = 1; i <= ni; i++)
+            for (size_t j = 1; j <= nj; j++, uv += 2) {
+                uv[0] = t->pu[i];
+                uv[1] = t->pv[j];
+            }
+        for (size_t k = 0; k < ni * nj; k++)
+            t->vpatch[pl->inner0 + k] = (uint32_t)p;
+        /* blocks of whole rows, evaluated by coordinate, then interleaved into the mesh */
+        size_t rows = GRID_CHUNK / nj;
+        for (size_t i0 = 0; i0 < ni; i0 += rows) {
+            size_t nr = ni - i0 < rows ? ni - i0 : rows, npt = nr * nj, first = pl->inner0 + i0 * nj;
+            bs_cview gu = {t->pu + 1 + i0, nr, (ptrdiff_t)sizeof(double)};
+            bs_cview gv = {t->pv + 1, nj, (ptrdiff_t)sizeof(double)};
+            for (size_t c = 0; c < 3; c++) {
+                pos[c].data = t->soa + c * GRID_CHUNK;
+                nrm[c].data = t->soa + (3 + c) * GRID_CHUNK;
+                pos[c].count = nrm[c].count = npt;
+                pos[c].stride = nrm[c].stride = (ptrdiff_t)sizeof(double);
+            }
+            bs_status st = bs_patch_eval_grid(patch, nr, &gu, nj, &gv, pos, NULL, NULL, nrm, t->kind + first);
+            if (st != BS_OK)
+                return st;
+            interleave(t->pos + 3 * first, t->soa, npt);
+            interleave(t->nrm + 3 * first, t->soa + 3 * GRID_CHUNK, npt);
+        }
     }
+    return BS_OK;
+}
+
+/* Room for every triangle, strip and index the patches can emit (poles drop some). */
+static bs_status reserve_output(tess *t)
+{
+    size_t ntri = 0, nstrip = 1, nsidx = 0, gids = 1;
+    for (size_t p = 0; p < t->np; p++) {
+        const patch_plan *pl = &t->plan[p];
+        size_t gu = pl->gu, gv = pl->gv; /* at most BS_TESS_MAX_RATE: no overflow per patch */
+        size_t pt, ps, pi;
+        if (pl->regular) {
+            pt = 2 * gu * gv;
+            ps = gu;
+            pi = 2 * gu * (gv + 1);
+        } else {
+            size_t ring = pl->e[0] + pl->e[1] + pl->e[2] + pl->e[3] + 2 * (gu - 2) + 2 * (gv - 2);
+            pt = 2 * (gu - 2) * (gv - 2) + ring;
+            ps = (gu - 2) + ring;
+            pi = 2 * (gu - 2) * (gv - 1) + 3 * ring;
+        }
+        if (pt > SIZE_MAX - ntri || ps > SIZE_MAX - nstrip || pi > SIZE_MAX - nsidx)
+            return BS_ERR_NO_MEMORY;
+        ntri += pt;
+        nstrip += ps;
+        nsidx += pi;
+        gids = (gu + 1) * (gv + 1) > gids ? (gu + 1) * (gv + 1) : gids;
+    }
+    if (ntri > SIZE_MAX / 6)
+        return BS_ERR_NO_MEMORY;
+    t->gid = malloc(gids * sizeof(uint32_t));
+    if (t->gid == NULL || !reserve((void **)&t->tri.v, &t->tri.cap, 3 * ntri, sizeof(uint32_t)) ||
+        !reserve((void **)&t->tpatch.v, &t->tpatch.cap, ntri, sizeof(uint32_t)) ||
+        !reserve((void **)&t->cuv.v, &t->cuv.cap, 6 * ntri, sizeof(double)))
+        return BS_ERR_NO_MEMORY;
+    if (t->strips && (!reserve((void **)&t->sstart.v, &t->sstart.cap, nstrip, sizeof(uint32_t)) ||
+                      !reserve((void **)&t->sidx.v, &t->sidx.cap, nsidx, sizeof(uint32_t))))
+        return BS_ERR_NO_MEMORY;
     return BS_OK;
 }
 
 static bs_status triangulate(tess *t)
 {
+    bs_status st = reserve_output(t);
+    if (st != BS_OK)
+        return st;
     for (size_t p = 0; p < t->np; p++) {
         const patch_plan *pl = &t->plan[p];
         uint32_t id = (uint32_t)p;
-        int ok;
+        grid_params(t->pu, pl->gu);
+        grid_params(t->pv, pl->gv);
+        grid_ids(t, pl);
         if (pl->regular) {
-            ok = emit_grid(t, id, pl, 0, pl->gu, 0, pl->gv);
+            emit_grid(t, id, pl, 0, pl->gu, 0, pl->gv);
         } else {
-            ok = emit_grid(t, id, pl, 1, pl->gu - 1, 1, pl->gv - 1);
-            for (int s = 0; ok && s < 4; s++)
-                ok = emit_ring_side(t, id, pl, s);
+            emit_grid(t, id, pl, 1, pl->gu - 1, 1, pl->gv - 1);
+            for (int s = 0; s < 4; s++)
+                emit_ring_side(t, id, pl, s);
         }
-        if (!ok)
-            return BS_ERR_NO_MEMORY;
     }
     if (t->tri.n > UINT32_MAX || t->sidx.n > UINT32_MAX)
         return BS_ERR_SIZE;
@@ -556,8 +690,8 @@ static bs_status run(tess *t, bs_mesh **out)
     if (st == BS_OK)
         st = triangulate(t);
     bs_mesh *m = NULL;
-    if (st == BS_OK && t->strips && !upush(&t->sstart, (uint32_t)t->sidx.n))
-        st = BS_ERR_NO_MEMORY;
+    if (st == BS_OK && t->strips)
+        UPUT(t->sstart, (uint32_t)t->sidx.n);
     if (st == BS_OK && (m = calloc(1, sizeof(*m))) == NULL)
         st = BS_ERR_NO_MEMORY;
     if (st != BS_OK) {
