@@ -72,6 +72,7 @@ typedef struct tess {
     /* scratch: grid parameters i/g per direction, vertex ids of one patch's grid points */
     double *pu, *pv;
     uint32_t *gid;
+    size_t nbad; /* vertices whose normal repair_normals must replace */
     double *soa; /* 6 x GRID_CHUNK: positions and normals of a block of grid rows, by coordinate */
 } tess;
 
@@ -467,15 +468,46 @@ static void grid_params(double *dst, size_t n)
         dst[i] = grid_param(i, n);
 }
 
-/* Packed triples dst[3k + c] = src[c * GRID_CHUNK + k], k < n. */
-static void interleave(double *restrict dst, const double *restrict src, size_t n)
+/* A normal the mesh cannot keep: undefined, or not of unit length (overflow, NaN). */
+static int normal_bad(unsigned char kind, double x, double y, double z)
 {
-    const double *x = src, *y = src + GRID_CHUNK, *z = src + 2 * GRID_CHUNK;
+    double len = sqrt(x * x + y * y + z * z);
+    return kind == BS_NORMAL_UNDEFINED || !(fabs(len - 1.0) < 1e-6);
+}
+
+/* Move nr x nj grid results (rows i0.., by coordinate in t->soa) into the mesh's packed arrays at
+ * vertex `first`, with their (u,v) and patch id; count the normals to repair. */
+static void store_block(tess *t, uint32_t patch, size_t first, size_t i0, size_t nr, size_t nj)
+{
+    const double *restrict x = t->soa, *restrict y = x + GRID_CHUNK, *restrict z = y + GRID_CHUNK;
+    const double *restrict nx = z + GRID_CHUNK, *restrict ny = nx + GRID_CHUNK, *restrict nz = ny + GRID_CHUNK;
+    double *restrict pos = t->pos + 3 * first, *restrict nrm = t->nrm + 3 * first, *restrict uv = t->uv + 2 * first;
+    uint32_t *restrict vp = t->vpatch + first;
+    const unsigned char *kind = t->kind + first;
+    size_t n = nr * nj, bad = 0;
     for (size_t k = 0; k < n; k++) {
-        dst[3 * k] = x[k];
-        dst[3 * k + 1] = y[k];
-        dst[3 * k + 2] = z[k];
+        pos[3 * k] = x[k];
+        pos[3 * k + 1] = y[k];
+        pos[3 * k + 2] = z[k];
+        nrm[3 * k] = nx[k];
+        nrm[3 * k + 1] = ny[k];
+        nrm[3 * k + 2] = nz[k];
+        vp[k] = patch;
     }
+    /* |len^2 - 1| < 1e-6 implies |len - 1| < 1e-6: only the rest need normal_bad's square root */
+    for (size_t k = 0; k < n; k++) {
+        double q = nx[k] * nx[k] + ny[k] * ny[k] + nz[k] * nz[k];
+        if (!(fabs(q - 1.0) < 1e-6) || kind[k] == BS_NORMAL_UNDEFINED)
+            bad += (size_t)normal_bad(kind[k], nx[k], ny[k], nz[k]);
+    }
+    for (size_t r = 0; r < nr; r++) {
+        double u = t->pu[1 + i0 + r];
+        for (size_t j = 0; j < nj; j++, uv += 2) {
+            uv[0] = u;
+            uv[1] = t->pv[1 + j];
+        }
+    }
+    t->nbad += bad;
 }
 
 /* Views of coordinates 0..2 of the packed triples x[3*first ...], n elements. */
@@ -530,20 +562,16 @@ static bs_status evaluate(tess *t)
             bs_status st = bs_patch_eval_normal(patch, n, &cu, &cv, pos, nrm, t->kind + pl->vert0);
             if (st != BS_OK)
                 return st;
+            for (size_t id = pl->vert0; id < pl->inner0; id++) {
+                const double *nr = t->nrm + 3 * id;
+                t->nbad += (size_t)normal_bad(t->kind[id], nr[0], nr[1], nr[2]);
+            }
         }
         size_t ni = pl->gu - 1, nj = pl->gv - 1;
         if (ni == 0 || nj == 0)
             continue;
         grid_params(t->pu, pl->gu);
         grid_params(t->pv, pl->gv);
-        double *uv = t->uv + 2 * pl->inner0;
-        for (size_t i = 1; i <= ni; i++)
-            for (size_t j = 1; j <= nj; j++, uv += 2) {
-                uv[0] = t->pu[i];
-                uv[1] = t->pv[j];
-            }
-        for (size_t k = 0; k < ni * nj; k++)
-            t->vpatch[pl->inner0 + k] = (uint32_t)p;
         /* blocks of whole rows, evaluated by coordinate, then interleaved into the mesh */
         size_t rows = GRID_CHUNK / nj;
         for (size_t i0 = 0; i0 < ni; i0 += rows) {
@@ -559,8 +587,7 @@ static bs_status evaluate(tess *t)
             bs_status st = bs_patch_eval_grid(patch, nr, &gu, nj, &gv, pos, NULL, NULL, nrm, t->kind + first);
             if (st != BS_OK)
                 return st;
-            interleave(t->pos + 3 * first, t->soa, npt);
-            interleave(t->nrm + 3 * first, t->soa + 3 * GRID_CHUNK, npt);
+            store_block(t, (uint32_t)p, first, i0, nr, nj);
         }
     }
     return BS_OK;
@@ -631,11 +658,12 @@ static bs_status triangulate(tess *t)
 /* Replace normals the surface does not define (or that are not unit) by the adjacent triangles'. */
 static void repair_normals(tess *t)
 {
+    if (t->nbad == 0)
+        return; /* evaluate() checked every vertex */
     size_t bad = 0;
     for (size_t k = 0; k < t->nvert; k++) {
         double *n = t->nrm + 3 * k;
-        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (t->kind[k] == BS_NORMAL_UNDEFINED || !(fabs(len - 1.0) < 1e-6)) {
+        if (normal_bad(t->kind[k], n[0], n[1], n[2])) {
             t->kind[k] = BS_NORMAL_UNDEFINED;
             n[0] = n[1] = n[2] = 0.0;
             bad++;
