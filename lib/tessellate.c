@@ -223,7 +223,8 @@ static void grid_ids(tess *t, const patch_plan *pl)
 
 /* Quads of grid rows i0..i1-1 and columns j0..j1-1 as two triangles each (a b d, d b c with
  * a = (i,j), b = (i+1,j), c = (i+1,j+1), d = (i,j+1)), and one strip per row; t->gid holds the
- * ids and t->pu, t->pv the parameters. */
+ * ids and t->pu, t->pv the parameters. Only quads touching the grid's border can have a repeated
+ * vertex (a pole): interior ids are unique, so the degeneracy tests are made there only. */
 static void emit_grid(tess *t, uint32_t patch, const patch_plan *pl, size_t i0, size_t i1, size_t j0, size_t j1)
 {
     size_t w = pl->gv + 1;
@@ -242,15 +243,21 @@ static void emit_grid(tess *t, uint32_t patch, const patch_plan *pl, size_t i0, 
         uint32_t *tri = t->tri.v + t->tri.n, *tp = t->tpatch.v + t->tpatch.n;
         double *cuv = t->cuv.v + t->cuv.n;
         double u0 = pu[i], u1 = pu[i + 1];
+        /* columns [ja, jb) have no border corner in this row */
+        int border_row = i == 0 || i + 1 == pl->gu;
+        size_t ja = border_row ? j1 : (j0 == 0 ? 1 : j0), jb = border_row ? j1 : (j1 == pl->gv ? j1 - 1 : j1);
+        if (ja > jb)
+            ja = jb;
         for (size_t j = j0; j < j1; j++) {
             uint32_t a = r0[j], b = r1[j], c = r1[j + 1], d = r0[j + 1];
             double v0 = pv[j], v1 = pv[j + 1];
-            if (a != b && b != d && a != d) {
+            int check = j < ja || j >= jb;
+            if (!check || (a != b && b != d && a != d)) {
                 tri[0] = a, tri[1] = b, tri[2] = d, tri += 3;
                 *tp++ = patch;
                 cuv[0] = u0, cuv[1] = v0, cuv[2] = u1, cuv[3] = v0, cuv[4] = u0, cuv[5] = v1, cuv += 6;
             }
-            if (d != b && b != c && d != c) {
+            if (!check || (d != b && b != c && d != c)) {
                 tri[0] = d, tri[1] = b, tri[2] = c, tri += 3;
                 *tp++ = patch;
                 cuv[0] = u0, cuv[1] = v1, cuv[2] = u1, cuv[3] = v0, cuv[4] = u1, cuv[5] = v1, cuv += 6;
@@ -481,31 +488,30 @@ static void store_block(tess *t, uint32_t patch, size_t first, size_t i0, size_t
 {
     const double *restrict x = t->soa, *restrict y = x + GRID_CHUNK, *restrict z = y + GRID_CHUNK;
     const double *restrict nx = z + GRID_CHUNK, *restrict ny = nx + GRID_CHUNK, *restrict nz = ny + GRID_CHUNK;
+    const double *restrict pv = t->pv + 1;
     double *restrict pos = t->pos + 3 * first, *restrict nrm = t->nrm + 3 * first, *restrict uv = t->uv + 2 * first;
     uint32_t *restrict vp = t->vpatch + first;
-    const unsigned char *kind = t->kind + first;
-    size_t n = nr * nj, bad = 0;
-    for (size_t k = 0; k < n; k++) {
-        pos[3 * k] = x[k];
-        pos[3 * k + 1] = y[k];
-        pos[3 * k + 2] = z[k];
-        nrm[3 * k] = nx[k];
-        nrm[3 * k + 1] = ny[k];
-        nrm[3 * k + 2] = nz[k];
-        vp[k] = patch;
+    const unsigned char *restrict kind = t->kind + first;
+    size_t bad = 0;
+    for (size_t r = 0, k = 0; r < nr; r++) {
+        double u = t->pu[1 + i0 + r];
+        for (size_t j = 0; j < nj; j++, k++) {
+            pos[3 * k] = x[k];
+            pos[3 * k + 1] = y[k];
+            pos[3 * k + 2] = z[k];
+            nrm[3 * k] = nx[k];
+            nrm[3 * k + 1] = ny[k];
+            nrm[3 * k + 2] = nz[k];
+            uv[2 * k] = u;
+            uv[2 * k + 1] = pv[j];
+            vp[k] = patch;
+        }
     }
     /* |len^2 - 1| < 1e-6 implies |len - 1| < 1e-6: only the rest need normal_bad's square root */
-    for (size_t k = 0; k < n; k++) {
+    for (size_t k = 0; k < nr * nj; k++) {
         double q = nx[k] * nx[k] + ny[k] * ny[k] + nz[k] * nz[k];
         if (!(fabs(q - 1.0) < 1e-6) || kind[k] == BS_NORMAL_UNDEFINED)
             bad += (size_t)normal_bad(kind[k], nx[k], ny[k], nz[k]);
-    }
-    for (size_t r = 0; r < nr; r++) {
-        double u = t->pu[1 + i0 + r];
-        for (size_t j = 0; j < nj; j++, uv += 2) {
-            uv[0] = u;
-            uv[1] = t->pv[1 + j];
-        }
     }
     t->nbad += bad;
 }
