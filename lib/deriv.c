@@ -149,17 +149,7 @@ bs_status bs_patch_eval_deriv(const bs_patch *p, unsigned ku, unsigned kv, size_
         size_t nb = n - k0 < B ? n - k0 : B;
         double ub[B], vb[B];
         int bad[B];
-        for (size_t k = 0; k < B; k++) {
-            ub[k] = vb[k] = 0.0;
-            bad[k] = 0;
-            if (k < nb) {
-                ub[k] = bsi_cget(u, k0 + k);
-                vb[k] = bsi_cget(v, k0 + k);
-                bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
-                if (bad[k])
-                    ub[k] = vb[k] = 0.0;
-            }
-        }
+        bsi_load_block(u, v, k0, nb, ub, vb, bad);
         if (!p->rational) {
             poly_block(p, ku, kv, ub, vb, res);
         } else {

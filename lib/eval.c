@@ -217,6 +217,22 @@ static void put_block(const bs_view *views, size_t dim, size_t idx0, const doubl
     }
 }
 
+void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
+                    double *ub, double *vb, int *bad)
+{
+    for (size_t k = 0; k < BSI_BLOCK; k++) {
+        ub[k] = vb[k] = 0.0;
+        bad[k] = 0;
+        if (k < nb) {
+            ub[k] = bsi_cget(u, k0 + k);
+            vb[k] = bsi_cget(v, k0 + k);
+            bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
+            if (bad[k])
+                ub[k] = vb[k] = 0.0;
+        }
+    }
+}
+
 bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
                         const bs_view *pos, const bs_view *du, const bs_view *dv)
 {
@@ -238,17 +254,7 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
         size_t nb = n - k0 < B ? n - k0 : B;
         double ub[B], vb[B];
         int bad[B];
-        for (size_t k = 0; k < B; k++) {
-            ub[k] = vb[k] = 0.0;
-            bad[k] = 0;
-            if (k < nb) {
-                ub[k] = bsi_cget(u, k0 + k);
-                vb[k] = bsi_cget(v, k0 + k);
-                bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
-                if (bad[k])
-                    ub[k] = vb[k] = 0.0;
-            }
-        }
+        bsi_load_block(u, v, k0, nb, ub, vb, bad);
         bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
         if (p->rational)
             for (size_t k = 0; k < nb; k++) {

@@ -123,6 +123,12 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
  * its position in a block, so results do not depend on batch size. */
 #define BSI_BLOCK 8
 
+/* Parameters k0 .. k0+nb-1 (nb <= BSI_BLOCK) of a scattered call as one block: ub, vb and bad
+ * get BSI_BLOCK entries; slots past nb and non-finite pairs become (0,0) with bad set for the
+ * latter, so the kernels only ever see finite parameters (lib/eval.c). */
+void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
+                    double *ub, double *vb, int *bad);
+
 /* Homogeneous value h and, when first != 0, first partials hu, hv at BSI_BLOCK finite parameter
  * pairs; each output is [ncoord][BSI_BLOCK]. The u-direction is contracted first (per column j,
  * i ascending), then v (j ascending), with the derivatives taken from inline difference nets;
