@@ -11,6 +11,12 @@
  * k/e against 1 - k/e. A patch whose four sides are sampled at its own rates is triangulated as a
  * regular grid; otherwise an inner grid is stitched to the side samples by a zipper that walks both
  * rows by parameter (no T-junctions). Triangles with a repeated vertex (at poles) are dropped.
+ *
+ * Speed: a patch's interior points are one tensor grid, evaluated by bs_patch_eval_grid in blocks of
+ * rows (bit-identical to the list evaluator, so the vertices are those a list would give); only the
+ * side samples a patch owns go through bs_patch_eval_normal. Output arrays are sized from the
+ * sampling before any triangle is emitted, and grid quads are emitted by plain loops over the
+ * patch's table of vertex ids.
  */
 #include "internal.h"
 
