@@ -359,7 +359,10 @@ static void op_subpatch(state *st, reader *r)
 
 static void op_elevate(state *st, reader *r)
 {
-    size_t ru = rd_byte(r) % 70, rv = rd_byte(r) % 70;
+    /* mostly small raises (high degrees make every later call slow); the top bytes reach past the limit */
+    size_t ru = rd_byte(r), rv = rd_byte(r);
+    ru = ru < 192 ? ru % 4 : ru - 192;
+    rv = rv < 192 ? rv % 4 : rv - 192;
     bs_patch *q = NOT_SET;
     bs_status s = bs_patch_elevate(st->p, ru, rv, &q);
     int fits = bs_patch_degree_u(st->p) + ru <= BS_MAX_DEGREE && bs_patch_degree_v(st->p) + rv <= BS_MAX_DEGREE;
