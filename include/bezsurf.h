@@ -7,6 +7,7 @@
  *   bezsurf/surface.h  multi-patch surfaces
  *   bezsurf/io.h       the .bpt text format, the built-in tea set
  *   bezsurf/continuity.h  shared and open edges of a surface, continuity across them
+ *   bezsurf/mesh.h     tessellation into triangle meshes, mesh export
  * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
  */
 #ifndef BEZSURF_H
@@ -18,5 +19,6 @@
 #include "bezsurf/surface.h"
 #include "bezsurf/io.h"
 #include "bezsurf/continuity.h"
+#include "bezsurf/mesh.h"
 
 #endif

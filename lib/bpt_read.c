@@ -8,6 +8,8 @@
 
 /* Each patch needs at least "0 0 x y z" and a separator before it: 10 bytes. */
 #define MIN_PATCH_BYTES 10
+/* Largest file read (a power of two times the first buffer): about 5 million bicubic patches. */
+#define BPT_FILE_MAX ((size_t)256 << 20)
 
 typedef struct reader {
     const char *text;
@@ -223,8 +225,13 @@ bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_sur
     bs_status st = BS_OK;
     for (;;) {
         if (len == cap) {
+            if (cap >= BPT_FILE_MAX) { /* e.g. a device that never ends */
+                io_error(err, "file larger than 256 MiB");
+                st = BS_ERR_IO;
+                break;
+            }
             size_t ncap = cap ? 2 * cap : 65536;
-            char *grown = ncap > cap ? realloc(buf, ncap) : NULL;
+            char *grown = realloc(buf, ncap);
             if (grown == NULL) {
                 st = BS_ERR_NO_MEMORY;
                 break;

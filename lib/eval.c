@@ -6,16 +6,30 @@
 #define B BSI_BLOCK
 #define NMAX (BS_MAX_DEGREE + 1)
 
-/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k]. */
+/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k] = B(deg,i)(t[k]) and
+ * wm[i*B + k] = B(deg-1,i)(t[k]). The recurrence of bsi_bernstein_first, run on all lanes at
+ * once with the same operations per lane, so the values are the same bits. */
 static void block_weights(size_t deg, const double *t, double *w, double *wm)
 {
-    double b[NMAX], bm[NMAX];
+    double s[B], saved[B];
     for (size_t k = 0; k < B; k++) {
-        bsi_bernstein_first(deg, t[k], b, bm);
-        for (size_t i = 0; i <= deg; i++)
-            w[i * B + k] = b[i];
-        for (size_t i = 0; i < deg; i++)
-            wm[i * B + k] = bm[i];
+        s[k] = 1.0 - t[k];
+        w[k] = 1.0;
+    }
+    for (size_t r = 1; r <= deg; r++) {
+        if (r == deg)
+            for (size_t x = 0; x < deg * B; x++)
+                wm[x] = w[x];
+        for (size_t k = 0; k < B; k++)
+            saved[k] = 0.0;
+        for (size_t i = 0; i < r; i++)
+            for (size_t k = 0; k < B; k++) {
+                double tmp = w[i * B + k];
+                w[i * B + k] = saved[k] + s[k] * tmp;
+                saved[k] = t[k] * tmp;
+            }
+        for (size_t k = 0; k < B; k++)
+            w[r * B + k] = saved[k];
     }
 }
 
@@ -24,51 +38,54 @@ void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, i
 {
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
     double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
-    double q[NMAX * B], qu[NMAX * B], qv[NMAX * B];
     block_weights(m, u, bu, bum);
     block_weights(n, v, bv, bvm);
     int du = first && m > 0, dv = first && n > 0;
 
     for (size_t c = 0; c < p->ncoord; c++) {
         const double *net = p->hom + c * p->nctrl;
-        for (size_t x = 0; x < n1 * B; x++)
-            q[x] = qu[x] = qv[x] = 0.0;
-        /* Contract u: q[j] = sum_i B(m,i)(u) P[i][j], qu and qv from the difference nets. */
-        for (size_t i = 0; i <= m; i++) {
-            const double *row = net + i * n1;
-            const double *wi = bu + i * B, *wmi = bum + i * B;
-            for (size_t j = 0; j <= n; j++) {
-                double pij = row[j];
-                double *qj = q + j * B;
-                for (size_t k = 0; k < B; k++)
-                    qj[k] += wi[k] * pij;
-                if (du && i < m) {
-                    double d = row[j + n1] - pij;
-                    double *qs = qu + j * B;
-                    for (size_t k = 0; k < B; k++)
-                        qs[k] += wmi[k] * d;
-                }
-                if (dv && j < n) {
-                    double d = row[j + 1] - pij;
-                    double *qs = qv + j * B;
-                    for (size_t k = 0; k < B; k++)
-                        qs[k] += wi[k] * d;
-                }
-            }
-        }
-        /* Contract v, j ascending. */
         double acc[B], accu[B], accv[B];
         for (size_t k = 0; k < B; k++)
             acc[k] = accu[k] = accv[k] = 0.0;
+        /* Per column j: contract u (i ascending) into q, qu, qv held in registers, then add the
+         * column's v-weighted share to the results (j ascending). */
         for (size_t j = 0; j <= n; j++) {
+            double q[B], qu[B], qv[B];
             for (size_t k = 0; k < B; k++)
-                acc[k] += bv[j * B + k] * q[j * B + k];
+                q[k] = qu[k] = qv[k] = 0.0;
+            if (!first) {
+                for (size_t i = 0; i <= m; i++) {
+                    double pij = net[i * n1 + j];
+                    const double *wi = bu + i * B;
+                    for (size_t k = 0; k < B; k++)
+                        q[k] += wi[k] * pij;
+                }
+            } else {
+                /* One pass over the column; each accumulator still sums i ascending. */
+                int jv = dv && j < n;
+                for (size_t i = 0; i <= m; i++) {
+                    double pij = net[i * n1 + j];
+                    double dvij = jv ? net[i * n1 + j + 1] - pij : 0.0;
+                    double duij = du && i < m ? net[(i + 1) * n1 + j] - pij : 0.0;
+                    const double *wi = bu + i * B, *wmi = bum + i * B;
+                    for (size_t k = 0; k < B; k++) {
+                        q[k] += wi[k] * pij;
+                        qv[k] += wi[k] * dvij;
+                    }
+                    if (du && i < m)
+                        for (size_t k = 0; k < B; k++)
+                            qu[k] += wmi[k] * duij;
+                }
+            }
+            const double *wj = bv + j * B, *wmj = bvm + j * B;
+            for (size_t k = 0; k < B; k++)
+                acc[k] += wj[k] * q[k];
             if (du)
                 for (size_t k = 0; k < B; k++)
-                    accu[k] += bv[j * B + k] * qu[j * B + k];
+                    accu[k] += wj[k] * qu[k];
             if (dv && j < n)
                 for (size_t k = 0; k < B; k++)
-                    accv[k] += bvm[j * B + k] * qv[j * B + k];
+                    accv[k] += wmj[k] * qv[k];
         }
         for (size_t k = 0; k < B; k++) {
             h[c * B + k] = acc[k];

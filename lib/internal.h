@@ -5,6 +5,7 @@
 #include "bezsurf.h"
 
 #include <stdint.h>
+#include <stdio.h>
 
 /*
  * The patch object. Allocated as one block; never modified after bsi_patch_finish().
@@ -147,6 +148,7 @@ typedef struct bsi_nscale {
     double lu, lv;   /* bounds on |S_u| and |S_v| over the unit square */
     double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
     double rho;      /* wmax / wmin, 1 for polynomial patches */
+    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero */
 } bsi_nscale;
 
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
@@ -180,5 +182,37 @@ static inline size_t bsi_net_size(size_t ncoord, size_t deg_u, size_t deg_v)
  * deg + raise along dir to out (lib/elevate.c). BS_ERR_NO_MEMORY on failure. */
 bs_status bsi_elevate_net(const double *in, size_t ncoord, size_t deg_u, size_t deg_v, int dir,
                           size_t raise, double *out);
+
+/* ---- Meshes (lib/mesh.c); filled by lib/tessellate.c, read by the exporters ----
+ * Arrays are packed: pos, nrm 3 per vertex, uv 2 per vertex, tri 3 per triangle, corner_uv 6 per
+ * triangle; strip k is strip_idx[strip_start[k] .. strip_start[k+1]). Every array is its own
+ * malloc block (NULL when empty) freed by bs_mesh_destroy(). */
+struct bs_mesh {
+    size_t nvert, ntri, nstrip, nstrip_idx;
+    double *pos, *nrm, *uv, *corner_uv;
+    uint32_t *vpatch, *tri, *tpatch, *strip_idx, *strip_start;
+};
+
+/* ---- Mesh export (lib/export.c and lib/export_*.c) ----
+ * A byte sink: a FILE, a caller buffer of cap bytes, or neither (only counts). Writes past cap or
+ * failing writes set err; len counts every byte asked for. */
+typedef struct bsi_sink {
+    FILE *f;
+    unsigned char *buf;
+    size_t cap, len;
+    int err;
+} bsi_sink;
+
+void bsi_sink_put(bsi_sink *s, const void *data, size_t n);
+void bsi_sink_str(bsi_sink *s, const char *text);
+/* A double in %.<digits>g form with '.' as decimal point whatever the C locale. */
+void bsi_sink_double(bsi_sink *s, double x, int digits);
+void bsi_sink_uint(bsi_sink *s, size_t x);
+void bsi_sink_f32le(bsi_sink *s, double x);
+void bsi_sink_u32le(bsi_sink *s, uint32_t x);
+
+void bsi_export_obj(const bs_mesh *m, bsi_sink *s);
+void bsi_export_ply(const bs_mesh *m, int binary, bsi_sink *s);
+void bsi_export_stl(const bs_mesh *m, bsi_sink *s);
 
 #endif

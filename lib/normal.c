@@ -16,6 +16,10 @@
 
 static double norm3(const double *a)
 {
+    /* Plain formula unless the squares could underflow or overflow. */
+    double q = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+    if (q > 0x1p-900 && q < 0x1p900)
+        return sqrt(q);
     double s = fmax(fabs(a[0]), fmax(fabs(a[1]), fabs(a[2])));
     if (s == 0.0 || !isfinite(s))
         return s;
@@ -29,6 +33,8 @@ static void cross3(const double *a, const double *b, double *c)
     c[1] = a[2] * b[0] - a[0] * b[2];
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
+
+static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b);
 
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
 {
@@ -57,6 +63,8 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
     sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * pmax * rho;
     sc->lu = (double)(p->deg_u > 0 ? p->deg_u : 1) * d * rho;
     sc->lv = (double)(p->deg_v > 0 ? p->deg_v : 1) * d * rho;
+    sc->zu = fmax(TAU * sc->lu, CLEAN * deriv_noise(p, sc, 1, 0));
+    sc->zv = fmax(TAU * sc->lv, CLEAN * deriv_noise(p, sc, 0, 1));
 }
 
 /* The documented accuracy bound (docs/accuracy.md) of S^(a,b), the rounding scale below which a
@@ -156,10 +164,27 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
     return BS_NORMAL_UNDEFINED;
 }
 
+/* Squares that can be formed and multiplied in pairs without overflow or underflow. */
+static int square_safe(double q) { return q > 0x1p-450 && q < 0x1p450; }
+
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm)
 {
     double a0[3], b0[3], c0[3];
+    /* Fast path, one square root: the usual regular point, with squared lengths and thresholds. */
+    double qa = su[0] * su[0] + su[1] * su[1] + su[2] * su[2];
+    double qb = sv[0] * sv[0] + sv[1] * sv[1] + sv[2] * sv[2];
+    if (square_safe(qa) && square_safe(qb) && qa > sc->zu * sc->zu && qb > sc->zv * sc->zv) {
+        cross3(su, sv, c0);
+        double qc = c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2];
+        if (qc > (TAU * TAU) * (qa * qb)) {
+            double inv = 1.0 / sqrt(qc); /* one division; the unit vector is good to 2 ulp */
+            for (int k = 0; k < 3; k++)
+                nrm[k] = c0[k] * inv;
+            return BS_NORMAL_REGULAR;
+        }
+    }
+    /* General path: scaled lengths, zero tests, then the limit rule. */
     double lu = norm3(su), lv = norm3(sv);
     if (!isfinite(lu) || !isfinite(lv)) {
         nrm[0] = nrm[1] = nrm[2] = 0.0;
@@ -167,8 +192,8 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
     }
     /* A derivative within rounding of zero relative to its scale over the patch is zero. */
     for (int c = 0; c < 3; c++) {
-        a0[c] = lu <= fmax(TAU * sc->lu, CLEAN * deriv_noise(p, sc, 1, 0)) ? 0.0 : su[c];
-        b0[c] = lv <= fmax(TAU * sc->lv, CLEAN * deriv_noise(p, sc, 0, 1)) ? 0.0 : sv[c];
+        a0[c] = lu <= sc->zu ? 0.0 : su[c];
+        b0[c] = lv <= sc->zv ? 0.0 : sv[c];
     }
     cross3(a0, b0, c0);
     double lc = norm3(c0);

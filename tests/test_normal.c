@@ -100,6 +100,26 @@ static void test_teapot(void)
     CHECK(limits == 8 * 9);
 }
 
+/* The teacup and the teaspoon: every normal finite; regular ones as the reference, limit ones as
+ * the reference just inside. */
+static void test_teaset(const char *path, size_t expect)
+{
+    static double ctrl[32][48];
+    size_t np = load_bpt(path, ctrl, 32);
+    CHECKF(np == expect, "%s: %zu patches", path, np);
+    int count[3] = {0, 0, 0};
+    for (size_t k = 0; k < np; k++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl[k], NULL, &p), BS_OK);
+        ref_net r = {3, 3, 3, ctrl[k], NULL};
+        for (int a = 0; a <= 8; a++)
+            for (int b = 0; b <= 8; b++)
+                count[check_point(p, &r, a / 8.0, b / 8.0)]++;
+        bs_patch_destroy(p);
+    }
+    printf("%s: %d regular, %d limit, %d undefined normals on 9 x 9 grids\n", path, count[0], count[1], count[2]);
+}
+
 /* A wavy graph-like net of degree (m,n), then side `side` (0: u=0, 1: u=1, 2: v=0, 3: v=1)
  * collapsed to one point. */
 static tnet collapsed_net(unsigned long long *rng, size_t m, size_t n, int side, int rational)
@@ -279,6 +299,8 @@ static void test_positions_match_eval(void)
 int main(void)
 {
     test_teapot();
+    test_teaset(BS_DATA_DIR "/teacup.bpt", 26);
+    test_teaset(BS_DATA_DIR "/teaspoon.bpt", 16);
     test_collapsed_sides();
     test_corners();
     test_undefined();

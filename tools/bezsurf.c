@@ -10,6 +10,8 @@ static const cli_command commands[] = {
     {"info",       "patches, degrees, bounds, shared and open edges", cmd_info},
     {"eval",       "points (and normals) at given patch ids and (u,v)", cmd_eval},
     {"continuity", "C0 gap, G1 angle and C1 test across each shared edge", cmd_continuity},
+    {"tessellate", "triangle mesh of the surface to an OBJ, PLY or STL file", cmd_tessellate},
+    {"render",     "shaded picture of the surface to a PNG file", cmd_render},
 };
 
 static void usage(FILE *f)

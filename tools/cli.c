@@ -47,6 +47,10 @@ static int read_stdin(const char *cmd, bs_surface **out)
     char *buf = NULL;
     for (;;) {
         if (len == cap) {
+            if (cap >= ((size_t)256 << 20)) {
+                free(buf);
+                return cli_fail(cmd, CLI_INPUT, "<stdin>: more than 256 MiB");
+            }
             char *grown = realloc(buf, cap ? 2 * cap : 65536);
             if (grown == NULL) {
                 free(buf);
@@ -132,4 +136,16 @@ const char *cli_side_name(int side)
 {
     static const char *const names[4] = {"v0", "u1", "v1", "u0"};
     return side >= 0 && side < 4 ? names[side] : "?";
+}
+
+void cli_print_double(double x)
+{
+    /* The tool never sets a locale, so printf and strtod use the C notation. */
+    char buf[40];
+    for (int prec = 15; prec <= 17; prec++) {
+        snprintf(buf, sizeof buf, "%.*g", prec, x);
+        if (prec == 17 || strtod(buf, NULL) == x)
+            break;
+    }
+    fputs(buf, stdout);
 }

@@ -11,7 +11,7 @@ static void help(void)
            "Evaluate the surface on patch ID at (U,V) and print one line per point:\n"
            "  ID U V x y z                     (--normals adds: nx ny nz kind)\n"
            "kind is 0 (regular), 1 (limit normal at a degenerate point) or 2 (undefined).\n"
-           "Numbers are printed with 17 significant digits. U and V may lie outside [0,1].\n");
+           "Numbers are printed with the fewest digits (at most 17) that read back exactly. U and V may lie outside [0,1].\n");
 }
 
 int cmd_eval(int argc, char **argv)
@@ -82,11 +82,17 @@ int cmd_eval(int argc, char **argv)
         if (st != BS_OK)
             rc = cli_fail(cmd, st == BS_ERR_DIMENSION ? CLI_INPUT : CLI_INTERNAL, "%s", bs_status_string(st));
         for (size_t k = 0; rc == CLI_OK && k < n; k++) {
-            printf("%u %.17g %.17g", ids[k], uv[2 * k], uv[2 * k + 1]);
-            for (size_t c = 0; c < dim; c++)
-                printf(" %.17g", out[c * n + k]);
+            printf("%u", ids[k]);
+            for (size_t c = 0; c < 2; c++) {
+                putchar(' ');
+                cli_print_double(uv[2 * k + c]);
+            }
+            for (size_t c = 0; c < dim + (normals ? 3u : 0u); c++) {
+                putchar(' ');
+                cli_print_double(out[c * n + k]);
+            }
             if (normals)
-                printf(" %.17g %.17g %.17g %d", out[3 * n + k], out[4 * n + k], out[5 * n + k], kind[k]);
+                printf(" %d", kind[k]);
             printf("\n");
         }
         if (rc == CLI_OK)

@@ -72,7 +72,12 @@ int cmd_info(int argc, char **argv)
     printf("bounds:");
     static const char axis[3] = {'x', 'y', 'z'};
     for (size_t c = 0; np > 0 && c < dim && c < 3; c++)
-        printf("%s %c %.17g .. %.17g", c ? "," : "", axis[c], lo[c], hi[c]);
+    {
+        printf("%s %c ", c ? "," : "", axis[c]);
+        cli_print_double(lo[c]);
+        printf(" .. ");
+        cli_print_double(hi[c]);
+    }
     printf("%s\n", np > 0 ? "" : " none");
     size_t ne = 0, no = 0;
     bs_status st = bs_surface_continuity(s, tol, 1, NULL, 0, &ne, NULL, 0, &no);

@@ -24,6 +24,8 @@ typedef struct cli_command {
 int cmd_info(int argc, char **argv);
 int cmd_eval(int argc, char **argv);
 int cmd_continuity(int argc, char **argv);
+int cmd_tessellate(int argc, char **argv);
+int cmd_render(int argc, char **argv);
 
 /* ---- helpers (tools/cli.c) ---- */
 
@@ -49,6 +51,8 @@ int cli_parse_size(const char *text, size_t *out);
 int cli_fail(const char *cmd, int code, const char *fmt, ...);
 /* Flush stdout; CLI_OUTPUT (with a message) if anything failed to be written. */
 int cli_finish(const char *cmd);
+/* Print x with the fewest of 15, 16, 17 significant digits that read back exactly. */
+void cli_print_double(double x);
 /* "v0", "u1", "v1", "u0" for BS_SIDE_*. */
 const char *cli_side_name(int side);
 

@@ -188,38 +188,59 @@ BS_API bs_status bs_patch_get_ctrl(const bs_patch *p, double *ctrl, size_t ctrl_
  * Common rules for the four evaluators:
  * - `pos`, `du`, `dv`, `out`: NULL (not wanted) or an array of dim views. `nrm`: NULL or an array of
  *   3 views; normals of a patch whose dim is not 3 are BS_ERR_DIMENSION. `kind`: NULL or room for one
- *   byte per point.
+ *   byte per point (its size cannot be checked).
  * - Arguments are checked in this order, and the first failure is returned with nothing written:
  *   p NULL (BS_ERR_INVALID_ARG); derivative orders (BS_ERR_DEGREE); normals of a non-3-D patch
- *   (BS_ERR_DIMENSION); then each view: NULL data, misaligned data or stride (BS_ERR_INVALID_ARG),
- *   count below the number of points or a byte extent that overflows (BS_ERR_SIZE).
- * - n = 0 (or nu = 0 or nv = 0) is a successful no-op; views are not read then.
- * - u and v may lie outside [0,1]: the polynomial is extrapolated (and may overflow to Inf far away).
+ *   (BS_ERR_DIMENSION); then, unless the count is 0, the views in the order of the parameters
+ *   (u, v, then the outputs, each output's coordinates in order): a NULL view array where one is
+ *   required or NULL data, misaligned data or stride (BS_ERR_INVALID_ARG), count below the number
+ *   of points or a byte extent (n-1)*|stride| that overflows ptrdiff_t (BS_ERR_SIZE).
+ * - n = 0 (or nu = 0 or nv = 0) is a successful no-op once p and the orders or dimension have been
+ *   checked; the views are then neither checked nor read.
+ * - u and v may lie outside [0,1]: the polynomial is extrapolated (and may overflow to Inf far away;
+ *   a rational patch's denominator may vanish there, giving Inf or NaN).
  *   A NaN or infinite parameter gives NaN in every output of that point only (kind
  *   BS_NORMAL_UNDEFINED).
- * - Results do not depend on the batch size, the strides or the alignment of the buffers.
- * - Rational patches are evaluated in homogeneous coordinates; derivatives by the quotient rule.
+ * - Results do not depend on the batch size, the strides or the alignment of the buffers: the same
+ *   (u,v) gives the same bits through every evaluator that returns the quantity (the grid and the
+ *   scattered evaluators agree bit for bit; bs_patch_eval_deriv may differ in the last bits).
+ * - Accuracy (docs/accuracy.md): for u, v in [0,1] every coordinate of d^(k+l)S/du^k dv^l is within
+ *   2(m+n+1) eps max|P| 2^(k+l) m!/(m-k)! n!/(n-l)! of the exact value (eps = 2^-52), times
+ *   (wmax/wmin)^(1+k+l) for rational patches.
+ * - Rational patches are evaluated in homogeneous coordinates; derivatives by the quotient rule
+ *   (Leibniz formula on A = w S).
  *
- * Normal rule. N = S_u x S_v / |S_u x S_v| where that cross product is not (numerically) zero:
- * kind BS_NORMAL_REGULAR. Where it vanishes (a collapsed row or column of the net, as at the top of
- * the Utah teapot's lid) the normal is the limit of N along the surface as the point is approached
- * from inside the domain, computed from higher derivatives (e.g. S_u x S_uv where S_v vanishes on
- * u = 0, with the sign that matches the regular normals nearby on every edge): kind BS_NORMAL_LIMIT.
- * Only where no limit exists in any direction (e.g. a net that lies on a line) is (0,0,0) written,
- * with kind BS_NORMAL_UNDEFINED. Finite parameters never give a NaN normal.
+ * Normal rule (docs/normals.md). N = S_u x S_v / |S_u x S_v| where that cross product is not
+ * (numerically) zero: kind BS_NORMAL_REGULAR. S_u or S_v counts as zero when its length is below
+ * 2^-30 times its bound over the patch (m, resp. n, times the diagonal of the net's bounding box
+ * times wmax/wmin), or below 4 times its accuracy bound; the cross product counts as zero when it is
+ * below 2^-30 |S_u||S_v| (parallel derivatives). Where it vanishes (a collapsed row or column of
+ * the net, as at the top of the Utah teapot's lid, or a corner where the derivatives are parallel or
+ * both vanish) the normal is the limit of N as the point is approached along the straight line
+ * towards the centre (1/2, 1/2) of the domain: the direction of the first Taylor coefficient of
+ * S_u x S_v along that line that is not zero (orders 1 to 6, from the higher partial derivatives;
+ * e.g. S_u x S_uv on a collapsed edge u = 0 and its opposite on u = 1, with the sign that matches
+ * the regular normals nearby): kind BS_NORMAL_LIMIT. Only where no such coefficient exists (e.g. a
+ * net that lies on a line or a point, or degree 0 in a direction) is (0,0,0) written, with kind
+ * BS_NORMAL_UNDEFINED. Finite parameters never give a NaN normal (a result that is not finite,
+ * far outside the domain, gives (0,0,0) and BS_NORMAL_UNDEFINED).
  * ---------------------------------------------------------------------------------------------- */
 
 /**
  * @brief Evaluate positions and first partial derivatives at n scattered (u,v) pairs.
- * @param[in]  p    the patch.
- * @param[in]  n    number of points.
+ * Point k is (u[k], v[k]) and is written at element k of every output. See the common rules above
+ * for NULL outputs, n = 0, NaN and infinite parameters, and accuracy.
+ * @param[in]  p    the patch (any degree and dimension a patch can have).
+ * @param[in]  n    number of points; 0 is a no-op.
  * @param[in]  u    view of n u-parameters.
  * @param[in]  v    view of n v-parameters.
  * @param[out] pos  NULL or dim views receiving S(u,v).
  * @param[out] du   NULL or dim views receiving dS/du.
  * @param[out] dv   NULL or dim views receiving dS/dv.
- * @return BS_OK; BS_ERR_INVALID_ARG (p, u or v NULL, NULL or misaligned view data);
- *         BS_ERR_SIZE (a view shorter than n, n too large).
+ * @return BS_OK on success (also for n = 0).
+ * @return BS_ERR_INVALID_ARG if p, u or v is NULL, or a view's data is NULL or misaligned or its
+ *         stride not a multiple of sizeof(double).
+ * @return BS_ERR_SIZE if a view holds fewer than n elements or its byte extent overflows.
  * @since 1.0
  */
 BS_API bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
@@ -227,17 +248,22 @@ BS_API bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, c
 
 /**
  * @brief Evaluate the mixed partial derivative d^(ku+kv) S / du^ku dv^kv at n scattered points.
- * Orders beyond the degree give zero for polynomial patches; (0,0) gives positions.
+ * Orders beyond the degree give zero for polynomial patches (not for rational ones); (0,0) gives
+ * the positions of bs_patch_eval, bit for bit. See the common rules above for n = 0, NaN and
+ * infinite parameters, and accuracy.
  * @param[in]  p    the patch.
  * @param[in]  ku   order along u, 0..BS_MAX_DEGREE.
  * @param[in]  kv   order along v, 0..BS_MAX_DEGREE.
- * @param[in]  n    number of points.
+ * @param[in]  n    number of points; 0 is a no-op (out may then be NULL).
  * @param[in]  u    view of n u-parameters.
  * @param[in]  v    view of n v-parameters.
- * @param[out] out  dim views receiving the derivative.
- * @return BS_OK; BS_ERR_INVALID_ARG (p, u, v or out NULL, NULL or misaligned view data);
- *         BS_ERR_DEGREE (ku or kv above BS_MAX_DEGREE); BS_ERR_SIZE (a view shorter than n);
- *         BS_ERR_NO_MEMORY (rational patches of high order need scratch space).
+ * @param[out] out  dim views receiving the derivative (required).
+ * @return BS_OK on success (also for n = 0).
+ * @return BS_ERR_INVALID_ARG if p, u, v or out is NULL, or a view's data is NULL or misaligned or
+ *         its stride not a multiple of sizeof(double).
+ * @return BS_ERR_DEGREE if ku or kv exceeds BS_MAX_DEGREE (checked before the views).
+ * @return BS_ERR_SIZE if a view holds fewer than n elements or its byte extent overflows.
+ * @return BS_ERR_NO_MEMORY if the scratch space of a rational patch cannot be allocated.
  * @since 1.0
  */
 BS_API bs_status bs_patch_eval_deriv(const bs_patch *p, unsigned ku, unsigned kv, size_t n,
@@ -245,16 +271,20 @@ BS_API bs_status bs_patch_eval_deriv(const bs_patch *p, unsigned ku, unsigned kv
 
 /**
  * @brief Evaluate positions and unit normals (with their kind) at n scattered points of a 3-D patch.
- * See the normal rule above.
+ * See the normal rule above; positions are those of bs_patch_eval, bit for bit. A NaN or infinite
+ * parameter gives NaN position and normal and kind BS_NORMAL_UNDEFINED.
  * @param[in]  p     the patch (dim 3).
- * @param[in]  n     number of points.
+ * @param[in]  n     number of points; 0 is a no-op.
  * @param[in]  u     view of n u-parameters.
  * @param[in]  v     view of n v-parameters.
  * @param[out] pos   NULL or 3 views receiving S(u,v).
  * @param[out] nrm   NULL or 3 views receiving the unit normal.
  * @param[out] kind  NULL or n bytes receiving BS_NORMAL_REGULAR, _LIMIT or _UNDEFINED.
- * @return BS_OK; BS_ERR_INVALID_ARG (p, u or v NULL, NULL or misaligned view data);
- *         BS_ERR_DIMENSION (dim is not 3); BS_ERR_SIZE (a view shorter than n).
+ * @return BS_OK on success (also for n = 0).
+ * @return BS_ERR_INVALID_ARG if p, u or v is NULL, or a view's data is NULL or misaligned or its
+ *         stride not a multiple of sizeof(double).
+ * @return BS_ERR_DIMENSION if the patch's dim is not 3 (checked before the views, also for n = 0).
+ * @return BS_ERR_SIZE if a view holds fewer than n elements or its byte extent overflows.
  * @since 1.0
  */
 BS_API bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
@@ -262,19 +292,28 @@ BS_API bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cvie
 
 /**
  * @brief Evaluate a tensor grid: every u[a] with every v[b], written at output index a*nv + b.
+ * Every output is bit-identical to what bs_patch_eval / bs_patch_eval_normal give for the same
+ * pair; the work per point is only the v-direction (the u-direction is contracted once per row).
+ * A NaN or infinite u[a] or v[b] gives NaN outputs in its row or column (kind UNDEFINED).
  * @param[in]  p     the patch.
- * @param[in]  nu    number of u-parameters.
+ * @param[in]  nu    number of u-parameters; 0 is a no-op.
  * @param[in]  u     view of nu u-parameters.
- * @param[in]  nv    number of v-parameters.
+ * @param[in]  nv    number of v-parameters; 0 is a no-op.
  * @param[in]  v     view of nv v-parameters.
  * @param[out] pos   NULL or dim views of nu*nv elements receiving S.
  * @param[out] du    NULL or dim views receiving dS/du.
  * @param[out] dv    NULL or dim views receiving dS/dv.
  * @param[out] nrm   NULL or 3 views receiving unit normals (dim must be 3 when not NULL).
  * @param[out] kind  NULL or nu*nv bytes receiving the normal kinds (dim must be 3 when not NULL).
- * @return BS_OK; BS_ERR_INVALID_ARG (p, u or v NULL, NULL or misaligned view data);
- *         BS_ERR_DIMENSION (nrm or kind given and dim is not 3); BS_ERR_SIZE (a view too short,
- *         nu*nv overflows); BS_ERR_NO_MEMORY (scratch space for large grids).
+ * @return BS_OK on success (also when nu or nv is 0).
+ * @return BS_ERR_INVALID_ARG if p, u or v is NULL, or a view's data is NULL or misaligned or its
+ *         stride not a multiple of sizeof(double).
+ * @return BS_ERR_DIMENSION if nrm or kind is given and the patch's dim is not 3 (checked before
+ *         the views).
+ * @return BS_ERR_SIZE if u or v is shorter than nu or nv, nu*nv overflows size_t (checked after u
+ *         and v), or an output view holds fewer than nu*nv elements or its byte extent overflows.
+ * @return BS_ERR_NO_MEMORY if the scratch space (under 300 kB, independent of nu and nv) cannot be
+ *         allocated.
  * @since 1.0
  */
 BS_API bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,

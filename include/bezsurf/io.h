@@ -1,5 +1,7 @@
 /*
  * libbezsurf input and output: the .bpt text format and the built-in tea set.
+ * Numbers are read and written in the C notation whatever LC_NUMERIC says; the functions may run in
+ * any number of threads at once, as long as no thread changes the locale meanwhile.
  * Include <bezsurf.h> rather than this file.
  */
 #ifndef BEZSURF_IO_H
@@ -50,7 +52,7 @@ BS_API bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_erro
  * @param[out] err   NULL, or receives the error position and reason on BS_ERR_PARSE or BS_ERR_IO.
  * @param[out] out   receives the new surface (NULL on failure).
  * @return BS_OK; BS_ERR_INVALID_ARG if path or out is NULL; BS_ERR_IO if the file cannot be opened
- *         or read; BS_ERR_PARSE; BS_ERR_NO_MEMORY.
+ *         or read, or is larger than 256 MiB; BS_ERR_PARSE; BS_ERR_NO_MEMORY.
  * @since 1.0
  */
 BS_API bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out);

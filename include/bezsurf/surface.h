@@ -73,12 +73,15 @@ BS_API const bs_patch *bs_surface_get(const bs_surface *s, size_t i);
  * Arguments are checked in this order, the first failure returned with nothing written: s, ids, u or
  * v NULL (BS_ERR_INVALID_ARG); normals of a surface whose dim is not 3 (BS_ERR_DIMENSION); each view
  * as for bs_patch_eval() (BS_ERR_INVALID_ARG, BS_ERR_SIZE); an id not below bs_surface_count()
- * (BS_ERR_INVALID_ARG). n = 0 with a surface is a successful no-op (nothing else is read). Parameters outside [0,1], NaN
- * and Inf are handled per point as in bs_patch_eval().
+ * (BS_ERR_INVALID_ARG). n = 0 with a non-NULL s is a successful no-op (nothing else is read).
+ * Parameters outside [0,1] are extrapolated; a NaN or infinite parameter gives NaN outputs for that
+ * point only (kind BS_NORMAL_UNDEFINED), as in bs_patch_eval(). Results are bit-identical to the
+ * patch evaluators called point by point.
  * ---------------------------------------------------------------------------------------------- */
 
 /**
  * @brief Evaluate positions and first partial derivatives at n scattered points of a surface.
+ * NULL, n = 0, short views, NaN and Inf parameters: see the rules above.
  * @param[in]  s    the surface.
  * @param[in]  n    number of points.
  * @param[in]  ids  n patch ids (indices into the surface), each below bs_surface_count(s).
@@ -96,7 +99,8 @@ BS_API bs_status bs_surface_eval(const bs_surface *s, size_t n, const uint32_t *
 
 /**
  * @brief Evaluate positions and unit normals (with their kind) at n scattered points of a 3-D surface.
- * Normals follow the rule of bs_patch_eval_normal().
+ * Normals follow the rule of bs_patch_eval_normal(). NULL, n = 0, short views, NaN and Inf
+ * parameters: see the rules above.
  * @param[in]  s     the surface (dim 3).
  * @param[in]  n     number of points.
  * @param[in]  ids   n patch ids, each below bs_surface_count(s).

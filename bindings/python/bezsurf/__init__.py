@@ -1,0 +1,59 @@
+"""Python binding of libbezsurf: rectangular (tensor-product) Bezier surface patches.
+
+The binding is a thin ctypes layer over the C library ``libbezsurf.so.1``: every computation
+happens in C. The library is loaded from ``$BEZSURF_LIBRARY`` when set, else by its SONAME from
+the system library search path, and must be of major version 1.
+
+Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hodographs, ...),
+:class:`Surface` (an ordered set of patches: evaluation, .bpt files, the built-in tea set,
+continuity, tessellation) and :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export).
+Errors are :class:`BezsurfError` subclasses. numpy is optional: numpy inputs give numpy results
+written in place by the library, other inputs give lists of tuples.
+"""
+
+from ._errors import (BezsurfError, BezsurfIOError, DegreeError, DimensionError, DomainError,
+                      IncompatibleError, InvalidArgumentError, NoMemoryError, NonFiniteError,
+                      ParseError, SizeError, UnsupportedError)
+from ._lib import LIB as _LIB
+from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
+                    Evaluation, Patch)
+from .mesh import Mesh
+from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
+                      Surface, builtin_names)
+
+__version__ = "1.0.0"
+
+#: Largest degree per direction and largest dimension (BS_MAX_DEGREE, BS_MAX_DIM).
+MAX_DEGREE = 64
+MAX_DIM = 8
+
+
+def version() -> str:
+    """Version string of the loaded C library, "MAJOR.MINOR.PATCH"."""
+    return _LIB.bs_version_string().decode("ascii")
+
+
+def version_number() -> int:
+    """Version of the loaded C library as MAJOR*10000 + MINOR*100 + PATCH."""
+    return int(_LIB.bs_version_number())
+
+
+def status_string(code: int) -> str:
+    """The library's text for a status code (any integer; "unknown status" for non-codes)."""
+    return _LIB.bs_status_string(code).decode("utf-8", "replace")
+
+
+def library_path() -> str:
+    """The name or path the C library was loaded from."""
+    return _LIB.path
+
+
+__all__ = [
+    "Patch", "Surface", "Mesh", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
+    "SIDE_V0", "SIDE_U1", "SIDE_V1", "SIDE_U0",
+    "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",
+    "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",
+    "IncompatibleError", "UnsupportedError",
+    "DIR_U", "DIR_V", "NORMAL_REGULAR", "NORMAL_LIMIT", "NORMAL_UNDEFINED", "MAX_DEGREE",
+    "MAX_DIM", "builtin_names", "version", "version_number", "status_string", "library_path",
+]

@@ -1,0 +1,241 @@
+"""Loading libbezsurf and declaring its C functions.
+
+The library is found as ``$BEZSURF_LIBRARY`` when that is set, else by its SONAME
+(``libbezsurf.so.1``) on the system search path; the unversioned development symlink is never
+used, so a library of another major version cannot be picked up by accident. Every C function is
+declared once, in ``FUNCTIONS`` below, and the declarations are applied when the module loads.
+"""
+
+import ctypes
+import os
+import sys
+from ctypes import (POINTER, c_char_p, c_double, c_int, c_size_t, c_ssize_t, c_ubyte, c_uint,
+                    c_uint32, c_void_p)
+from typing import Any, Callable, Dict, List, Sequence, Tuple
+
+from ._errors import ERROR_CLASSES, BezsurfError
+
+#: Major version of the C ABI this binding speaks.
+ABI_MAJOR = 1
+
+if sys.platform == "darwin":
+    SONAME = "libbezsurf.1.dylib"
+elif sys.platform == "win32":
+    SONAME = "bezsurf.dll"
+else:
+    SONAME = "libbezsurf.so.1"
+
+
+class View(ctypes.Structure):
+    """``bs_view``: a strided output buffer of doubles (stride in bytes, 0 = packed)."""
+
+    _fields_ = [("data", c_void_p), ("count", c_size_t), ("stride", c_ssize_t)]
+
+
+class CView(ctypes.Structure):
+    """``bs_cview``: a strided input buffer of doubles."""
+
+    _fields_ = [("data", c_void_p), ("count", c_size_t), ("stride", c_ssize_t)]
+
+
+class CCurve(ctypes.Structure):
+    """``bs_curve``: a Bezier curve given to the ruled and Coons constructions."""
+
+    _fields_ = [("degree", c_size_t), ("dim", c_size_t), ("ctrl", c_void_p), ("weights", c_void_p)]
+
+
+class CParseError(ctypes.Structure):
+    """``bs_parse_error``: where and why parsing failed."""
+
+    _fields_ = [("line", c_size_t), ("column", c_size_t), ("message", ctypes.c_char * 96)]
+
+
+class CEdgeContinuity(ctypes.Structure):
+    """``bs_edge_continuity``: how two patches meet along one shared edge."""
+
+    _fields_ = [("patch_a", c_uint32), ("patch_b", c_uint32), ("side_a", c_int),
+                ("side_b", c_int), ("reversed", c_int), ("c1", c_int), ("flipped", c_int),
+                ("samples", c_int), ("c0_gap", c_double), ("g1_angle", c_double),
+                ("c1_defect", c_double)]
+
+
+class COpenEdge(ctypes.Structure):
+    """``bs_open_edge``: a patch side no other patch shares."""
+
+    _fields_ = [("patch", c_uint32), ("side", c_int)]
+
+
+class _Status:
+    """Marks a function returning ``bs_status``: negative results raise through errcheck."""
+
+
+STATUS = _Status()
+
+# Handles are opaque pointers; wrapper objects pass themselves through ``_as_parameter_``.
+HANDLE = c_void_p
+HANDLE_OUT = POINTER(c_void_p)
+VIEWS = POINTER(View)
+CVIEW = POINTER(CView)
+DOUBLES = c_void_p      # a double * (input or output), passed as an address
+BYTES = c_void_p        # an unsigned char * output
+SIZE_OUT = POINTER(c_size_t)
+CURVE = POINTER(CCurve)
+PARSE_ERROR = POINTER(CParseError)
+IDS = c_void_p          # a uint32_t * (input or output)
+
+# (name, argtypes, restype): the one declaration of every C function the binding uses.
+FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
+    # core.h: version and status
+    ("bs_version_number", (), c_uint),
+    ("bs_version_string", (), c_char_p),
+    ("bs_status_string", (c_int,), c_char_p),
+    # core.h: patches
+    ("bs_patch_create", (c_size_t, c_size_t, c_size_t, DOUBLES, DOUBLES, HANDLE_OUT), STATUS),
+    ("bs_patch_destroy", (HANDLE,), None),
+    ("bs_patch_clone", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_patch_degree_u", (HANDLE,), c_size_t),
+    ("bs_patch_degree_v", (HANDLE,), c_size_t),
+    ("bs_patch_dim", (HANDLE,), c_size_t),
+    ("bs_patch_is_rational", (HANDLE,), c_int),
+    ("bs_patch_get_ctrl", (HANDLE, DOUBLES, c_size_t, DOUBLES, c_size_t), STATUS),
+    # core.h: evaluation
+    ("bs_patch_eval", (HANDLE, c_size_t, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS), STATUS),
+    ("bs_patch_eval_deriv", (HANDLE, c_uint, c_uint, c_size_t, CVIEW, CVIEW, VIEWS), STATUS),
+    ("bs_patch_eval_normal", (HANDLE, c_size_t, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
+    ("bs_patch_eval_grid", (HANDLE, c_size_t, CVIEW, c_size_t, CVIEW, VIEWS, VIEWS, VIEWS, VIEWS,
+                            BYTES), STATUS),
+    # ops.h: exact operations
+    ("bs_patch_split", (HANDLE, c_int, c_double, HANDLE_OUT, HANDLE_OUT), STATUS),
+    ("bs_patch_split4", (HANDLE, c_double, c_double, HANDLE_OUT), STATUS),
+    ("bs_patch_subpatch", (HANDLE, c_double, c_double, c_double, c_double, HANDLE_OUT), STATUS),
+    ("bs_patch_elevate", (HANDLE, c_size_t, c_size_t, HANDLE_OUT), STATUS),
+    ("bs_patch_derivative", (HANDLE, c_uint, c_uint, HANDLE_OUT), STATUS),
+    ("bs_patch_isocurve", (HANDLE, c_int, c_double, DOUBLES, c_size_t, DOUBLES, c_size_t), STATUS),
+    ("bs_patch_bounds", (HANDLE, DOUBLES, DOUBLES), STATUS),
+    ("bs_patch_transform", (HANDLE, DOUBLES, HANDLE_OUT), STATUS),
+    ("bs_patch_swap_uv", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_patch_reverse", (HANDLE, c_int, HANDLE_OUT), STATUS),
+    ("bs_patch_ruled", (CURVE, CURVE, HANDLE_OUT), STATUS),
+    ("bs_patch_coons", (CURVE, CURVE, CURVE, CURVE, HANDLE_OUT), STATUS),
+    # surface.h: sets of patches
+    ("bs_surface_create", (HANDLE_OUT,), STATUS),
+    ("bs_surface_destroy", (HANDLE,), None),
+    ("bs_surface_clone", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_surface_add", (HANDLE, HANDLE, SIZE_OUT), STATUS),
+    ("bs_surface_count", (HANDLE,), c_size_t),
+    ("bs_surface_dim", (HANDLE,), c_size_t),
+    ("bs_surface_get", (HANDLE, c_size_t), HANDLE),
+    ("bs_surface_eval", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS), STATUS),
+    ("bs_surface_eval_normal", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
+    # continuity.h
+    ("bs_surface_continuity", (HANDLE, c_double, c_size_t, POINTER(CEdgeContinuity), c_size_t,
+                               SIZE_OUT, POINTER(COpenEdge), c_size_t, SIZE_OUT), STATUS),
+    # mesh.h: tessellation, mesh read-back and export
+    ("bs_surface_tessellate_uniform", (HANDLE, c_size_t, c_size_t, c_int, HANDLE_OUT), STATUS),
+    ("bs_surface_tessellate_adaptive", (HANDLE, c_double, c_int, HANDLE_OUT), STATUS),
+    ("bs_mesh_destroy", (HANDLE,), None),
+    ("bs_mesh_vertex_count", (HANDLE,), c_size_t),
+    ("bs_mesh_triangle_count", (HANDLE,), c_size_t),
+    ("bs_mesh_strip_count", (HANDLE,), c_size_t),
+    ("bs_mesh_strip_index_count", (HANDLE,), c_size_t),
+    ("bs_mesh_copy_positions", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_normals", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_uv", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_patch_ids", (HANDLE, IDS, c_size_t), STATUS),
+    ("bs_mesh_copy_triangles", (HANDLE, IDS, c_size_t), STATUS),
+    ("bs_mesh_copy_triangle_patch_ids", (HANDLE, IDS, c_size_t), STATUS),
+    ("bs_mesh_copy_corner_uv", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_strips", (HANDLE, IDS, c_size_t, IDS, c_size_t), STATUS),
+    ("bs_mesh_write", (HANDLE, c_int, c_char_p), STATUS),
+    ("bs_mesh_write_memory", (HANDLE, c_int, c_void_p, c_size_t, SIZE_OUT), STATUS),
+    # io.h: the .bpt format and the built-in tea set
+    ("bs_surface_read_bpt", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_read_bpt_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_write_bpt", (HANDLE, c_void_p, c_size_t, SIZE_OUT), STATUS),
+    ("bs_surface_write_bpt_file", (HANDLE, c_char_p), STATUS),
+    ("bs_surface_create_builtin", (c_char_p, HANDLE_OUT), STATUS),
+    ("bs_builtin_name", (c_size_t,), c_char_p),
+)
+
+#: C functions of the library deliberately left without a binding, with the reason.
+NOT_BOUND: Dict[str, str] = {}
+
+
+def status_text(dll: ctypes.CDLL, code: int) -> str:
+    return dll.bs_status_string(code).decode("utf-8", "replace")
+
+
+def error_for(dll: ctypes.CDLL, code: int, function: str = "") -> BezsurfError:
+    cls = ERROR_CLASSES.get(code, BezsurfError)
+    return cls(code, status_text(dll, code), function or None)
+
+
+class Library:
+    """The loaded shared library with every function of ``FUNCTIONS`` declared on it.
+
+    A function the loaded library does not export (an older 1.x library) is replaced by a stub
+    raising NotImplementedError when called; ``missing`` lists those names.
+    """
+
+    def __init__(self, dll: ctypes.CDLL, path: str) -> None:
+        self.dll = dll
+        self.path = path
+        self.missing: List[str] = []
+        for name, argtypes, restype in FUNCTIONS:
+            try:
+                fn = getattr(dll, name)
+            except AttributeError:
+                self.missing.append(name)
+                setattr(self, name, _missing_stub(name))
+                continue
+            fn.argtypes = list(argtypes)
+            if restype is STATUS:
+                fn.restype = c_int
+                fn.errcheck = self._check
+            else:
+                fn.restype = restype
+            setattr(self, name, fn)
+
+    def _check(self, result: int, func: Any, args: Any) -> int:
+        if result < 0:
+            raise error_for(self.dll, result, getattr(func, "__name__", ""))
+        return result
+
+    def __getattr__(self, name: str) -> Callable[..., Any]:
+        # Only reached for names outside FUNCTIONS: a programming error in the binding.
+        raise AttributeError(f"{name} is not declared in bezsurf._lib.FUNCTIONS")
+
+
+def _missing_stub(name: str) -> Callable[..., Any]:
+    def stub(*args: Any) -> Any:
+        raise NotImplementedError(f"the loaded libbezsurf does not export {name}")
+    stub.__name__ = name
+    return stub
+
+
+def load() -> Library:
+    """Load the library, check its major version and declare its functions."""
+    path = os.environ.get("BEZSURF_LIBRARY") or SONAME
+    try:
+        dll = ctypes.CDLL(path)
+    except OSError as exc:
+        raise ImportError(
+            f"cannot load libbezsurf from {path!r} ({exc}); install libbezsurf {ABI_MAJOR}.x "
+            f"so that {SONAME} is on the library search path, or set BEZSURF_LIBRARY to the "
+            f"library file") from exc
+    try:
+        dll.bs_version_number.argtypes = []
+        dll.bs_version_number.restype = c_uint
+        number = int(dll.bs_version_number())
+    except AttributeError as exc:
+        raise ImportError(f"{path!r} is not libbezsurf (no bs_version_number)") from exc
+    if number // 10000 != ABI_MAJOR:
+        raise ImportError(f"{path!r} is libbezsurf major version {number // 10000}; this binding "
+                          f"needs major version {ABI_MAJOR}")
+    return Library(dll, path)
+
+
+LIB = load()
+
+__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+           "error_for", "c_double", "c_ubyte", "c_uint32"]

@@ -1,0 +1,450 @@
+"""The Patch class: one rectangular tensor-product Bezier patch."""
+
+import array
+import ctypes
+from typing import Any, List, NamedTuple, Optional, Sequence, Tuple, Union
+
+from . import _buffers as B
+from ._handle import Handle
+from ._lib import LIB, CCurve
+
+#: Directions for split() and isocurve(); 'u' and 'v' are accepted as well.
+DIR_U = 0
+DIR_V = 1
+
+#: Normal kinds written by the normal evaluators.
+NORMAL_REGULAR = 0
+NORMAL_LIMIT = 1
+NORMAL_UNDEFINED = 2
+
+Direction = Union[int, str]
+Params = Any  # a real number, a sequence of them, array.array('d'), memoryview or numpy array
+
+
+class Curve(NamedTuple):
+    """A Bezier curve: its control points and, when rational, its weights (else None).
+
+    ``points`` is a list of tuples (or any nested sequence or numpy array of shape
+    (degree+1, dim)); ``weights`` None or degree+1 positive numbers. Returned by
+    :meth:`Patch.isocurve` and accepted by :meth:`Patch.ruled` and :meth:`Patch.coons`, which
+    also take a bare sequence of points for a polynomial curve.
+    """
+
+    points: Any
+    weights: Any = None
+
+
+class Evaluation(NamedTuple):
+    """Results of an evaluation; fields that were not asked for are None.
+
+    Each field is a numpy array (``position``, ``du``, ``dv``: shape (n, dim); ``normal``: (n, 3);
+    ``kind``: uint8 of shape (n,)) when a parameter was a numpy array, else a list of n tuples
+    (``kind``: a list of ints). For scalar u and v the leading n axis is dropped.
+    """
+
+    position: Any
+    du: Any = None
+    dv: Any = None
+    normal: Any = None
+    kind: Any = None
+
+
+def _direction(d: Direction) -> int:
+    if isinstance(d, str):
+        try:
+            return {"u": DIR_U, "v": DIR_V}[d.lower()]
+        except KeyError:
+            raise ValueError(f"direction must be 'u' or 'v', not {d!r}") from None
+    return int(d)
+
+
+def _check_requested(derivatives: bool, normals: bool, du_out: Any, dv_out: Any,
+                     normal_out: Any, kind_out: Any) -> None:
+    """An output array given for a result that was not asked for is a mistake, not a no-op."""
+    if not derivatives and (du_out is not None or dv_out is not None):
+        raise ValueError("du_out and dv_out need derivatives=True")
+    if not normals and (normal_out is not None or kind_out is not None):
+        raise ValueError("normal_out and kind_out need normals=True")
+
+
+def _squeeze(value: Any) -> Any:
+    """The single point of a one-point result (scalar parameters)."""
+    if value is None:
+        return None
+    return value[0]
+
+
+class Patch(Handle):
+    """A rectangular tensor-product Bezier patch (immutable).
+
+    ``Patch(net, weights=None)`` builds a patch from its control net: any nested sequence or
+    array of shape (deg_u+1, deg_v+1, dim), row i along u, column j along v, so that
+    S(u, v) = sum_ij B_i(u) B_j(v) P_ij. ``weights`` (shape (deg_u+1, deg_v+1), all finite and
+    positive) makes the patch rational; control points are Cartesian, not pre-multiplied.
+    The library copies both.
+
+    Parameters of the evaluators (u, v) may be real numbers, lists, tuples, ``array.array('d')``,
+    memoryviews of doubles or numpy arrays. With a numpy array among them the results are numpy
+    arrays of shape (n, dim) that the library writes in place (pass ``out=`` to reuse one);
+    otherwise lists of n tuples. u and v outside [0, 1] extrapolate.
+
+    Errors from the library raise :class:`bezsurf.BezsurfError` subclasses. A patch is a context
+    manager; ``close()`` releases it at once.
+
+    Example::
+
+        >>> p = Patch([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+        >>> p.eval([0.5], [0.5])
+        [(0.5, 0.5, 0.25)]
+    """
+
+    _destroy = LIB.bs_patch_destroy
+
+    def __init__(self, net: Any, weights: Any = None) -> None:
+        rows, cols, dim, keep, ctrl, w = B.flat_net(net, weights)
+        handle = ctypes.c_void_p()
+        LIB.bs_patch_create(rows - 1, cols - 1, dim, ctrl, w, ctypes.byref(handle))
+        del keep
+        self._adopt(handle.value)  # type: ignore[arg-type]
+
+    @classmethod
+    def _wrap(cls, handle: Optional[int], parent: Optional[Handle] = None) -> "Patch":
+        p = cls.__new__(cls)
+        p._adopt(handle, parent)  # type: ignore[arg-type]
+        return p
+
+    # ---- properties -----------------------------------------------------------------------
+    @property
+    def degree_u(self) -> int:
+        """Degree along u (rows of the net minus one)."""
+        return int(LIB.bs_patch_degree_u(self._ptr))
+
+    @property
+    def degree_v(self) -> int:
+        """Degree along v (columns of the net minus one)."""
+        return int(LIB.bs_patch_degree_v(self._ptr))
+
+    @property
+    def degree(self) -> Tuple[int, int]:
+        """(degree_u, degree_v)."""
+        return self.degree_u, self.degree_v
+
+    @property
+    def dim(self) -> int:
+        """Dimension of a control point."""
+        return int(LIB.bs_patch_dim(self._ptr))
+
+    @property
+    def rational(self) -> bool:
+        """True if the patch has weights."""
+        return bool(LIB.bs_patch_is_rational(self._ptr))
+
+    @property
+    def shape(self) -> Tuple[int, int, int]:
+        """Shape of the control net: (degree_u+1, degree_v+1, dim)."""
+        return self.degree_u + 1, self.degree_v + 1, self.dim
+
+    @property
+    def ctrl(self) -> List[List[Tuple[float, ...]]]:
+        """The control net as nested lists: ``ctrl[i][j]`` is the point tuple P_ij."""
+        shape = self.shape
+        buf = array.array("d", bytes(8 * shape[0] * shape[1] * shape[2]))
+        LIB.bs_patch_get_ctrl(self._ptr, buf.buffer_info()[0], len(buf), None, 0)
+        return B.nested(buf, shape)
+
+    @property
+    def weights(self) -> Optional[List[List[float]]]:
+        """The weights as nested lists ``weights[i][j]``, or None for a polynomial patch."""
+        if not self.rational:
+            return None
+        rows, cols, _ = self.shape
+        buf = array.array("d", bytes(8 * rows * cols))
+        LIB.bs_patch_get_ctrl(self._ptr, None, 0, buf.buffer_info()[0], len(buf))
+        return [list(buf[i * cols:(i + 1) * cols]) for i in range(rows)]
+
+    def ctrl_array(self, out: Any = None) -> Any:
+        """The control net as a numpy array of shape (deg_u+1, deg_v+1, dim), written by the
+        library into ``out`` (a C-contiguous float64 array of that shape) or a new array."""
+        np = B.need_numpy()
+        arr = out if out is not None else np.empty(self.shape)
+        _check_packed(arr, self.shape, "out")
+        LIB.bs_patch_get_ctrl(self._ptr, arr.ctypes.data, arr.size, None, 0)
+        return arr
+
+    def weights_array(self, out: Any = None) -> Any:
+        """The weights as a numpy array of shape (deg_u+1, deg_v+1); all ones when polynomial."""
+        np = B.need_numpy()
+        shape = self.shape[:2]
+        arr = out if out is not None else np.empty(shape)
+        _check_packed(arr, shape, "out")
+        LIB.bs_patch_get_ctrl(self._ptr, None, 0, arr.ctypes.data, arr.size)
+        return arr
+
+    def clone(self) -> "Patch":
+        """An independent copy (bs_patch_clone)."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_clone(self._ptr, ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    __copy__ = clone
+
+    def __deepcopy__(self, memo: Any) -> "Patch":
+        return self.clone()
+
+    def __reduce__(self) -> Any:
+        return (Patch, (self.ctrl, self.weights))
+
+    def __repr__(self) -> str:
+        if self.closed:
+            return "<bezsurf.Patch (closed)>"
+        kind = "rational" if self.rational else "polynomial"
+        return f"<bezsurf.Patch degree ({self.degree_u}, {self.degree_v}) dim {self.dim} {kind}>"
+
+    # ---- evaluation -----------------------------------------------------------------------
+    def eval(self, u: Params, v: Params, *, derivatives: bool = False, normals: bool = False,
+             out: Any = None, du_out: Any = None, dv_out: Any = None, normal_out: Any = None,
+             kind_out: Any = None) -> Any:
+        """Evaluate the patch at the n points (u[k], v[k]).
+
+        Returns the positions S(u, v), shape (n, dim), unless ``derivatives`` or ``normals`` is
+        set; then an :class:`Evaluation` with ``position`` and, on request, the first partial
+        derivatives ``du``, ``dv`` and the unit ``normal`` with its ``kind`` (NORMAL_REGULAR,
+        NORMAL_LIMIT or NORMAL_UNDEFINED; 3-D patches only). Scalar u and v give one point.
+        ``out``, ``du_out``, ``dv_out`` (float64, shape (n, dim)), ``normal_out`` (n, 3) and
+        ``kind_out`` (uint8, n) are numpy arrays written in place instead of new results.
+        """
+        _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
+        call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out))
+        pos = call.output(self.dim, out, "out")
+        dus = dvs = nrm = kinds = None
+        if derivatives:
+            dus = call.output(self.dim, du_out, "du_out")
+            dvs = call.output(self.dim, dv_out, "dv_out")
+        # Normals first: their call fails (dimension) before anything is written, so a failure
+        # leaves every output untouched, as a single C call would.
+        if normals:
+            nrm = call.output(3, normal_out, "normal_out")
+            kinds = B.KindOutput(call.n, call.numpy, kind_out)
+            LIB.bs_patch_eval_normal(self._ptr, call.n, call.u, call.v,
+                                     None if derivatives else pos.views, nrm.views, kinds.address)
+        if derivatives or not normals:
+            LIB.bs_patch_eval(self._ptr, call.n, call.u, call.v, pos.views,
+                              dus.views if dus else None, dvs.views if dvs else None)
+        if not derivatives and not normals:
+            return call.finish(pos.result())
+        return Evaluation(*(call.finish(x.result() if x is not None else None)
+                            for x in (pos, dus, dvs, nrm, kinds)))
+
+    def eval_deriv(self, ku: int, kv: int, u: Params, v: Params, *, out: Any = None) -> Any:
+        """The mixed partial derivative d^(ku+kv) S / du^ku dv^kv at the n points (u[k], v[k]).
+
+        Orders beyond the degree give zero (polynomial patches); (0, 0) gives positions. Result
+        shape (n, dim), like :meth:`eval`.
+        """
+        call = _Call(u, v, (out,))
+        res = call.output(self.dim, out, "out")
+        LIB.bs_patch_eval_deriv(self._ptr, ku, kv, call.n, call.u, call.v, res.views)
+        return call.finish(res.result())
+
+    def eval_normal(self, u: Params, v: Params, *, out: Any = None, normal_out: Any = None,
+                    kind_out: Any = None) -> Evaluation:
+        """Positions, unit normals and normal kinds at the n points of a 3-D patch.
+
+        Returns an :class:`Evaluation` (position, normal, kind set). Where S_u x S_v vanishes
+        the limit normal is given (kind NORMAL_LIMIT); where no normal exists, (0, 0, 0) with
+        kind NORMAL_UNDEFINED.
+        """
+        call = _Call(u, v, (out, normal_out, kind_out))
+        pos = call.output(self.dim, out, "out")
+        nrm = call.output(3, normal_out, "normal_out")
+        kinds = B.KindOutput(call.n, call.numpy, kind_out)
+        LIB.bs_patch_eval_normal(self._ptr, call.n, call.u, call.v, pos.views, nrm.views, kinds.address)
+        return Evaluation(call.finish(pos.result()), None, None, call.finish(nrm.result()),
+                          call.finish(kinds.result()))
+
+    def eval_grid(self, u: Params, v: Params, *, derivatives: bool = False,
+                  normals: bool = False, out: Any = None, du_out: Any = None,
+                  dv_out: Any = None, normal_out: Any = None, kind_out: Any = None) -> Any:
+        """Evaluate on the tensor grid of every u[a] with every v[b].
+
+        Point (a, b) is row a*len(v) + b of results of shape (len(u)*len(v), dim) (for numpy,
+        ``result.reshape(len(u), len(v), dim)`` is a view). Returns positions, or an
+        :class:`Evaluation` when ``derivatives`` or ``normals`` is set, as :meth:`eval` does.
+        """
+        _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
+        call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out), grid=True)
+        pos = call.output(self.dim, out, "out")
+        dus = dvs = nrm = kinds = None
+        if derivatives:
+            dus = call.output(self.dim, du_out, "du_out")
+            dvs = call.output(self.dim, dv_out, "dv_out")
+        if normals:
+            nrm = call.output(3, normal_out, "normal_out")
+            kinds = B.KindOutput(call.n, call.numpy, kind_out)
+        LIB.bs_patch_eval_grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views,
+                               dus.views if dus else None, dvs.views if dvs else None,
+                               nrm.views if nrm else None, kinds.address if kinds else None)
+        if not derivatives and not normals:
+            return pos.result()
+        return Evaluation(*(x.result() if x is not None else None
+                            for x in (pos, dus, dvs, nrm, kinds)))
+
+    # ---- exact operations -----------------------------------------------------------------
+    def split(self, direction: Direction, t: float) -> Tuple["Patch", "Patch"]:
+        """Split at t (0 < t < 1) along ``direction`` ('u' or 'v') into the parts over [0, t]
+        and [t, 1]."""
+        lo, hi = ctypes.c_void_p(), ctypes.c_void_p()
+        LIB.bs_patch_split(self._ptr, _direction(direction), t, ctypes.byref(lo), ctypes.byref(hi))
+        return Patch._wrap(lo.value), Patch._wrap(hi.value)
+
+    def split4(self, u: float, v: float) -> Tuple["Patch", "Patch", "Patch", "Patch"]:
+        """Split at (u, v) into four patches: [u low, v low], [u high, v low], [u low, v high],
+        [u high, v high]."""
+        out = (ctypes.c_void_p * 4)()
+        LIB.bs_patch_split4(self._ptr, u, v, out)
+        return tuple(Patch._wrap(h) for h in out)  # type: ignore[return-value]
+
+    def subpatch(self, u0: float, u1: float, v0: float, v1: float) -> "Patch":
+        """The patch over [u0, u1] x [v0, v1]; u0 > u1 (v0 > v1) reverses that direction."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_subpatch(self._ptr, u0, u1, v0, v1, ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    def elevate(self, raise_u: int, raise_v: int) -> "Patch":
+        """The same surface with its degrees raised by raise_u and raise_v."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_elevate(self._ptr, raise_u, raise_v, ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    def derivative(self, ku: int, kv: int) -> "Patch":
+        """The hodograph patch of d^(ku+kv) S / du^ku dv^kv (polynomial patches only)."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_derivative(self._ptr, ku, kv, ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    def isocurve(self, direction: Direction, t: float, *, numpy: bool = False) -> Curve:
+        """Control points and weights of an iso-parameter curve.
+
+        Direction 'u': the curve u = t, a Bezier curve in v of degree degree_v; 'v': v = t, in u.
+        Returns a :class:`Curve` (points, weights): points a list of tuples (or a numpy array of
+        shape (degree+1, dim) when ``numpy`` is true), weights a list (array) or None when the
+        patch is polynomial.
+        """
+        d = _direction(direction)
+        npts = (self.degree_v if d == DIR_U else self.degree_u) + 1
+        dim = self.dim
+        rational = self.rational
+        if numpy:
+            np = B.need_numpy()
+            pts: Any = np.empty((npts, dim))
+            w: Any = np.empty(npts) if rational else None
+            paddr, waddr = pts.ctypes.data, (w.ctypes.data if w is not None else None)
+        else:
+            pts = array.array("d", bytes(8 * npts * dim))
+            w = array.array("d", bytes(8 * npts)) if rational else None
+            paddr, waddr = pts.buffer_info()[0], (w.buffer_info()[0] if w is not None else None)
+        LIB.bs_patch_isocurve(self._ptr, d, t, paddr, npts * dim, waddr, npts if rational else 0)
+        if numpy:
+            return Curve(pts, w)
+        return Curve(B.nested(pts, (npts, dim)), list(w) if w is not None else None)
+
+    def bounds(self) -> Tuple[Tuple[float, ...], Tuple[float, ...]]:
+        """(lo, hi): the bounding box of the control net, which contains the patch."""
+        dim = self.dim
+        lo = array.array("d", bytes(8 * dim))
+        hi = array.array("d", bytes(8 * dim))
+        LIB.bs_patch_bounds(self._ptr, lo.buffer_info()[0], hi.buffer_info()[0])
+        return tuple(lo), tuple(hi)
+
+    def transform(self, affine: Any) -> "Patch":
+        """The patch with x -> A x + b applied to its net. ``affine`` is dim rows of dim+1
+        numbers, [A | b] (nested sequence or numpy array of shape (dim, dim+1))."""
+        dim = self.dim
+        keep, address = B.packed_doubles(affine, dim * (dim + 1), "affine")
+        out = ctypes.c_void_p()
+        LIB.bs_patch_transform(self._ptr, address, ctypes.byref(out))
+        del keep
+        return Patch._wrap(out.value)
+
+    def swap_uv(self) -> "Patch":
+        """The same surface with u and v exchanged: Q(u, v) = P(v, u), Q[j][i] = P[i][j].
+        The normal S_u x S_v changes sign."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_swap_uv(self._ptr, ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    def reverse(self, direction: Direction) -> "Patch":
+        """The same surface with one direction reversed: 'u' gives Q(u, v) = P(1-u, v),
+        'v' gives Q(u, v) = P(u, 1-v)."""
+        out = ctypes.c_void_p()
+        LIB.bs_patch_reverse(self._ptr, _direction(direction), ctypes.byref(out))
+        return Patch._wrap(out.value)
+
+    @classmethod
+    def ruled(cls, c0: Any, c1: Any) -> "Patch":
+        """The ruled patch joining curve c0 (at v = 0) to curve c1 (at v = 1) by straight
+        segments: degree (d, 1), d the larger curve degree. Curves are :class:`Curve` values or
+        bare point sequences; rational curves give a rational patch."""
+        curves = [_CurveArg(c, name) for c, name in ((c0, "c0"), (c1, "c1"))]
+        out = ctypes.c_void_p()
+        LIB.bs_patch_ruled(ctypes.byref(curves[0].c), ctypes.byref(curves[1].c), ctypes.byref(out))
+        return cls._wrap(out.value)
+
+    @classmethod
+    def coons(cls, v0: Any, v1: Any, u0: Any, u1: Any) -> "Patch":
+        """The bilinearly blended Coons patch of four polynomial boundary curves:
+        S(u, 0) = v0(u), S(u, 1) = v1(u), S(0, v) = u0(v), S(1, v) = u1(v). The corners must
+        meet (IncompatibleError otherwise); rational curves raise UnsupportedError."""
+        curves = [_CurveArg(c, name) for c, name in ((v0, "v0"), (v1, "v1"), (u0, "u0"), (u1, "u1"))]
+        out = ctypes.c_void_p()
+        LIB.bs_patch_coons(*(ctypes.byref(c.c) for c in curves), ctypes.byref(out))
+        return cls._wrap(out.value)
+
+
+class _CurveArg:
+    """A bs_curve built from a Curve or a bare point sequence, with its buffers kept alive."""
+
+    def __init__(self, curve: Any, what: str) -> None:
+        if isinstance(curve, Curve):
+            points, weights = curve.points, curve.weights
+        else:
+            points, weights = curve, None
+        rows, _, dim, keep, ctrl, w = B.flat_net([points], None if weights is None else [weights])
+        del rows
+        npts = len(points)
+        self.keep = keep
+        self.c = CCurve(npts - 1, dim, ctrl, w)
+
+
+def _check_packed(arr: Any, shape: Sequence[int], what: str) -> None:
+    np = B.need_numpy()
+    if not isinstance(arr, np.ndarray) or arr.dtype != np.float64 or arr.shape != tuple(shape) \
+            or not arr.flags.c_contiguous or not arr.flags.writeable:
+        raise ValueError(f"{what} must be a writable C-contiguous float64 array of shape "
+                         f"{tuple(shape)}")
+
+
+class _Call:
+    """The parameter views of one evaluation call and how its results are shaped."""
+
+    def __init__(self, u: Params, v: Params, outs: Sequence[Any], grid: bool = False) -> None:
+        self.scalar = (not grid) and B.is_scalar(u) and B.is_scalar(v)
+        du = B.doubles(u, "u")
+        dv = B.doubles(v, "v")
+        self.keep = (du, dv)
+        self.numpy = du.numpy or dv.numpy or any(B.is_ndarray(o) for o in outs)
+        self.u = du.cview()
+        self.v = dv.cview()
+        if grid:
+            self.nu, self.nv = du.count, dv.count
+            self.n = self.nu * self.nv
+        else:
+            if du.count != dv.count:
+                raise ValueError(f"u and v must have the same length ({du.count} != {dv.count})")
+            self.n = du.count
+
+    def output(self, k: int, out: Any, what: str) -> B.Output:
+        return B.Output(self.n, k, self.numpy, out, what)
+
+    def finish(self, value: Any) -> Any:
+        return _squeeze(value) if self.scalar else value

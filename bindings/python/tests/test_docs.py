@@ -1,0 +1,10 @@
+"""The examples in the docstrings run and print what they claim."""
+
+import doctest
+
+import bezsurf.patch
+
+
+def load_tests(loader, tests, ignore):
+    tests.addTests(doctest.DocTestSuite(bezsurf.patch))
+    return tests

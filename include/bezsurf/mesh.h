@@ -1,0 +1,209 @@
+/*
+ * libbezsurf meshes: tessellation of a surface into an indexed triangle mesh, read-back of the mesh
+ * into caller buffers, and export to OBJ, PLY and STL. Include <bezsurf.h> rather than this file.
+ */
+#ifndef BEZSURF_MESH_H
+#define BEZSURF_MESH_H
+
+#include "core.h"
+#include "surface.h"
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/**
+ * Opaque, immutable triangle mesh made by a tessellator. Vertices carry a position, a unit normal,
+ * a (u,v) parameter pair and the id of the patch they were evaluated on; triangles are index
+ * triples, counter-clockwise seen from the side the normals point to. Any number of threads may
+ * read the same `const bs_mesh *` at once. @since 1.0
+ */
+typedef struct bs_mesh bs_mesh;
+
+/** Tessellation flag: the adaptive tolerance is a fraction of the surface's control-net bounding-box
+ *  diagonal instead of an absolute distance. @since 1.0 */
+#define BS_TESS_RELATIVE 1
+/** Tessellation flag: also build triangle strips (see bs_mesh_copy_strips()). @since 1.0 */
+#define BS_TESS_STRIPS 2
+/** Largest number of segments per patch and direction a tessellator uses. @since 1.0 */
+#define BS_TESS_MAX_RATE 1024
+
+/**
+ * @brief Tessellate a 3-D surface with nu x nv segments per patch.
+ * Vertices on sides shared by two patches (control points equal within 1e-9 times the largest
+ * control-point coordinate) are computed once and shared, so the mesh has no cracks; a side shared
+ * with a neighbour whose rate along it differs uses the larger rate, and the patch's interior grid is
+ * stitched to it. Sides whose control points coincide (poles) become one vertex and the triangles
+ * that degenerate there are dropped. An empty surface gives an empty mesh.
+ * @param[in]  s      the surface (dim 3).
+ * @param[in]  nu     segments along u per patch, 1..BS_TESS_MAX_RATE.
+ * @param[in]  nv     segments along v per patch, 1..BS_TESS_MAX_RATE.
+ * @param[in]  flags  0 or BS_TESS_STRIPS (BS_TESS_RELATIVE is accepted and ignored).
+ * @param[out] out    receives the mesh (NULL on failure); release with bs_mesh_destroy().
+ * @return BS_OK on success.
+ * @return BS_ERR_INVALID_ARG if s or out is NULL or flags has unknown bits.
+ * @return BS_ERR_DIMENSION if the surface is not empty and its dimension is not 3.
+ * @return BS_ERR_DOMAIN if nu or nv is 0 or above BS_TESS_MAX_RATE.
+ * @return BS_ERR_SIZE if the mesh would need more than UINT32_MAX - 1 vertices or indices.
+ * @return BS_ERR_NO_MEMORY if an allocation fails.
+ * @since 1.0
+ */
+BS_API bs_status bs_surface_tessellate_uniform(const bs_surface *s, size_t nu, size_t nv, int flags,
+                                               bs_mesh **out);
+
+/**
+ * @brief Tessellate a 3-D surface so that every triangle lies within a chordal tolerance of the
+ * surface: for every point of a triangle, the distance between the surface at that point's (u,v)
+ * and the point is at most the tolerance. Each patch gets a segment count per direction from a
+ * bound on its second derivatives (second differences of the control net); shared sides use the
+ * larger count of their two patches (no T-junctions), and crack-freedom is as for
+ * bs_surface_tessellate_uniform(). The bound is rigorous for polynomial patches; for rational
+ * patches it is an estimate (the net's bound scaled by the ratio of the largest to the smallest
+ * weight). Counts are capped at BS_TESS_MAX_RATE, where the tolerance may then not be met.
+ * @param[in]  s          the surface (dim 3).
+ * @param[in]  tolerance  finite and > 0: a distance, or with BS_TESS_RELATIVE a fraction of the
+ *                        bounding-box diagonal of all control points.
+ * @param[in]  flags      0 or a combination of BS_TESS_RELATIVE and BS_TESS_STRIPS.
+ * @param[out] out        receives the mesh (NULL on failure).
+ * @return BS_OK on success.
+ * @return BS_ERR_INVALID_ARG if s or out is NULL or flags has unknown bits.
+ * @return BS_ERR_DIMENSION if the surface is not empty and its dimension is not 3.
+ * @return BS_ERR_DOMAIN if tolerance is NaN, Inf, zero or negative.
+ * @return BS_ERR_SIZE if the mesh would need more than UINT32_MAX - 1 vertices or indices.
+ * @return BS_ERR_NO_MEMORY if an allocation fails.
+ * @since 1.0
+ */
+BS_API bs_status bs_surface_tessellate_adaptive(const bs_surface *s, double tolerance, int flags,
+                                                bs_mesh **out);
+
+/** @brief Release a mesh. NULL is a no-op. @since 1.0 */
+BS_API void bs_mesh_destroy(bs_mesh *m);
+
+/** @brief Number of vertices; 0 for NULL. @since 1.0 */
+BS_API size_t bs_mesh_vertex_count(const bs_mesh *m);
+/** @brief Number of triangles; 0 for NULL. @since 1.0 */
+BS_API size_t bs_mesh_triangle_count(const bs_mesh *m);
+/** @brief Number of triangle strips (0 unless built with BS_TESS_STRIPS, or for NULL). @since 1.0 */
+BS_API size_t bs_mesh_strip_count(const bs_mesh *m);
+/** @brief Total number of indices in all strips; 0 for NULL. @since 1.0 */
+BS_API size_t bs_mesh_strip_index_count(const bs_mesh *m);
+
+/**
+ * @brief Copy the vertex positions into 3 views (x, y, z) of bs_mesh_vertex_count() elements.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or xyz is NULL or a view's data is NULL or misaligned;
+ *         BS_ERR_SIZE if a view is too short (nothing is written then). With 0 vertices the views
+ *         are not read.
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_positions(const bs_mesh *m, const bs_view xyz[3]);
+
+/**
+ * @brief Copy the unit vertex normals into 3 views. Never NaN: where the surface has no normal at a
+ * vertex (a net degenerate to a line) the average of the adjacent triangles' normals is used, or
+ * (0,0,1) if that vanishes too.
+ * @return as bs_mesh_copy_positions().
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_normals(const bs_mesh *m, const bs_view nrm[3]);
+
+/**
+ * @brief Copy the vertex (u,v) parameters into 2 views. A vertex shared by several patches keeps the
+ * parameters on the patch it was evaluated on (the one with the lowest patch id among those that
+ * share it; see bs_mesh_copy_patch_ids()).
+ * @return as bs_mesh_copy_positions().
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_uv(const bs_mesh *m, const bs_view uv[2]);
+
+/**
+ * @brief Copy the per-vertex patch ids (the patch each vertex was evaluated on).
+ * @param[in]  m    the mesh.
+ * @param[out] ids  room for cap ids (not read when there are no vertices).
+ * @param[in]  cap  number of ids ids can hold.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or ids is NULL; BS_ERR_SIZE if cap < bs_mesh_vertex_count().
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_patch_ids(const bs_mesh *m, uint32_t *ids, size_t cap);
+
+/**
+ * @brief Copy the triangles as 3 * bs_mesh_triangle_count() vertex indices.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or idx is NULL; BS_ERR_SIZE if cap is too small.
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_triangles(const bs_mesh *m, uint32_t *idx, size_t cap);
+
+/**
+ * @brief Copy, per triangle, the id of the patch it tessellates.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or ids is NULL; BS_ERR_SIZE if cap < bs_mesh_triangle_count().
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_triangle_patch_ids(const bs_mesh *m, uint32_t *ids, size_t cap);
+
+/**
+ * @brief Copy the (u,v) of every triangle corner on the triangle's own patch (3 per triangle, in
+ * index order). Unlike bs_mesh_copy_uv() this is exact on shared sides, e.g. for texturing.
+ * @param[in]  m   the mesh.
+ * @param[out] uv  2 views of 3 * bs_mesh_triangle_count() elements.
+ * @return as bs_mesh_copy_positions().
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_corner_uv(const bs_mesh *m, const bs_view uv[2]);
+
+/**
+ * @brief Copy the triangle strips. Strip k is idx[start[k]] .. idx[start[k+1]-1]; its triangle i is
+ * (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i, so every triangle keeps the
+ * winding of bs_mesh_copy_triangles(). Strips may hold degenerate triangles (a repeated index) at
+ * poles; drop them. The non-degenerate triangles of all strips are exactly the triangle list.
+ * @param[in]  m          the mesh.
+ * @param[out] idx        room for idx_cap indices (bs_mesh_strip_index_count()).
+ * @param[in]  idx_cap    capacity of idx.
+ * @param[out] start      room for start_cap offsets (bs_mesh_strip_count() + 1).
+ * @param[in]  start_cap  capacity of start.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m, idx or start is NULL; BS_ERR_SIZE if a capacity is too small.
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_copy_strips(const bs_mesh *m, uint32_t *idx, size_t idx_cap, uint32_t *start,
+                                     size_t start_cap);
+
+/** Export format: Wavefront OBJ (v, vt, vn, f v/vt/vn), numbers with 17 significant digits. @since 1.0 */
+#define BS_MESH_OBJ 0
+/** Export format: PLY, binary little-endian, float32 properties and uint32 indices. @since 1.0 */
+#define BS_MESH_PLY 1
+/** Export format: PLY, ASCII, numbers with 9 significant digits. @since 1.0 */
+#define BS_MESH_PLY_ASCII 2
+/** Export format: binary STL (float32, facet normals from the triangles' geometry). @since 1.0 */
+#define BS_MESH_STL 3
+
+/**
+ * @brief Write a mesh to a file. Numbers are written the same in every C locale.
+ * @param[in] m       the mesh.
+ * @param[in] format  BS_MESH_OBJ, BS_MESH_PLY, BS_MESH_PLY_ASCII or BS_MESH_STL.
+ * @param[in] path    file name; the file is created or truncated.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or path is NULL or format is unknown; BS_ERR_IO if the
+ *         file cannot be opened or written (it may then be left partly written); BS_ERR_SIZE if the
+ *         mesh has more triangles than binary STL can count (UINT32_MAX).
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_write(const bs_mesh *m, int format, const char *path);
+
+/**
+ * @brief Write a mesh into memory: ask for the size with buf NULL, then copy into a buffer that
+ * large. The bytes are exactly those bs_mesh_write() puts in a file.
+ * @param[in]  m       the mesh.
+ * @param[in]  format  as for bs_mesh_write().
+ * @param[out] buf     NULL to ask for the size, or room for cap bytes.
+ * @param[in]  cap     capacity of buf (ignored when buf is NULL).
+ * @param[out] size    receives the number of bytes (needed, or written).
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or size is NULL or format is unknown; BS_ERR_SIZE if cap is
+ *         smaller than the size (nothing is written then, *size untouched) or for STL as above.
+ * @since 1.0
+ */
+BS_API bs_status bs_mesh_write_memory(const bs_mesh *m, int format, void *buf, size_t cap, size_t *size);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,88 @@
+#!/bin/sh
+# The tessellate and render commands: exit codes, outputs whose counts match what the tool
+# reports, valid PNG files (checked by png_check), the default teapot.png.
+# usage: test_cli_mesh.sh TOOL PNG_CHECK DATA_DIR WORK_DIR
+tool=$1 pngcheck=$2 data=$3 work=$4
+rm -rf "$work" && mkdir -p "$work" || exit 1
+fails=0 checks=0
+
+expect() {
+    code=$1 what=$2
+    shift 3
+    "$@" >"$work/out" 2>"$work/err"
+    got=$?
+    checks=$((checks + 1))
+    if [ "$got" -ne "$code" ]; then
+        fails=$((fails + 1))
+        echo "FAIL: $what: exit $got, expected $code"; cat "$work/err"
+    fi
+}
+check() {
+    checks=$((checks + 1))
+    if ! eval "$1"; then
+        fails=$((fails + 1))
+        echo "FAIL: $2"
+    fi
+}
+
+for cmd in tessellate render; do
+    expect 0 "$cmd --help" -- "$tool" $cmd --help
+    check "grep -q 'usage: bezsurf $cmd' '$work/out'" "$cmd help text"
+    check "grep -q 'Exit status' '$work/out'" "$cmd help lists exit codes"
+    expect 1 "$cmd bad option" -- "$tool" $cmd --bogus
+    check "grep -q '^bezsurf $cmd: ' '$work/err'" "$cmd one-line error"
+    expect 2 "$cmd missing file" -- "$tool" $cmd "$work/missing.bpt"
+    expect 2 "$cmd unknown builtin" -- "$tool" $cmd -b kettle
+    expect 1 "$cmd builtin without name" -- "$tool" $cmd -b
+    expect 1 "$cmd two inputs" -- "$tool" $cmd "$data/teapot.bpt" "$data/teacup.bpt"
+    printf '1\n3 3\n0 0\n' >"$work/bad.bpt"
+    expect 2 "$cmd malformed file" -- "$tool" $cmd "$work/bad.bpt"
+    check "grep -q 'bad.bpt:' '$work/err'" "$cmd parse error position"
+done
+
+# tessellate: formats by extension and by flag, counts as reported.
+expect 0 "tessellate obj" -- "$tool" tessellate -u 8 -o "$work/t.obj" "$data/teapot.bpt"
+check "grep -q '2082 vertices, 4032 triangles' '$work/out'" "uniform 8 counts"
+check "[ \$(grep -c '^v ' '$work/t.obj') -eq 2082 ] && [ \$(grep -c '^f ' '$work/t.obj') -eq 4032 ]" "OBJ lines"
+check "[ \$(grep -c '^vn ' '$work/t.obj') -eq 2082 ] && [ \$(grep -c '^vt ' '$work/t.obj') -eq 2082 ]" "OBJ vn/vt"
+expect 0 "tessellate stl" -- "$tool" tessellate -u 8 -o "$work/t.stl"
+check "[ \$(wc -c <'$work/t.stl') -eq \$((84 + 50 * 4032)) ]" "STL size"
+expect 0 "tessellate ply" -- "$tool" tessellate -u 4x6 -o "$work/t.ply" -b teacup
+check "head -c 40 '$work/t.ply' | grep -q 'binary_little_endian'" "PLY binary by extension"
+expect 0 "tessellate ply-ascii flag" -- "$tool" tessellate -f ply-ascii -t 0.05 -o "$work/a.out" -b teaspoon
+check "head -c 40 '$work/a.out' | grep -q 'format ascii'" "PLY ASCII by flag"
+expect 0 "tessellate stdin" -- sh -c "'$tool' tessellate -r 0.01 -s -o '$work/s.obj' - <'$data/teacup.bpt'"
+check "grep -q 'strips' '$work/out'" "strip count reported"
+expect 1 "tessellate bad rate" -- "$tool" tessellate -u 8y
+expect 1 "tessellate bad format" -- "$tool" tessellate -f dxf
+expect 1 "tessellate bad tolerance" -- "$tool" tessellate -t -1
+expect 2 "tessellate rate out of range" -- "$tool" tessellate -u 0 -o "$work/z.obj"
+expect 3 "tessellate unwritable" -- "$tool" tessellate -u 2 -o "$work/no/such/dir/x.obj"
+(cd "$work" && "$tool" tessellate -u 2 >/dev/null 2>&1)
+check "[ -s '$work/teapot.obj' ]" "default output teapot.obj"
+
+# render: default teapot.png in the working directory, sizes, options, valid PNGs.
+(cd "$work" && "$tool" render --size 96x64 --ss 1 >"$work/out" 2>"$work/err")
+rc=$?
+check "[ $rc -eq 0 ]" "render with no input"
+check "'$pngcheck' '$work/teapot.png' 96 64" "teapot.png valid"
+expect 0 "render teacup nets" -- "$tool" render -b teacup --nets --size 80x60 -a 30 -e 40 --up y -r 0.01 \
+    --color 1,0.5,0.25 -o "$work/cup.png"
+check "'$pngcheck' '$work/cup.png' 80 60" "cup.png valid"
+expect 0 "render file" -- "$tool" render --size 400x300 --ss 1 -o "$work/spoon.png" "$data/teaspoon.bpt"
+check "'$pngcheck' '$work/spoon.png' 400 300" "spoon.png valid (several deflate blocks)"
+expect 0 "render split patch" -- "$tool" render --patch 4 --split --nets --size 64x48 -o "$work/split.png"
+check "'$pngcheck' '$work/split.png' 64 48" "split.png valid"
+check "grep -q '64x48' '$work/out'" "render reports its size"
+expect 2 "render no such patch" -- "$tool" render --patch 32 -o "$work/none.png"
+expect 1 "render bad patch id" -- "$tool" render --patch x
+expect 1 "render bad size" -- "$tool" render --size 10x10
+expect 1 "render bad size text" -- "$tool" render --size 100
+expect 1 "render bad elevation" -- "$tool" render -e 91
+expect 1 "render bad up" -- "$tool" render --up x
+expect 1 "render bad colour" -- "$tool" render --color 1,2
+expect 1 "render bad ss" -- "$tool" render --ss 9
+expect 3 "render unwritable" -- "$tool" render --size 32x32 -o "$work/no/such/dir/x.png"
+
+echo "test_cli_mesh: $checks checks, $fails failures"
+[ "$fails" -eq 0 ]

@@ -1,0 +1,291 @@
+/* `bezsurf render`: shaded picture of a surface as a PNG, with no dependency. */
+#include "png.h"
+#include "raster.h"
+#include "cmds.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char usage[] =
+    "usage: bezsurf render [options] [FILE]\n"
+    "Render a surface from a .bpt FILE ('-': standard input; default: the built-in teapot)\n"
+    "to a PNG picture.\n"
+    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .png)\n"
+    "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
+    "      --size WxH        picture size in pixels (default 800x600, each 16..8192)\n"
+    "  -a, --azimuth DEG     camera azimuth around the up axis (default -60)\n"
+    "  -e, --elevation DEG   camera elevation above the horizon, -90..90 (default 25)\n"
+    "      --up y|z          the model's up axis (default z; y for the built-in teacup and teaspoon)\n"
+    "  -r, --relative F      tessellation tolerance as a fraction of the model's size (default 0.0002)\n"
+    "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
+    "      --nets            draw the patches' control nets over the surface\n"
+    "      --patch ID        render only patch ID\n"
+    "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
+    "                        the four sub-nets are drawn)\n"
+    "      --ss N            supersampling per axis, 1..4 (default 3)\n"
+    "  -h, --help            this text\n"
+    "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
+    "4 library failure.\n";
+
+static int bad_usage(const char *msg, const char *arg)
+{
+    return cli_fail("render", CLI_USAGE, "%s%s%s (try 'bezsurf render --help')", msg, arg ? ": " : "", arg ? arg : "");
+}
+
+typedef struct render_opts {
+    cli_input in;
+    const char *output;
+    size_t w, h, ss;
+    double azimuth, elevation, rel, color[3];
+    int up_y, up_given, nets, split;
+    size_t patch; /* (size_t)-1: all */
+} render_opts;
+
+static int parse_args(int argc, char **argv, render_opts *o)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+        int b = cli_take_builtin(argc, argv, &i, &o->in);
+        if (b < 0)
+            return CLI_USAGE;
+        if (b > 0)
+            continue;
+        if (cli_is_help(a)) {
+            fputs(usage, stdout);
+            return cli_finish("render");
+        }
+        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0) {
+            if (a[2] == 'n')
+                o->nets = 1;
+            else
+                o->split = 1;
+            continue;
+        }
+        if (a[0] != '-' || a[1] == '\0') {
+            if (o->in.path != NULL)
+                return bad_usage("more than one input", a);
+            o->in.path = a;
+            continue;
+        }
+        if (val == NULL)
+            return bad_usage("missing value for", a);
+        i++;
+        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            o->output = val;
+        } else if (strcmp(a, "--size") == 0) {
+            char buf[64];
+            snprintf(buf, sizeof buf, "%s", val);
+            char *x = strchr(buf, 'x');
+            if (x == NULL)
+                return bad_usage("bad size", val);
+            *x = '\0';
+            if (!cli_parse_size(buf, &o->w) || !cli_parse_size(x + 1, &o->h) || o->w < 16 ||
+                o->h < 16 || o->w > 8192 || o->h > 8192)
+                return bad_usage("bad size", val);
+        } else if (strcmp(a, "-a") == 0 || strcmp(a, "--azimuth") == 0) {
+            if (!cli_parse_double(val, &o->azimuth))
+                return bad_usage("bad azimuth", val);
+        } else if (strcmp(a, "-e") == 0 || strcmp(a, "--elevation") == 0) {
+            if (!cli_parse_double(val, &o->elevation) || fabs(o->elevation) > 90.0)
+                return bad_usage("bad elevation", val);
+        } else if (strcmp(a, "--up") == 0) {
+            if (strcmp(val, "y") != 0 && strcmp(val, "z") != 0)
+                return bad_usage("bad up axis", val);
+            o->up_y = val[0] == 'y';
+            o->up_given = 1;
+        } else if (strcmp(a, "-r") == 0 || strcmp(a, "--relative") == 0) {
+            if (!cli_parse_double(val, &o->rel) || !(o->rel > 0.0))
+                return bad_usage("bad tolerance", val);
+        } else if (strcmp(a, "--color") == 0) {
+            char buf[128], *p = buf;
+            snprintf(buf, sizeof buf, "%s", val);
+            for (int k = 0; k < 3; k++) {
+                char *comma = strchr(p, ',');
+                if ((comma == NULL) != (k == 2))
+                    return bad_usage("bad colour", val);
+                if (comma)
+                    *comma = '\0';
+                if (!cli_parse_double(p, &o->color[k]) || o->color[k] < 0.0 || o->color[k] > 1.0)
+                    return bad_usage("bad colour", val);
+                p = comma ? comma + 1 : p;
+            }
+        } else if (strcmp(a, "--patch") == 0) {
+            if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
+                return bad_usage("bad patch id", val);
+        } else if (strcmp(a, "--ss") == 0) {
+            if (!cli_parse_size(val, &o->ss) || o->ss < 1 || o->ss > 4)
+                return bad_usage("bad supersampling", val);
+        } else {
+            return bad_usage("unknown option", a);
+        }
+    }
+    return -1; /* go on */
+}
+
+/* Box of all control points (it contains the surface). */
+static void surface_box(const bs_surface *s, double lo[3], double hi[3])
+{
+    for (int c = 0; c < 3; c++) {
+        lo[c] = INFINITY;
+        hi[c] = -INFINITY;
+    }
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        const bs_patch *p = bs_surface_get(s, i);
+        size_t n = (bs_patch_degree_u(p) + 1) * (bs_patch_degree_v(p) + 1);
+        double *net = malloc(3 * n * sizeof(double));
+        if (net == NULL || bs_patch_get_ctrl(p, net, 3 * n, NULL, 0) != BS_OK) {
+            free(net);
+            continue;
+        }
+        for (size_t k = 0; k < n; k++)
+            for (int c = 0; c < 3; c++) {
+                lo[c] = fmin(lo[c], net[3 * k + (size_t)c]);
+                hi[c] = fmax(hi[c], net[3 * k + (size_t)c]);
+            }
+        free(net);
+    }
+}
+
+static void draw_nets(raster *r, const bs_surface *s)
+{
+    static const double ink[3] = {0.62, 0.08, 0.06}, dot[3] = {0.1, 0.1, 0.1};
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        const bs_patch *p = bs_surface_get(s, i);
+        size_t m = bs_patch_degree_u(p), n = bs_patch_degree_v(p), cnt = (m + 1) * (n + 1);
+        double *net = malloc(3 * cnt * sizeof(double));
+        if (net == NULL || bs_patch_get_ctrl(p, net, 3 * cnt, NULL, 0) != BS_OK) {
+            free(net);
+            continue;
+        }
+        for (size_t a = 0; a <= m; a++)
+            for (size_t b = 0; b <= n; b++) {
+                const double *x = net + 3 * (a * (n + 1) + b);
+                if (a < m)
+                    raster_line(r, x, net + 3 * ((a + 1) * (n + 1) + b), 1.5, ink);
+                if (b < n)
+                    raster_line(r, x, net + 3 * (a * (n + 1) + b + 1), 1.5, ink);
+                raster_line(r, x, x, 5.0, dot);
+            }
+        free(net);
+    }
+}
+
+/* Default output name: the input file's name without directory and extension, or the built-in's
+ * name ("surface" for standard input), followed by ext. */
+static void default_output(const cli_input *in, const char *ext, char *out, size_t cap)
+{
+    const char *base = in->builtin ? in->builtin : "teapot";
+    size_t len = strlen(base);
+    if (in->path != NULL && strcmp(in->path, "-") == 0) {
+        base = "surface";
+        len = strlen(base);
+    } else if (in->path != NULL) {
+        const char *slash = strrchr(in->path, '/');
+        base = slash ? slash + 1 : in->path;
+        const char *dot = strrchr(base, '.');
+        len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    }
+    snprintf(out, cap, "%.*s%s", (int)len, base, ext);
+}
+
+static int render(const render_opts *o, const bs_surface *s)
+{
+    bs_mesh *m = NULL;
+    bs_status st = bs_surface_tessellate_adaptive(s, o->rel, BS_TESS_RELATIVE, &m);
+    if (st != BS_OK) {
+        return cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+    }
+    size_t nv = bs_mesh_vertex_count(m), nt = bs_mesh_triangle_count(m);
+    double *pos = malloc(3 * nv * sizeof(double) + 1), *nrm = malloc(3 * nv * sizeof(double) + 1);
+    uint32_t *tri = malloc(3 * nt * sizeof(uint32_t) + 1);
+    unsigned char *rgb = malloc(o->w * o->h * 3);
+    int rc = CLI_INTERNAL;
+    raster r;
+    memset(&r, 0, sizeof r);
+    ptrdiff_t s3 = 3 * sizeof(double);
+    bs_view pv[3] = {{pos, nv, s3}, {pos + 1, nv, s3}, {pos + 2, nv, s3}};
+    bs_view nvw[3] = {{nrm, nv, s3}, {nrm + 1, nv, s3}, {nrm + 2, nv, s3}};
+    double lo[3], hi[3];
+    surface_box(s, lo, hi);
+    if (pos && nrm && tri && rgb && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
+        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK &&
+        raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi) == 0) {
+        raster_mesh(&r, pos, nrm, tri, nt, o->color);
+        if (o->nets)
+            draw_nets(&r, s);
+        raster_finish(&r, rgb);
+        if (png_write_rgb(o->output, rgb, o->w, o->h) == 0) {
+            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+            rc = cli_finish("render");
+        } else {
+            rc = cli_fail("render", CLI_OUTPUT, "cannot write %s", o->output);
+        }
+    } else {
+        cli_fail("render", CLI_INTERNAL, "out of memory");
+    }
+    raster_free(&r);
+    free(pos);
+    free(nrm);
+    free(tri);
+    free(rgb);
+    bs_mesh_destroy(m);
+    return rc;
+}
+
+/* The patches to draw: all or --patch ID, each split in four with --split. */
+static int select_patches(const render_opts *o, const bs_surface *s, bs_surface **out)
+{
+    if (o->patch != (size_t)-1 && o->patch >= bs_surface_count(s))
+        return cli_fail("render", CLI_INPUT, "no patch %zu (the surface has %zu)", o->patch, bs_surface_count(s));
+    bs_status st = bs_surface_create(out);
+    for (size_t i = 0; st == BS_OK && i < bs_surface_count(s); i++) {
+        if (o->patch != (size_t)-1 && i != o->patch)
+            continue;
+        const bs_patch *p = bs_surface_get(s, i);
+        if (!o->split) {
+            st = bs_surface_add(*out, p, NULL);
+            continue;
+        }
+        bs_patch *quarter[4] = {NULL, NULL, NULL, NULL};
+        st = bs_patch_split4(p, 0.5, 0.5, quarter);
+        for (int k = 0; k < 4; k++) {
+            if (st == BS_OK)
+                st = bs_surface_add(*out, quarter[k], NULL);
+            bs_patch_destroy(quarter[k]);
+        }
+    }
+    return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+}
+
+int cmd_render(int argc, char **argv)
+{
+    render_opts o = {{NULL, "teapot"}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
+                     (size_t)-1};
+    int rc = parse_args(argc, argv, &o);
+    if (rc >= 0)
+        return rc;
+    if (!o.up_given && o.in.path == NULL && strcmp(o.in.builtin, "teapot") != 0)
+        o.up_y = 1; /* the teacup and the teaspoon of the tea set are modelled with y up */
+    char outbuf[1024];
+    if (o.output == NULL) {
+        default_output(&o.in, ".png", outbuf, sizeof outbuf);
+        o.output = outbuf;
+    }
+    bs_surface *s = NULL;
+    rc = cli_load("render", &o.in, &s);
+    if (rc != CLI_OK)
+        return rc;
+    if (bs_surface_dim(s) != 3) {
+        bs_surface_destroy(s);
+        return cli_fail("render", CLI_INPUT, "the surface is not 3-D");
+    }
+    bs_surface *picked = NULL;
+    rc = select_patches(&o, s, &picked);
+    if (rc == CLI_OK)
+        rc = render(&o, picked);
+    bs_surface_destroy(picked);
+    bs_surface_destroy(s);
+    return rc;
+}

@@ -1,0 +1,160 @@
+/* `bezsurf tessellate`: surface to triangle mesh file (OBJ, PLY, STL). */
+#include "cmds.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static const char usage[] =
+    "usage: bezsurf tessellate [options] [FILE]\n"
+    "Tessellate a surface from a .bpt FILE ('-': standard input; default: the built-in\n"
+    "teapot) into a triangle mesh file.\n"
+    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .obj)\n"
+    "  -f, --format FMT      obj, ply (binary), ply-ascii or stl (default: from the output's\n"
+    "                        extension .obj, .ply or .stl; else obj)\n"
+    "  -u, --uniform N[xM]   N x M segments per patch (1..1024)\n"
+    "  -t, --tolerance D     adaptive: chordal tolerance D in model units\n"
+    "  -r, --relative F      adaptive: tolerance F times the control-net box diagonal\n"
+    "                        (default when no rate is given: -r 0.001)\n"
+    "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
+    "  -s, --strips          also build triangle strips (reported, not written)\n"
+    "  -h, --help            this text\n"
+    "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
+    "4 library failure.\n";
+
+/* Default output name: the input file's name without directory and extension, or the built-in's
+ * name ("surface" for standard input), followed by ext. */
+static void default_output(const cli_input *in, const char *ext, char *out, size_t cap)
+{
+    const char *base = in->builtin ? in->builtin : "teapot";
+    size_t len = strlen(base);
+    if (in->path != NULL && strcmp(in->path, "-") == 0) {
+        base = "surface";
+        len = strlen(base);
+    } else if (in->path != NULL) {
+        const char *slash = strrchr(in->path, '/');
+        base = slash ? slash + 1 : in->path;
+        const char *dot = strrchr(base, '.');
+        len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    }
+    snprintf(out, cap, "%.*s%s", (int)len, base, ext);
+}
+
+static int format_of(const char *name, int *format)
+{
+    static const struct { const char *name; int format; } table[] = {
+        {"obj", BS_MESH_OBJ}, {"ply", BS_MESH_PLY}, {"ply-ascii", BS_MESH_PLY_ASCII}, {"stl", BS_MESH_STL}};
+    for (size_t k = 0; k < sizeof table / sizeof table[0]; k++)
+        if (strcmp(name, table[k].name) == 0) {
+            *format = table[k].format;
+            return 1;
+        }
+    return 0;
+}
+
+static int format_of_path(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    int format = BS_MESH_OBJ;
+    if (dot != NULL && (strcmp(dot, ".ply") == 0 || strcmp(dot, ".PLY") == 0))
+        format = BS_MESH_PLY;
+    else if (dot != NULL && (strcmp(dot, ".stl") == 0 || strcmp(dot, ".STL") == 0))
+        format = BS_MESH_STL;
+    return format;
+}
+
+static int bad_usage(const char *msg, const char *arg)
+{
+    return cli_fail("tessellate", CLI_USAGE, "%s%s%s (try 'bezsurf tessellate --help')", msg, arg ? ": " : "",
+                    arg ? arg : "");
+}
+
+int cmd_tessellate(int argc, char **argv)
+{
+    cli_input in = {NULL, "teapot"};
+    const char *output = NULL;
+    int format = -1, mode = 0 /* 0 relative, 1 absolute, 2 uniform */, flags = 0;
+    double tol = 1e-3;
+    size_t nu = 0, nv = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+        int takes = 1, b = cli_take_builtin(argc, argv, &i, &in);
+        if (b < 0)
+            return CLI_USAGE;
+        if (b > 0)
+            continue;
+        if (cli_is_help(a)) {
+            fputs(usage, stdout);
+            return cli_finish("tessellate");
+        } else if (strcmp(a, "-s") == 0 || strcmp(a, "--strips") == 0) {
+            flags |= BS_TESS_STRIPS;
+            takes = 0;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            if (val == NULL)
+                return bad_usage("missing value for", a);
+            if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+                output = val;
+            } else if (strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0) {
+                if (!format_of(val, &format))
+                    return bad_usage("unknown format", val);
+            } else if (strcmp(a, "-u") == 0 || strcmp(a, "--uniform") == 0) {
+                char buf[64];
+                snprintf(buf, sizeof buf, "%s", val);
+                char *x = strchr(buf, 'x');
+                if (x != NULL)
+                    *x = '\0';
+                if (!cli_parse_size(buf, &nu) || (x && !cli_parse_size(x + 1, &nv)))
+                    return bad_usage("bad rate", val);
+                if (x == NULL)
+                    nv = nu;
+                mode = 2;
+            } else if (strcmp(a, "-t") == 0 || strcmp(a, "--tolerance") == 0 || strcmp(a, "-r") == 0 ||
+                       strcmp(a, "--relative") == 0) {
+                if (!cli_parse_double(val, &tol) || !(tol > 0.0))
+                    return bad_usage("bad tolerance", val);
+                mode = (a[1] == 't' || a[2] == 't') ? 1 : 0;
+            } else {
+                return bad_usage("unknown option", a);
+            }
+        } else {
+            if (in.path != NULL)
+                return bad_usage("more than one input", a);
+            in.path = a;
+            takes = 0;
+        }
+        i += takes;
+    }
+    char outbuf[1024];
+    if (output == NULL) {
+        default_output(&in, format == BS_MESH_PLY || format == BS_MESH_PLY_ASCII ? ".ply"
+                                                     : format == BS_MESH_STL ? ".stl" : ".obj",
+                                     outbuf, sizeof outbuf);
+        output = outbuf;
+    }
+    if (format < 0)
+        format = format_of_path(output);
+    bs_surface *s = NULL;
+    int rc = cli_load("tessellate", &in, &s);
+    if (rc != CLI_OK)
+        return rc;
+    bs_mesh *m = NULL;
+    bs_status st = mode == 2 ? bs_surface_tessellate_uniform(s, nu, nv, flags, &m)
+                             : bs_surface_tessellate_adaptive(s, tol, flags | (mode == 0 ? BS_TESS_RELATIVE : 0), &m);
+    bs_surface_destroy(s);
+    if (st != BS_OK) {
+        /* A surface that is not 3-D, or a rate out of range, is bad input; the rest is the library. */
+        return cli_fail("tessellate", st == BS_ERR_DIMENSION || st == BS_ERR_DOMAIN ? CLI_INPUT : CLI_INTERNAL, "%s",
+                        bs_status_string(st));
+    }
+    st = bs_mesh_write(m, format, output);
+    if (st != BS_OK) {
+        bs_mesh_destroy(m);
+        return cli_fail("tessellate", CLI_OUTPUT, "%s: %s", output, bs_status_string(st));
+    }
+    printf("%s: %zu vertices, %zu triangles", output, bs_mesh_vertex_count(m), bs_mesh_triangle_count(m));
+    if (flags & BS_TESS_STRIPS)
+        printf(", %zu strips", bs_mesh_strip_count(m));
+    printf("\n");
+    bs_mesh_destroy(m);
+    return cli_finish("tessellate");
+}

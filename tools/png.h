@@ -1,0 +1,19 @@
+/* A dependency-free PNG writer: 8-bit RGB, filter 0, zlib stream of stored (uncompressed) deflate
+ * blocks, CRC-32 per chunk and Adler-32 over the image data. */
+#ifndef BEZSURF_TOOLS_PNG_H
+#define BEZSURF_TOOLS_PNG_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* CRC-32 (ISO 3309, as PNG uses it) of n bytes, continued from crc (start with 0). */
+uint32_t png_crc32(uint32_t crc, const unsigned char *p, size_t n);
+
+/* Adler-32 of n bytes, continued from adler (start with 1). */
+uint32_t png_adler32(uint32_t adler, const unsigned char *p, size_t n);
+
+/* Write w x h pixels, 3 bytes (R, G, B) each, row by row from the top. 0 on success, -1 if the
+ * file cannot be written or the size is out of range. */
+int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h);
+
+#endif

@@ -1,0 +1,38 @@
+/* A small z-buffer rasterizer for the `render` command: orthographic view from an azimuth and an
+ * elevation, per-pixel interpolated normals, two-sided Lambert + Phong (Blinn) shading, lines drawn
+ * over the surface with the same depth test, and supersampling for smooth edges. */
+#ifndef BEZSURF_TOOLS_RASTER_H
+#define BEZSURF_TOOLS_RASTER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct raster {
+    size_t w, h, ss;            /* output size and supersampling factor */
+    size_t W, H;                /* internal size, w*ss x h*ss */
+    float *color;               /* W*H*3, linear 0..1 */
+    float *depth;               /* W*H, larger is nearer */
+    double right[3], up[3], back[3], center[3];
+    double scale, ox, oy;       /* screen = scale * (camera x, y) + offset */
+    int up_y;                   /* the model's up axis is y (else z) */
+} raster;
+
+/* Set up the image and a camera looking at the box lo..hi (model coordinates) from the given
+ * azimuth and elevation in degrees, fitted to the frame. 0 on success, -1 if out of memory. */
+int raster_init(raster *r, size_t w, size_t h, size_t ss, double azimuth, double elevation, int up_y,
+                const double lo[3], const double hi[3]);
+
+/* Draw triangles (packed positions and unit normals, 3 indices each) in a base colour (0..1). */
+void raster_mesh(raster *r, const double *pos, const double *nrm, const uint32_t *tri, size_t ntri,
+                 const double rgb[3]);
+
+/* Draw a 3-D line segment of the given width (output pixels) and colour; depth-tested against the
+ * surface with a small bias so lines on it stay visible. */
+void raster_line(raster *r, const double a[3], const double b[3], double width, const double rgb[3]);
+
+/* Resolve to 8-bit sRGB-ish output, w*h*3 bytes. */
+void raster_finish(const raster *r, unsigned char *rgb);
+
+void raster_free(raster *r);
+
+#endif
