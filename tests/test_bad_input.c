@@ -514,6 +514,68 @@ static void test_surfaces(void)
     NULLED(hs);
 }
 
+static void test_meshes(void)
+{
+    bs_mesh *m = NULL, *hm = (bs_mesh *)(void *)HSENT;
+    CHECK_STATUS(bs_surface_tessellate_uniform(S3, 2, 2, 0, &m), BS_OK);
+    const double bad_tol[5] = {0.0, -1.0, NAN, INFINITY, -INFINITY};
+#define MESH_BAD(fn, cls, expected, call)                                            \
+    do {                                                                             \
+        hm = (bs_mesh *)(void *)HSENT;                                               \
+        BAD(fn, cls, expected, call);                                                \
+        CHECKF(hm == NULL, "%s [%s]: mesh handle not NULL", fn, cls);                \
+    } while (0)
+    MESH_BAD("bs_surface_tessellate_uniform", "NULL handle", BS_ERR_INVALID_ARG,
+             bs_surface_tessellate_uniform(NULL, 2, 2, 0, &hm));
+    BAD("bs_surface_tessellate_uniform", "NULL handle", BS_ERR_INVALID_ARG,
+        bs_surface_tessellate_uniform(S3, 2, 2, 0, NULL));
+    MESH_BAD("bs_surface_tessellate_uniform", "bad flags", BS_ERR_INVALID_ARG,
+             bs_surface_tessellate_uniform(S3, 2, 2, 64, &hm));
+    MESH_BAD("bs_surface_tessellate_uniform", "dim out of range", BS_ERR_DIMENSION,
+             bs_surface_tessellate_uniform(S2, 2, 2, 0, &hm));
+    MESH_BAD("bs_surface_tessellate_uniform", "count too small", BS_ERR_DOMAIN,
+             bs_surface_tessellate_uniform(S3, 0, 2, 0, &hm));
+    MESH_BAD("bs_surface_tessellate_uniform", "rate > max", BS_ERR_DOMAIN,
+             bs_surface_tessellate_uniform(S3, 2, BS_TESS_MAX_RATE + 1, 0, &hm));
+    MESH_BAD("bs_surface_tessellate_uniform", "rate > max", BS_ERR_DOMAIN,
+             bs_surface_tessellate_uniform(S3, SIZE_MAX, 2, 0, &hm));
+    MESH_BAD("bs_surface_tessellate_adaptive", "NULL handle", BS_ERR_INVALID_ARG,
+             bs_surface_tessellate_adaptive(NULL, 0.1, 0, &hm));
+    MESH_BAD("bs_surface_tessellate_adaptive", "bad flags", BS_ERR_INVALID_ARG,
+             bs_surface_tessellate_adaptive(S3, 0.1, -1, &hm));
+    MESH_BAD("bs_surface_tessellate_adaptive", "dim out of range", BS_ERR_DIMENSION,
+             bs_surface_tessellate_adaptive(S2, 0.1, 0, &hm));
+    for (int k = 0; k < 5; k++)
+        MESH_BAD("bs_surface_tessellate_adaptive", "NaN/Inf parameters", BS_ERR_DOMAIN,
+                 bs_surface_tessellate_adaptive(S3, bad_tol[k], BS_TESS_RELATIVE, &hm));
+    uint32_t ids[N + 2 * SLACK];
+    memset(ids, 0x5C, sizeof ids);
+    size_t nvtx = bs_mesh_vertex_count(m);
+    CHECK(nvtx > N && bs_mesh_vertex_count(NULL) == 0 && bs_mesh_triangle_count(NULL) == 0);
+    BAD("bs_mesh_copy_positions", "NULL handle", BS_ERR_INVALID_ARG, bs_mesh_copy_positions(NULL, ov[0]));
+    BAD("bs_mesh_copy_positions", "NULL views", BS_ERR_INVALID_ARG, bs_mesh_copy_positions(m, NULL));
+    BAD("bs_mesh_copy_positions", "count too small", BS_ERR_SIZE, bs_mesh_copy_positions(m, ov[0]));
+    BAD("bs_mesh_copy_normals", "count too small", BS_ERR_SIZE, bs_mesh_copy_normals(m, ov[1]));
+    BAD("bs_mesh_copy_uv", "count too small", BS_ERR_SIZE, bs_mesh_copy_uv(m, ov[2]));
+    BAD("bs_mesh_copy_corner_uv", "count too small", BS_ERR_SIZE, bs_mesh_copy_corner_uv(m, ov[2]));
+    BAD("bs_mesh_copy_patch_ids", "NULL views", BS_ERR_INVALID_ARG, bs_mesh_copy_patch_ids(m, NULL, 99));
+    BAD("bs_mesh_copy_patch_ids", "count too small", BS_ERR_SIZE, bs_mesh_copy_patch_ids(m, ids, N));
+    BAD("bs_mesh_copy_triangles", "count too small", BS_ERR_SIZE, bs_mesh_copy_triangles(m, ids, N));
+    BAD("bs_mesh_copy_triangle_patch_ids", "count too small", BS_ERR_SIZE, bs_mesh_copy_triangle_patch_ids(m, ids, 1));
+    BAD("bs_mesh_copy_strips", "NULL handle", BS_ERR_INVALID_ARG, bs_mesh_copy_strips(NULL, ids, 4, ids, 4));
+    for (size_t k = 0; k < sizeof ids / sizeof ids[0]; k++)
+        CHECK(ids[k] == 0x5C5C5C5Cu);
+    BAD("bs_mesh_write_memory", "NULL handle", BS_ERR_INVALID_ARG, bs_mesh_write_memory(NULL, 0, tbuf, 10, &nvtx));
+    BAD("bs_mesh_write_memory", "bad format", BS_ERR_INVALID_ARG, bs_mesh_write_memory(m, 99, tbuf, 10, &nvtx));
+    BAD("bs_mesh_write_memory", "count too small", BS_ERR_SIZE, bs_mesh_write_memory(m, BS_MESH_PLY, tbuf, 10, &nvtx));
+    BAD("bs_mesh_write", "NULL views", BS_ERR_INVALID_ARG, bs_mesh_write(m, BS_MESH_OBJ, NULL));
+    BAD("bs_mesh_write", "bad format", BS_ERR_INVALID_ARG, bs_mesh_write(m, -1, "x.obj"));
+    BAD("bs_mesh_write", "I/O failure", BS_ERR_IO, bs_mesh_write(m, BS_MESH_STL, "/nonexistent-directory/x.stl"));
+    bs_mesh_destroy(m);
+    bs_mesh_destroy(NULL);
+#undef MESH_BAD
+}
+
 /* Truncated and hostile .bpt texts: each one BS_ERR_PARSE with a position, no surface. */
 static void test_hostile_bpt(void)
 {
@@ -607,6 +669,7 @@ int main(void)
     test_constructions();
     test_surfaces();
     test_hostile_bpt();
+    test_meshes();
     bs_patch_destroy(P3);
     bs_patch_destroy(R3);
     bs_patch_destroy(P2);

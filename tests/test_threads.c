@@ -1,6 +1,6 @@
 /* Eight threads share one rational patch and one surface (the built-in teapot) and run every
  * reading function on them at once: scattered evaluation, derivatives, normals, grids, surface
- * evaluation, split, sub-patch, .bpt writing and the continuity report. Every thread's results
+ * evaluation, split, sub-patch, .bpt writing, the continuity report and tessellation. Every thread's results
  * must be bit-identical to a serial run. Built with -fsanitize=thread by .ci/tsan.sh, this is
  * also the data-race test. */
 #include "harness.h"
@@ -32,6 +32,9 @@ typedef struct results {
     size_t text_size, n_edges, n_open;
     char text[16384];
     bs_edge_continuity edges[64];
+    size_t mesh_vertices, mesh_triangles;
+    double mesh_xyz[3][2048];
+    uint32_t mesh_tri[3 * 4096];
     int failures; /* calls that did not return BS_OK */
 } results;
 
@@ -76,6 +79,16 @@ static void run(results *r)
     bs_patch_destroy(hi);
     bs_patch_destroy(sub);
     r->failures += bs_surface_write_bpt(shared_surface, r->text, sizeof r->text, &r->text_size) != BS_OK;
+    bs_mesh *mesh = NULL;
+    r->failures += bs_surface_tessellate_uniform(shared_surface, 4, 3, 0, &mesh) != BS_OK;
+    r->mesh_vertices = bs_mesh_vertex_count(mesh);
+    r->mesh_triangles = bs_mesh_triangle_count(mesh);
+    bs_view mv[3];
+    for (int i = 0; i < 3; i++)
+        mv[i] = (bs_view){r->mesh_xyz[i], 2048, 0};
+    r->failures += bs_mesh_copy_positions(mesh, mv) != BS_OK;
+    r->failures += bs_mesh_copy_triangles(mesh, r->mesh_tri, 3 * 4096) != BS_OK;
+    bs_mesh_destroy(mesh);
     r->failures += bs_surface_continuity(shared_surface, 1e-6, 4, r->edges, 64, &r->n_edges, NULL, 0,
                                          &r->n_open) != BS_OK;
 }

@@ -268,6 +268,33 @@ static bs_status op_continuity(void)
     return st;
 }
 
+static bs_status op_tessellate(void)
+{
+    bs_mesh *m = (bs_mesh *)(void *)HSENT;
+    bs_status st = bs_surface_tessellate_uniform(TEAPOT, 3, 2, BS_TESS_STRIPS, &m);
+    if (st != BS_OK) {
+        CHECK(m == NULL);
+        return st;
+    }
+    size_t size = 0;
+    static char buf[1 << 17];
+    for (int f = BS_MESH_OBJ; f <= BS_MESH_STL && st == BS_OK; f++)
+        st = bs_mesh_write_memory(m, f, buf, sizeof buf, &size);
+    bs_mesh_destroy(m);
+    return st;
+}
+
+static bs_status op_tessellate_adaptive(void)
+{
+    bs_mesh *m = (bs_mesh *)(void *)HSENT;
+    bs_status st = bs_surface_tessellate_adaptive(TEAPOT, 0.05, 0, &m);
+    if (st != BS_OK)
+        CHECK(m == NULL);
+    else
+        bs_mesh_destroy(m);
+    return st;
+}
+
 typedef struct op {
     const char *name;
     op_fn fn;
@@ -297,6 +324,8 @@ static const op ops[] = {
     {"bs_surface_write_bpt", op_write_bpt, 1},
     {"bs_surface_write_bpt_file", op_write_bpt_file, 0},
     {"bs_surface_continuity", op_continuity, 0},
+    {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
+    {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
 };
 
 int main(void)

@@ -465,6 +465,24 @@ static void op_surface(state *st, reader *r)
     oset_make(&pos, r, n);
     bs_status s = bs_surface_eval(sf, n, ids, &u.v, &v.v, pos.v, NULL, NULL);
     REQUIRE(oset_clean(&pos, bs_patch_dim(st->p), s == BS_OK ? n : 0));
+    if (bs_patch_dim(st->p) == 3) {
+        /* tessellation: small rates (and 0, invalid), or an adaptive tolerance of any value */
+        bs_mesh *mesh = (bs_mesh *)(void *)NOT_SET;
+        unsigned how = rd_byte(r);
+        size_t ru = rd_byte(r) % 9, rv = rd_byte(r) % 9;
+        double tol = rd_value(r);
+        bs_status ts = how & 1 ? bs_surface_tessellate_uniform(sf, ru, rv, (int)(how >> 1) % 4, &mesh)
+                               : bs_surface_tessellate_adaptive(sf, tol, (int)(how >> 1) % 4, &mesh);
+        REQUIRE(ts == BS_OK ? mesh != NULL : mesh == NULL);
+        if (ts == BS_OK && st->tame && bs_mesh_vertex_count(mesh) <= 4096) {
+            static double xyz[3][4096];
+            bs_view mv[3] = {{xyz[0], 4096, 0}, {xyz[1], 4096, 0}, {xyz[2], 4096, 0}};
+            REQUIRE(bs_mesh_copy_positions(mesh, mv) == BS_OK);
+            for (size_t k = 0; k < bs_mesh_vertex_count(mesh); k++)
+                REQUIRE(isfinite(xyz[0][k]) && isfinite(xyz[1][k]) && isfinite(xyz[2][k]));
+        }
+        bs_mesh_destroy(ts == BS_OK ? mesh : NULL);
+    }
     size_t need = 0;
     if (bs_patch_dim(st->p) == 3 && bs_surface_write_bpt(sf, NULL, 0, &need) == BS_OK) {
         char *text = malloc(need);
