@@ -25,8 +25,13 @@ for t in tests:
     start = time.time()
     r = subprocess.run(vg + t["command"], cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     skip = props.get("SKIP_RETURN_CODE")
-    ok = r.returncode == 0 or (skip is not None and r.returncode == int(skip))
-    print(f"{'ok  ' if ok else 'FAIL'} {t['name']:<28} {time.time() - start:6.1f}s")
+    # valgrind exits 99 on a memory error or leak. A test's own failed checks are not memcheck's
+    # verdict (valgrind runs long double at double precision, which accuracy tests notice); the
+    # ordinary test run judges those.
+    ok = r.returncode != 99
+    note = "" if r.returncode == 0 or (skip is not None and r.returncode == int(skip)) else \
+        f" (test exit {r.returncode} under valgrind: no memory error)"
+    print(f"{'ok  ' if ok else 'FAIL'} {t['name']:<28} {time.time() - start:6.1f}s{note}")
     if not ok:
         failed.append(t["name"])
         print(r.stdout[-4000:])

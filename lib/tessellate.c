@@ -376,8 +376,9 @@ static bs_status plan(tess *t)
         nslot += off;
     }
     t->nslot = nslot;
-    t->parent = malloc(nslot * sizeof(size_t));
-    t->slot_vert = malloc(nslot * sizeof(uint32_t));
+    /* at least one element: malloc(0) may return NULL, which is not a failure */
+    t->parent = malloc((nslot ? nslot : 1) * sizeof(size_t));
+    t->slot_vert = malloc((nslot ? nslot : 1) * sizeof(uint32_t));
     if (t->parent == NULL || t->slot_vert == NULL)
         return BS_ERR_NO_MEMORY;
     for (size_t k = 0; k < nslot; k++)
@@ -437,7 +438,7 @@ static bs_status evaluate(tess *t)
                 if (uf_find(t->parent, slot) != slot)
                     continue;
                 uint32_t id = t->slot_vert[slot];
-                side_param(pl, s, k, &t->uv[2 * id], &t->uv[2 * id + 1]);
+                side_param(pl, s, k, &t->uv[2 * (size_t)id], &t->uv[2 * (size_t)id + 1]);
                 t->vpatch[id] = (uint32_t)p;
                 first = id < first ? id : first;
                 last = id > last ? id : last;
@@ -445,8 +446,8 @@ static bs_status evaluate(tess *t)
         for (size_t i = 1; i < pl->gu; i++)
             for (size_t j = 1; j < pl->gv; j++) {
                 uint32_t id = grid_vertex(t, pl, i, j);
-                t->uv[2 * id] = grid_param(i, pl->gu);
-                t->uv[2 * id + 1] = grid_param(j, pl->gv);
+                t->uv[2 * (size_t)id] = grid_param(i, pl->gu);
+                t->uv[2 * (size_t)id + 1] = grid_param(j, pl->gv);
                 t->vpatch[id] = (uint32_t)p;
                 first = id < first ? id : first;
                 last = id > last ? id : last;
