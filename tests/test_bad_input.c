@@ -572,7 +572,15 @@ static void test_meshes(void)
     BAD("bs_mesh_write", "bad format", BS_ERR_INVALID_ARG, bs_mesh_write(m, -1, "x.obj"));
     BAD("bs_mesh_write", "I/O failure", BS_ERR_IO, bs_mesh_write(m, BS_MESH_STL, "/nonexistent-directory/x.stl"));
     bs_mesh_destroy(m);
+    /* queries and destruction of a NULL mesh: neutral values, no crash */
     bs_mesh_destroy(NULL);
+    CHECK(bs_mesh_strip_count(NULL) == 0 && bs_mesh_strip_index_count(NULL) == 0);
+    note(fn_seen, &n_fn, "bs_mesh_destroy");
+    note(fn_seen, &n_fn, "bs_mesh_vertex_count");
+    note(fn_seen, &n_fn, "bs_mesh_triangle_count");
+    note(fn_seen, &n_fn, "bs_mesh_strip_count");
+    note(fn_seen, &n_fn, "bs_mesh_strip_index_count");
+    n_cases += 5;
 #undef MESH_BAD
 }
 
