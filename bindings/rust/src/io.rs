@@ -1,0 +1,107 @@
+//! The .bpt text format and the built-in tea set.
+
+use std::ffi::{CStr, CString};
+use std::os::raw::c_char;
+use std::path::Path;
+use std::ptr;
+
+use crate::error::{check, Error, Result};
+use crate::surface::Surface;
+use crate::sys;
+
+fn empty_parse_error() -> sys::bs_parse_error {
+    sys::bs_parse_error { line: 0, column: 0, message: [0; 96] }
+}
+
+/// A path as the C string `fopen` receives; a NUL byte inside it is `InvalidArg`.
+pub(crate) fn c_path(path: &Path) -> Result<CString> {
+    #[cfg(unix)]
+    let bytes = {
+        use std::os::unix::ffi::OsStrExt;
+        path.as_os_str().as_bytes().to_vec()
+    };
+    #[cfg(not(unix))]
+    let bytes = path.to_str().ok_or_else(|| Error::from_code(sys::BS_ERR_INVALID_ARG))?.as_bytes().to_vec();
+    CString::new(bytes).map_err(|_| Error::from_code(sys::BS_ERR_INVALID_ARG))
+}
+
+/// Runs a reader and turns its status and parse error into a surface or an [`Error`] with
+/// [`position`](Error::position) and [`detail`](Error::detail).
+fn read_with(
+    f: impl FnOnce(*mut sys::bs_parse_error, *mut *mut sys::bs_surface) -> sys::bs_status,
+) -> Result<Surface> {
+    let mut err = empty_parse_error();
+    let mut out = ptr::null_mut();
+    let code = f(&mut err, &mut out);
+    if code < 0 {
+        return Err(match code {
+            sys::BS_ERR_PARSE | sys::BS_ERR_IO => Error::with_parse_error(code, &err),
+            _ => Error::from_code(code),
+        });
+    }
+    // SAFETY: on success the reader returned a new surface that we now own.
+    Ok(unsafe { Surface::from_raw(out) })
+}
+
+impl Surface {
+    /// Parses .bpt text (`bs_surface_read_bpt`) into a surface of 3-D patches. `Parse` errors
+    /// carry the line, column and reason.
+    pub fn read_bpt(text: impl AsRef<[u8]>) -> Result<Surface> {
+        let text = text.as_ref();
+        // SAFETY: text holds len bytes; err and out are valid.
+        read_with(|err, out| unsafe {
+            sys::bs_surface_read_bpt(text.as_ptr() as *const c_char, text.len(), err, out)
+        })
+    }
+
+    /// Reads a .bpt file (`bs_surface_read_bpt_file`); `Io` if it cannot be read.
+    pub fn read_bpt_file(path: impl AsRef<Path>) -> Result<Surface> {
+        let path = c_path(path.as_ref())?;
+        // SAFETY: path is NUL-terminated; err and out are valid.
+        read_with(|err, out| unsafe { sys::bs_surface_read_bpt_file(path.as_ptr(), err, out) })
+    }
+
+    /// The surface as .bpt text (`bs_surface_write_bpt`); reading it back gives every control
+    /// point and weight bit for bit. `Dimension` if the patches are not 3-D.
+    pub fn write_bpt(&self) -> Result<String> {
+        let mut size = 0usize;
+        // SAFETY: a NULL buffer asks for the size only.
+        check(unsafe { sys::bs_surface_write_bpt(self.as_ptr(), ptr::null_mut(), 0, &mut size) })?;
+        let mut buf = vec![0u8; size];
+        // SAFETY: buf holds size bytes.
+        check(unsafe {
+            sys::bs_surface_write_bpt(self.as_ptr(), buf.as_mut_ptr() as *mut c_char, size, &mut size)
+        })?;
+        buf.truncate(size.saturating_sub(1)); // the final NUL
+                                              // The writer produces ASCII only.
+        Ok(String::from_utf8_lossy(&buf).into_owned())
+    }
+
+    /// Writes the surface as a .bpt file (`bs_surface_write_bpt_file`); `Io` on failure.
+    pub fn write_bpt_file(&self, path: impl AsRef<Path>) -> Result<()> {
+        let path = c_path(path.as_ref())?;
+        // SAFETY: self is live; path is NUL-terminated.
+        check(unsafe { sys::bs_surface_write_bpt_file(self.as_ptr(), path.as_ptr()) })
+    }
+
+    /// One of the built-in surfaces (`bs_surface_create_builtin`): "teapot", "teacup" or
+    /// "teaspoon" (see [`builtin_names`]). An unknown name is `InvalidArg`.
+    pub fn builtin(name: &str) -> Result<Surface> {
+        let name = CString::new(name).map_err(|_| Error::from_code(sys::BS_ERR_INVALID_ARG))?;
+        let mut out = ptr::null_mut();
+        // SAFETY: name is NUL-terminated; out is valid.
+        check(unsafe { sys::bs_surface_create_builtin(name.as_ptr(), &mut out) })?;
+        // SAFETY: on success out is a new surface that we now own.
+        Ok(unsafe { Surface::from_raw(out) })
+    }
+}
+
+/// The names of the built-in surfaces (`bs_builtin_name`).
+pub fn builtin_names() -> Vec<&'static str> {
+    (0..)
+        // SAFETY: any index is allowed; the result is NULL or a static NUL-terminated string.
+        .map(|i| unsafe { sys::bs_builtin_name(i) })
+        .take_while(|p| !p.is_null())
+        .map(|p| unsafe { CStr::from_ptr(p) }.to_str().unwrap_or(""))
+        .collect()
+}

@@ -1,0 +1,310 @@
+//! Triangle meshes made by tessellating a surface, their read-back and export.
+
+use std::ffi::c_void;
+use std::ops::BitOr;
+use std::path::Path;
+use std::ptr::{self, NonNull};
+
+use crate::error::{check, Error, Result};
+use crate::io::c_path;
+use crate::strided::PointsMut;
+use crate::surface::Surface;
+use crate::sys;
+
+/// Tessellation flags (`BS_TESS_*`), combined with `|`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub struct TessFlags(i32);
+
+impl TessFlags {
+    /// No flag.
+    pub const NONE: TessFlags = TessFlags(0);
+    /// The adaptive tolerance is a fraction of the control-net bounding-box diagonal
+    /// (`BS_TESS_RELATIVE`).
+    pub const RELATIVE: TessFlags = TessFlags(sys::BS_TESS_RELATIVE);
+    /// Also build triangle strips (`BS_TESS_STRIPS`).
+    pub const STRIPS: TessFlags = TessFlags(sys::BS_TESS_STRIPS);
+
+    /// The C flag bits.
+    pub fn bits(self) -> i32 {
+        self.0
+    }
+}
+
+impl BitOr for TessFlags {
+    type Output = TessFlags;
+    fn bitor(self, rhs: TessFlags) -> TessFlags {
+        TessFlags(self.0 | rhs.0)
+    }
+}
+
+/// Largest number of segments per patch and direction (`BS_TESS_MAX_RATE`).
+pub const TESS_MAX_RATE: usize = sys::BS_TESS_MAX_RATE;
+
+/// A mesh file format (`BS_MESH_*`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum MeshFormat {
+    /// Wavefront OBJ with positions, parameters and normals (`BS_MESH_OBJ`).
+    Obj,
+    /// Binary little-endian PLY (`BS_MESH_PLY`).
+    Ply,
+    /// ASCII PLY (`BS_MESH_PLY_ASCII`).
+    PlyAscii,
+    /// Binary STL (`BS_MESH_STL`).
+    Stl,
+}
+
+impl MeshFormat {
+    fn raw(self) -> i32 {
+        match self {
+            MeshFormat::Obj => sys::BS_MESH_OBJ,
+            MeshFormat::Ply => sys::BS_MESH_PLY,
+            MeshFormat::PlyAscii => sys::BS_MESH_PLY_ASCII,
+            MeshFormat::Stl => sys::BS_MESH_STL,
+        }
+    }
+}
+
+/// An owned, immutable triangle mesh (`bs_mesh *`), released with `bs_mesh_destroy` on drop.
+/// It is independent of the surface it was made from.
+pub struct Mesh {
+    ptr: NonNull<sys::bs_mesh>,
+}
+
+// SAFETY: a mesh never changes after it is made (every accessor takes `const bs_mesh *`) and the
+// library has no mutable global state, so it may be read from any number of threads at once.
+unsafe impl Send for Mesh {}
+unsafe impl Sync for Mesh {}
+
+impl Drop for Mesh {
+    fn drop(&mut self) {
+        // SAFETY: we own the mesh.
+        unsafe { sys::bs_mesh_destroy(self.ptr.as_ptr()) }
+    }
+}
+
+impl std::fmt::Debug for Mesh {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Mesh")
+            .field("vertices", &self.vertex_count())
+            .field("triangles", &self.triangle_count())
+            .field("strips", &self.strip_count())
+            .finish()
+    }
+}
+
+fn new_mesh(f: impl FnOnce(*mut *mut sys::bs_mesh) -> sys::bs_status) -> Result<Mesh> {
+    let mut out = ptr::null_mut();
+    check(f(&mut out))?;
+    let ptr = NonNull::new(out).expect("bezsurf returned a NULL mesh on success");
+    Ok(Mesh { ptr })
+}
+
+impl Surface {
+    /// Tessellates a 3-D surface with `nu` x `nv` segments per patch
+    /// (`bs_surface_tessellate_uniform`), crack-free across shared sides. `flags` may hold
+    /// [`TessFlags::STRIPS`]. Errors: `Domain` (a rate 0 or above [`TESS_MAX_RATE`]),
+    /// `Dimension` (not 3-D), `InvalidArg` (unknown flags).
+    pub fn tessellate_uniform(&self, nu: usize, nv: usize, flags: TessFlags) -> Result<Mesh> {
+        // SAFETY: self is live; out is valid.
+        new_mesh(|out| unsafe { sys::bs_surface_tessellate_uniform(self.as_ptr(), nu, nv, flags.0, out) })
+    }
+
+    /// Tessellates a 3-D surface so that every triangle lies within `tolerance` of the surface
+    /// (`bs_surface_tessellate_adaptive`); with [`TessFlags::RELATIVE`] the tolerance is a
+    /// fraction of the control-net bounding-box diagonal. `Domain` if the tolerance is not finite
+    /// and positive.
+    pub fn tessellate_adaptive(&self, tolerance: f64, flags: TessFlags) -> Result<Mesh> {
+        // SAFETY: self is live; out is valid.
+        new_mesh(|out| unsafe { sys::bs_surface_tessellate_adaptive(self.as_ptr(), tolerance, flags.0, out) })
+    }
+}
+
+impl Mesh {
+    /// The C handle, valid while `self` is borrowed.
+    pub fn as_ptr(&self) -> *const sys::bs_mesh {
+        self.ptr.as_ptr()
+    }
+
+    /// Number of vertices.
+    pub fn vertex_count(&self) -> usize {
+        // SAFETY: self is live.
+        unsafe { sys::bs_mesh_vertex_count(self.as_ptr()) }
+    }
+
+    /// Number of triangles.
+    pub fn triangle_count(&self) -> usize {
+        // SAFETY: self is live.
+        unsafe { sys::bs_mesh_triangle_count(self.as_ptr()) }
+    }
+
+    /// Number of triangle strips (0 unless made with [`TessFlags::STRIPS`]).
+    pub fn strip_count(&self) -> usize {
+        // SAFETY: self is live.
+        unsafe { sys::bs_mesh_strip_count(self.as_ptr()) }
+    }
+
+    /// Total number of indices in all strips.
+    pub fn strip_index_count(&self) -> usize {
+        // SAFETY: self is live.
+        unsafe { sys::bs_mesh_strip_index_count(self.as_ptr()) }
+    }
+
+    fn copy_views(
+        &self,
+        out: PointsMut<'_>,
+        dim: usize,
+        f: unsafe extern "C" fn(*const sys::bs_mesh, *const sys::bs_view) -> sys::bs_status,
+    ) -> Result<()> {
+        let mut out = out;
+        let views = out.c_views(dim)?;
+        // SAFETY: the views stay inside the slices they were built from and do not overlap.
+        check(unsafe { f(self.as_ptr(), views.as_ptr()) })
+    }
+
+    /// Copies the vertex positions (3 coordinates per vertex) (`bs_mesh_copy_positions`).
+    pub fn copy_positions<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
+        self.copy_views(out.into(), 3, sys::bs_mesh_copy_positions)
+    }
+
+    /// Copies the unit vertex normals (3 per vertex) (`bs_mesh_copy_normals`).
+    pub fn copy_normals<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
+        self.copy_views(out.into(), 3, sys::bs_mesh_copy_normals)
+    }
+
+    /// Copies the vertex (u, v) parameters (2 per vertex) (`bs_mesh_copy_uv`).
+    pub fn copy_uv<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
+        self.copy_views(out.into(), 2, sys::bs_mesh_copy_uv)
+    }
+
+    /// Copies the (u, v) of every triangle corner on the triangle's own patch (2 per corner, 3
+    /// corners per triangle) (`bs_mesh_copy_corner_uv`).
+    pub fn copy_corner_uv<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
+        self.copy_views(out.into(), 2, sys::bs_mesh_copy_corner_uv)
+    }
+
+    /// Positions as a new interleaved vector, x y z per vertex.
+    pub fn positions(&self) -> Vec<f64> {
+        let mut v = vec![0.0; 3 * self.vertex_count()];
+        self.copy_positions(&mut v).expect("bs_mesh_copy_positions");
+        v
+    }
+
+    /// Unit normals as a new interleaved vector, 3 per vertex.
+    pub fn normals(&self) -> Vec<f64> {
+        let mut v = vec![0.0; 3 * self.vertex_count()];
+        self.copy_normals(&mut v).expect("bs_mesh_copy_normals");
+        v
+    }
+
+    /// Vertex parameters as a new interleaved vector, u v per vertex.
+    pub fn uv(&self) -> Vec<f64> {
+        let mut v = vec![0.0; 2 * self.vertex_count()];
+        self.copy_uv(&mut v).expect("bs_mesh_copy_uv");
+        v
+    }
+
+    /// Corner parameters as a new interleaved vector, u v per corner.
+    pub fn corner_uv(&self) -> Vec<f64> {
+        let mut v = vec![0.0; 6 * self.triangle_count()];
+        self.copy_corner_uv(&mut v).expect("bs_mesh_copy_corner_uv");
+        v
+    }
+
+    /// Copies the per-vertex patch ids (`bs_mesh_copy_patch_ids`); `Size` if `ids` is shorter
+    /// than the vertex count.
+    pub fn copy_patch_ids(&self, ids: &mut [u32]) -> Result<()> {
+        // SAFETY: ids holds ids.len() values.
+        check(unsafe { sys::bs_mesh_copy_patch_ids(self.as_ptr(), ids.as_mut_ptr(), ids.len()) })
+    }
+
+    /// Copies the triangles, 3 vertex indices each, counter-clockwise seen from the normals'
+    /// side (`bs_mesh_copy_triangles`).
+    pub fn copy_triangles(&self, idx: &mut [u32]) -> Result<()> {
+        // SAFETY: idx holds idx.len() values.
+        check(unsafe { sys::bs_mesh_copy_triangles(self.as_ptr(), idx.as_mut_ptr(), idx.len()) })
+    }
+
+    /// Copies the per-triangle patch ids (`bs_mesh_copy_triangle_patch_ids`).
+    pub fn copy_triangle_patch_ids(&self, ids: &mut [u32]) -> Result<()> {
+        // SAFETY: ids holds ids.len() values.
+        check(unsafe { sys::bs_mesh_copy_triangle_patch_ids(self.as_ptr(), ids.as_mut_ptr(), ids.len()) })
+    }
+
+    /// Per-vertex patch ids as a new vector.
+    pub fn patch_ids(&self) -> Vec<u32> {
+        let mut v = vec![0; self.vertex_count()];
+        self.copy_patch_ids(&mut v).expect("bs_mesh_copy_patch_ids");
+        v
+    }
+
+    /// Triangle indices as a new vector, 3 per triangle.
+    pub fn triangles(&self) -> Vec<u32> {
+        let mut v = vec![0; 3 * self.triangle_count()];
+        self.copy_triangles(&mut v).expect("bs_mesh_copy_triangles");
+        v
+    }
+
+    /// Per-triangle patch ids as a new vector.
+    pub fn triangle_patch_ids(&self) -> Vec<u32> {
+        let mut v = vec![0; self.triangle_count()];
+        self.copy_triangle_patch_ids(&mut v).expect("bs_mesh_copy_triangle_patch_ids");
+        v
+    }
+
+    /// Copies the triangle strips (`bs_mesh_copy_strips`): strip k is
+    /// `idx[start[k] as usize..start[k + 1] as usize]`, its triangle i being (`s[i]`, `s[i+1]`, `s[i+2]`)
+    /// for even i and (`s[i+1]`, `s[i]`, `s[i+2]`) for odd i; triangles with a repeated index are
+    /// degenerate (at poles) and to be dropped.
+    pub fn copy_strips(&self, idx: &mut [u32], start: &mut [u32]) -> Result<()> {
+        // SAFETY: each slice holds the capacity passed with it.
+        check(unsafe {
+            sys::bs_mesh_copy_strips(
+                self.as_ptr(),
+                idx.as_mut_ptr(),
+                idx.len(),
+                start.as_mut_ptr(),
+                start.len(),
+            )
+        })
+    }
+
+    /// The strips as new vectors (indices, starts); see [`copy_strips`](Mesh::copy_strips).
+    pub fn strips(&self) -> (Vec<u32>, Vec<u32>) {
+        let mut idx = vec![0; self.strip_index_count()];
+        let mut start = vec![0; self.strip_count() + 1];
+        self.copy_strips(&mut idx, &mut start).expect("bs_mesh_copy_strips");
+        (idx, start)
+    }
+
+    /// Writes the mesh to a file (`bs_mesh_write`); `Io` on failure.
+    pub fn write(&self, format: MeshFormat, path: impl AsRef<Path>) -> Result<()> {
+        let path = c_path(path.as_ref())?;
+        // SAFETY: path is NUL-terminated.
+        check(unsafe { sys::bs_mesh_write(self.as_ptr(), format.raw(), path.as_ptr()) })
+    }
+
+    /// The bytes [`write`](Mesh::write) would put in a file (`bs_mesh_write_memory`).
+    pub fn to_bytes(&self, format: MeshFormat) -> Result<Vec<u8>> {
+        let mut size = 0usize;
+        // SAFETY: a NULL buffer asks for the size only.
+        check(unsafe {
+            sys::bs_mesh_write_memory(self.as_ptr(), format.raw(), ptr::null_mut(), 0, &mut size)
+        })?;
+        let mut buf = vec![0u8; size];
+        // SAFETY: buf holds size bytes.
+        check(unsafe {
+            sys::bs_mesh_write_memory(
+                self.as_ptr(),
+                format.raw(),
+                buf.as_mut_ptr() as *mut c_void,
+                size,
+                &mut size,
+            )
+        })?;
+        if size > buf.len() {
+            return Err(Error::from_code(sys::BS_ERR_SIZE));
+        }
+        buf.truncate(size);
+        Ok(buf)
+    }
+}

@@ -1,0 +1,92 @@
+//! Evaluation of scattered points across a surface: point k on patch `ids[k]` at (u[k], v[k]).
+
+use crate::error::{check, Result};
+use crate::eval::{invalid, kind_ptr, scattered, size_error, CPoints, Outputs};
+use crate::strided::Strided;
+use crate::surface::Surface;
+
+impl Surface {
+    /// Positions and first partials at n scattered points (`bs_surface_eval`): point k lies on
+    /// patch `ids[k]` at (`u[k]`, `v[k]`). `ids`, `u` and `v` must have the same length n (else
+    /// `Size`); an id not below [`len`](Surface::len) is `InvalidArg`. The outputs set among
+    /// `pos`, `du`, `dv` receive [`dim`](Surface::dim) coordinates per point; normals and kinds
+    /// are asked of [`eval_normal`](Surface::eval_normal) (here they are `InvalidArg`). Sorting
+    /// the points by id makes the evaluation faster; the results do not depend on the order.
+    pub fn eval<'u, 'v>(
+        &self,
+        ids: &[u32],
+        u: impl Into<Strided<'u>>,
+        v: impl Into<Strided<'v>>,
+        mut out: Outputs<'_>,
+    ) -> Result<()> {
+        if out.nrm.is_some() || out.kind.is_some() {
+            return Err(invalid());
+        }
+        let (n, u, v) = scattered(u, v)?;
+        // The C function reads n ids with no capacity argument.
+        if ids.len() != n {
+            return Err(size_error());
+        }
+        // An empty surface has no coordinates to write: its outputs are zero views (the ids are
+        // then all out of range, or n is 0).
+        let dim = self.dim();
+        let (pos, du, dv) = if dim == 0 {
+            (CPoints::none(), CPoints::none(), CPoints::none())
+        } else {
+            (
+                CPoints::new(out.pos.as_mut(), dim)?,
+                CPoints::new(out.du.as_mut(), dim)?,
+                CPoints::new(out.dv.as_mut(), dim)?,
+            )
+        };
+        // SAFETY: ids holds n values; every view stays inside the slice it was built from; the
+        // output views come from exclusive borrows and do not overlap.
+        check(unsafe {
+            crate::sys::bs_surface_eval(
+                self.as_ptr(),
+                n,
+                ids.as_ptr(),
+                &u,
+                &v,
+                pos.as_ptr(),
+                du.as_ptr(),
+                dv.as_ptr(),
+            )
+        })
+    }
+
+    /// Positions, unit normals and normal kinds at n scattered points of a 3-D surface
+    /// (`bs_surface_eval_normal`), with the rules of [`Surface::eval`] and of
+    /// [`PatchRef::eval_normal`](crate::PatchRef::eval_normal).
+    pub fn eval_normal<'u, 'v>(
+        &self,
+        ids: &[u32],
+        u: impl Into<Strided<'u>>,
+        v: impl Into<Strided<'v>>,
+        mut out: Outputs<'_>,
+    ) -> Result<()> {
+        if out.du.is_some() || out.dv.is_some() {
+            return Err(invalid());
+        }
+        let (n, u, v) = scattered(u, v)?;
+        if ids.len() != n {
+            return Err(size_error());
+        }
+        let pos = CPoints::new(out.pos.as_mut(), 3)?;
+        let nrm = CPoints::new(out.nrm.as_mut(), 3)?;
+        let kind = kind_ptr(out.kind.take(), n)?;
+        // SAFETY: as in eval; kind holds at least n bytes.
+        check(unsafe {
+            crate::sys::bs_surface_eval_normal(
+                self.as_ptr(),
+                n,
+                ids.as_ptr(),
+                &u,
+                &v,
+                pos.as_ptr(),
+                nrm.as_ptr(),
+                kind,
+            )
+        })
+    }
+}
