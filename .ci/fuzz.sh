@@ -13,15 +13,15 @@ cmake --build "$build" -j2 --target fuzz_bpt fuzz_api
 for target in fuzz_bpt fuzz_api; do
   seeds=$root/tests/fuzz/corpus/$target
   work=$build/corpus-$target
-  mkdir -p "$work"
+  mkdir -p "$work" "$build/artifacts"
   echo "== $target: replay $(ls "$seeds" | wc -l) seeds"
   "$build/tests/$target" -runs=0 "$seeds" 2>&1 | tail -n 1
   echo "== $target: fuzz ${seconds}s"
   log=$build/$target.log
   if ! "$build/tests/$target" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
-       -print_final_stats=1 "$work" "$seeds" >"$log" 2>&1; then
+       -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" "$work" "$seeds" >"$log" 2>&1; then
     tail -n 60 "$log"
-    echo "== $target: FAILED (crash input saved in $(pwd))"
+    echo "== $target: FAILED (the input is saved in $build/artifacts)"
     exit 1
   fi
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
