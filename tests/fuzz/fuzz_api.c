@@ -471,8 +471,15 @@ static void op_surface(state *st, reader *r)
         unsigned how = rd_byte(r);
         size_t ru = rd_byte(r) % 9, rv = rd_byte(r) % 9;
         double tol = rd_value(r);
+        int aflags = (int)(how >> 1) % 4;
+        /* A valid tolerance becomes at least 1% of the net's diagonal: tiny tolerances are legal but
+         * make 1024 x 1024 vertices per patch (BS_TESS_MAX_RATE), seconds per input under the fuzzer. */
+        if (isfinite(tol) && tol > 0.0) {
+            tol = 0.01 + fabs(tol);
+            aflags |= BS_TESS_RELATIVE;
+        }
         bs_status ts = how & 1 ? bs_surface_tessellate_uniform(sf, ru, rv, (int)(how >> 1) % 4, &mesh)
-                               : bs_surface_tessellate_adaptive(sf, tol, (int)(how >> 1) % 4, &mesh);
+                               : bs_surface_tessellate_adaptive(sf, tol, aflags, &mesh);
         REQUIRE(ts == BS_OK ? mesh != NULL : mesh == NULL);
         if (ts == BS_OK && st->tame && bs_mesh_vertex_count(mesh) <= 4096) {
             static double xyz[3][4096];
