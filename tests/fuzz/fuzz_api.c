@@ -472,10 +472,13 @@ static void op_surface(state *st, reader *r)
         size_t ru = rd_byte(r) % 9, rv = rd_byte(r) % 9;
         double tol = rd_value(r);
         int aflags = (int)(how >> 1) % 4;
-        /* A valid tolerance becomes at least 1% of the net's diagonal: tiny tolerances are legal but
-         * make 1024 x 1024 vertices per patch (BS_TESS_MAX_RATE), seconds per input under the fuzzer. */
+        /* A valid tolerance becomes at least 5% of the net's diagonal: tiny tolerances are legal but
+         * make 1024 x 1024 vertices per patch (BS_TESS_MAX_RATE), seconds per input under the fuzzer; so
+         * are high degrees, whose second differences are large. */
         if (isfinite(tol) && tol > 0.0) {
-            tol = 0.01 + fabs(tol);
+            if (bs_patch_degree_u(st->p) > 3 || bs_patch_degree_v(st->p) > 3 || !st->tame)
+                how |= 1; /* uniform rates only: adaptive ones reach the cap here */
+            tol = 0.05 + fabs(tol);
             aflags |= BS_TESS_RELATIVE;
         }
         bs_status ts = how & 1 ? bs_surface_tessellate_uniform(sf, ru, rv, (int)(how >> 1) % 4, &mesh)
