@@ -563,6 +563,8 @@ static bs_status run(tess *t, bs_mesh **out)
         st = BS_ERR_NO_MEMORY;
     if (st != BS_OK) {
         tess_free(t);
+        /* m is still NULL here: calloc is the last step that can fail */
+        // cppcheck-suppress memleak
         return st;
     }
     repair_normals(t);
