@@ -262,6 +262,44 @@ static int run_single(double nets[NPATCH][NCTRL * 3], bs_patch **patches, char *
     return ok ? 0 : 1;
 }
 
+/* Tessellating the built-in teapot at TESS x TESS segments per patch against evaluating the same
+ * number of points, (TESS+1)^2 per patch, with bs_patch_eval_grid positions + normals. */
+#define TESS 64
+static void tessellation_vs_grid(bs_patch **patches, double budget)
+{
+    bs_surface *s = NULL;
+    if (bs_surface_create_builtin("teapot", &s) != BS_OK)
+        return;
+    size_t g = TESS + 1, npts = NPATCH * g * g;
+    double *t = malloc(g * sizeof(double)), *out[6];
+    for (int a = 0; a < 6; a++)
+        out[a] = malloc(npts * sizeof(double));
+    for (size_t a = 0; a < g; a++)
+        t[a] = (double)a / (double)TESS;
+    context cx = {NULL, patches, t, NULL, NULL, g, &workloads[2], out};
+    double grid = measure(&cx, GRID, budget); /* Mpts/s */
+    double best = 0.0, start = now();
+    size_t verts = 0;
+    for (int runs = 0; runs < 3 || now() - start < budget; runs++) {
+        bs_mesh *m = NULL;
+        double t0 = now();
+        if (bs_surface_tessellate_uniform(s, TESS, TESS, 0, &m) != BS_OK)
+            break;
+        double dt = now() - t0;
+        verts = bs_mesh_vertex_count(m);
+        bs_mesh_destroy(m);
+        if (dt > 0.0 && 1.0 / dt > best)
+            best = 1.0 / dt;
+    }
+    double tess_ms = 1e3 / best, grid_ms = 1e3 * (double)npts / (grid * 1e6);
+    printf("tessellate teapot %dx%d/patch (%zu vertices): %.2f ms; grid pos+normal %zu points: %.2f ms; "
+           "ratio %.2f\n", TESS, TESS, verts, tess_ms, npts, grid_ms, tess_ms / grid_ms);
+    for (int a = 0; a < 6; a++)
+        free(out[a]);
+    free(t);
+    bs_surface_destroy(s);
+}
+
 int main(int argc, char **argv)
 {
     int once = argc >= 5 && strcmp(argv[1], "--once") == 0;
@@ -316,6 +354,7 @@ int main(int argc, char **argv)
         free(su);
         free(sv);
     }
+    tessellation_vs_grid(patches, budget);
     for (int k = 0; k < NPATCH; k++)
         bs_patch_destroy(patches[k]);
     return 0;

@@ -42,12 +42,12 @@ void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigne
         for (size_t a = 0; a <= ma; a++) {
             const double *w = wu + a * (m + 1);
             for (size_t j = 0; j <= n; j++)
-                q[j] = 0.0;
+                q[j] = -0.0;
             for (size_t i = 0; i <= m; i++)
                 for (size_t j = 0; j <= n; j++)
                     q[j] += w[i] * net[i * (n + 1) + j];
             for (size_t b = 0; b <= mb; b++) {
-                double acc = 0.0;
+                double acc = -0.0;
                 for (size_t j = 0; j <= n; j++)
                     acc += wv[b * (n + 1) + j] * q[j];
                 hd[(a * (mb + 1) + b) * nc + c] = acc;
@@ -100,7 +100,7 @@ static void poly_block(const bs_patch *p, unsigned ku, unsigned kv, const double
     for (size_t c = 0; c < p->dim; c++) {
         const double *net = p->hom + c * p->nctrl;
         for (size_t x = 0; x < (n + 1) * B; x++)
-            q[x] = 0.0;
+            q[x] = -0.0;
         for (size_t i = 0; i <= m; i++)
             for (size_t j = 0; j <= n; j++) {
                 double pij = net[i * (n + 1) + j];
@@ -109,7 +109,7 @@ static void poly_block(const bs_patch *p, unsigned ku, unsigned kv, const double
             }
         double acc[B];
         for (size_t k = 0; k < B; k++)
-            acc[k] = 0.0;
+            acc[k] = -0.0;
         for (size_t j = 0; j <= n; j++)
             for (size_t k = 0; k < B; k++)
                 acc[k] += wv[j * B + k] * q[j * B + k];
@@ -149,17 +149,7 @@ bs_status bs_patch_eval_deriv(const bs_patch *p, unsigned ku, unsigned kv, size_
         size_t nb = n - k0 < B ? n - k0 : B;
         double ub[B], vb[B];
         int bad[B];
-        for (size_t k = 0; k < B; k++) {
-            ub[k] = vb[k] = 0.0;
-            bad[k] = 0;
-            if (k < nb) {
-                ub[k] = bsi_cget(u, k0 + k);
-                vb[k] = bsi_cget(v, k0 + k);
-                bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
-                if (bad[k])
-                    ub[k] = vb[k] = 0.0;
-            }
-        }
+        bsi_load_block(u, v, k0, nb, ub, vb, bad);
         if (!p->rational) {
             poly_block(p, ku, kv, ub, vb, res);
         } else {

@@ -123,6 +123,12 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
  * its position in a block, so results do not depend on batch size. */
 #define BSI_BLOCK 8
 
+/* Parameters k0 .. k0+nb-1 (nb <= BSI_BLOCK) of a scattered call as one block: ub, vb and bad
+ * get BSI_BLOCK entries; slots past nb and non-finite pairs become (0,0) with bad set for the
+ * latter, so the kernels only ever see finite parameters (lib/eval.c). */
+void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
+                    double *ub, double *vb, int *bad);
+
 /* Homogeneous value h and, when first != 0, first partials hu, hv at BSI_BLOCK finite parameter
  * pairs; each output is [ncoord][BSI_BLOCK]. The u-direction is contracted first (per column j,
  * i ascending), then v (j ascending), with the derivatives taken from inline difference nets;
@@ -155,6 +161,11 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm);
+/* bsi_normal at nb points, the regular case vectorised: su[c][b], sv[c][b] in, nrm[c][b] and
+ * kind[b] out; point b is at (u[b*ustep], v[b]). Same bits as bsi_normal point by point. */
+void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
+                      size_t ustep, const double *v, const double *const *su,
+                      const double *const *sv, double *const *nrm, unsigned char *kind);
 /* ---- Curve operations applied fibre by fibre to coordinate-major nets (lib/fiber.c) ----
  * A net here is ncoord planes of (deg_u+1)(deg_v+1) doubles, as struct bs_patch's hom. A fibre is
  * one row of a plane along a direction: fixed j for BS_DIR_U (index i), fixed i for BS_DIR_V. */
@@ -214,5 +225,31 @@ void bsi_sink_u32le(bsi_sink *s, uint32_t x);
 void bsi_export_obj(const bs_mesh *m, bsi_sink *s);
 void bsi_export_ply(const bs_mesh *m, int binary, bsi_sink *s);
 void bsi_export_stl(const bs_mesh *m, bsi_sink *s);
+
+/* ---- The regular normal rule at one point (lib/normal.c, lib/eval_grid.c) ----
+ * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
+ * when the point needs bsi_normal. Inline so that every vectorised caller does the same
+ * operations (and gets the same bits). zu2, zv2: the squared zero thresholds of bsi_nscale. */
+#include <math.h>
+typedef struct bsi_rnormal {
+    double n0, n1, n2, flag;
+} bsi_rnormal;
+static inline bsi_rnormal bsi_regular_normal(double x0, double x1, double x2, double y0,
+                                             double y1, double y2, double zu2, double zv2)
+{
+    double qa = x0 * x0 + x1 * x1 + x2 * x2;
+    double qb = y0 * y0 + y1 * y1 + y2 * y2;
+    double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
+    double qc = c0 * c0 + c1 * c1 + c2 * c2;
+    long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
+              (qb > zv2) & (qc > 0x1p-60 * (qa * qb));
+    double inv = 1.0 / sqrt(qc);
+    bsi_rnormal r;
+    r.n0 = c0 * inv;
+    r.n1 = c1 * inv;
+    r.n2 = c2 * inv;
+    r.flag = ok ? 0.0 : 1.0;
+    return r;
+}
 
 #endif

@@ -36,6 +36,15 @@ static void cross3(const double *a, const double *b, double *c)
 
 static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b);
 
+/* x^k for small k by repeated multiplication (no call to pow in the per-point paths). */
+static double ipow(double x, int k)
+{
+    double r = 1.0;
+    for (int i = 0; i < k; i++)
+        r *= x;
+    return r;
+}
+
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
 {
     /* D: diagonal of the net's bounding box; rho: weight ratio. |S_u| <= m D rho on [0,1]^2 is a
@@ -71,7 +80,7 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
  * computed partial derivative cannot be told from zero. */
 static double deriv_noise(const bs_patch *p, const bsi_nscale *sc, int a, int b)
 {
-    double f = sc->noise * ldexp(1.0, a + b) * pow(sc->rho, a + b);
+    double f = sc->noise * ipow(2.0, a + b) * ipow(sc->rho, a + b); /* 2^k exact */
     for (int r = 0; r < a; r++)
         f *= (double)(p->deg_u > (size_t)r ? p->deg_u - (size_t)r : 1);
     for (int r = 0; r < b; r++)
@@ -114,7 +123,11 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
     double scratch[(KD + 1) * (BS_MAX_DEGREE + 1) * 2 + (BS_MAX_DEGREE + 1) + (KD + 1) * (KD + 1) * 4];
     double tab[(KD + 1) * (KD + 1) * 3];
     bsi_deriv_table(p, u, v, KD, KD, scratch, tab);
-    double A[KD][3], Bv[KD][3], binom[KD + 1], fact = 1.0;
+    double A[KD][3], Bv[KD][3], binom[KD + 1], fact = 1.0, pu[KD + 1], pv[KD + 1];
+    for (int k = 0; k <= KD; k++) { /* the values of ipow(du, k), ipow(dv, k) */
+        pu[k] = ipow(du, k);
+        pv[k] = ipow(dv, k);
+    }
     for (int c = 0; c < 3; c++) {
         A[0][c] = a0[c];
         Bv[0][c] = b0[c];
@@ -126,14 +139,14 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
             binom[a] = binom[a - 1] * (k - a + 1) / a;
         double na = 0.0, nb = 0.0;
         for (int a = 0; a <= k; a++) {
-            double w = fabs(binom[a] * pow(du, a) * pow(dv, k - a));
+            double w = fabs(binom[a] * pu[a] * pv[k - a]);
             na += w * deriv_noise(p, sc, a + 1, k - a);
             nb += w * deriv_noise(p, sc, a, k - a + 1);
         }
         for (int c = 0; c < 3; c++) {
             double sa = 0.0, sb = 0.0;
             for (int a = 0; a <= k; a++) {
-                double w = binom[a] * pow(du, a) * pow(dv, k - a);
+                double w = binom[a] * pu[a] * pv[k - a];
                 sa += w * tab[((size_t)(a + 1) * (KD + 1) + (size_t)(k - a)) * 3 + (size_t)c];
                 sb += w * tab[((size_t)a * (KD + 1) + (size_t)(k - a + 1)) * 3 + (size_t)c];
             }
@@ -202,6 +215,75 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
     return limit_normal(p, sc, u, v, a0, b0, nrm);
 }
 
+/* The regular rule's arithmetic for ne points (flag 1.0 where it does not settle the point). */
+static void regular_kernel(size_t ne, const double *restrict a0, const double *restrict a1,
+                           const double *restrict a2, const double *restrict b0,
+                           const double *restrict b1, const double *restrict b2, double zu2,
+                           double zv2, double *restrict n0, double *restrict n1,
+                           double *restrict n2, double *restrict flag)
+{
+    for (size_t b = 0; b < ne; b++) {
+        bsi_rnormal r = bsi_regular_normal(a0[b], a1[b], a2[b], b0[b], b1[b], b2[b], zu2, zv2);
+        n0[b] = r.n0;
+        n1[b] = r.n1;
+        n2[b] = r.n2;
+        flag[b] = r.flag;
+    }
+}
+
+/* The regular case of bsi_normal for nb points at once, with the same operations per point (so
+ * the same bits), vectorised over the points; the points it cannot settle (a derivative too short
+ * or the cross product too small, or a square out of range) go through bsi_normal one by one.
+ * Point b has parameters (u[b*ustep], v[b]). */
+void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
+                      size_t ustep, const double *v, const double *const *su,
+                      const double *const *sv, double *const *nrm, unsigned char *kind)
+{
+    /* Inputs and outputs are distinct arrays (callers' contract). */
+    const double *restrict a0 = su[0], *restrict a1 = su[1], *restrict a2 = su[2];
+    const double *restrict b0 = sv[0], *restrict b1 = sv[1], *restrict b2 = sv[2];
+    double *restrict n0 = nrm[0], *restrict n1 = nrm[1], *restrict n2 = nrm[2];
+    unsigned char *restrict kd = kind;
+    double zu2 = sc->zu * sc->zu, zv2 = sc->zv * sc->zv;
+    enum { CHUNK = 64 };
+    for (size_t s0 = 0; s0 < nb; s0 += CHUNK) {
+        size_t ne = nb - s0 < CHUNK ? nb - s0 : CHUNK;
+        /* 1.0 marks a point for the slow path (a double flag keeps the loop vectorisable). */
+        double flag[CHUNK], nslow = 0.0;
+        regular_kernel(ne, a0 + s0, a1 + s0, a2 + s0, b0 + s0, b1 + s0, b2 + s0, zu2, zv2, n0 + s0,
+                       n1 + s0, n2 + s0, flag);
+        for (size_t k = 0; k < ne; k++)
+            nslow = nslow > flag[k] ? nslow : flag[k];
+        for (size_t k = 0; k < ne; k++)
+            kd[s0 + k] = BS_NORMAL_REGULAR;
+        for (size_t k = 0; nslow > 0.0 && k < ne; k++) {
+            size_t b = s0 + k;
+            if (flag[k] == 0.0)
+                continue;
+            double x[3] = {a0[b], a1[b], a2[b]}, y[3] = {b0[b], b1[b], b2[b]}, r[3];
+            kd[b] = bsi_normal(p, sc, u[b * ustep], v[b], x, y, r);
+            n0[b] = r[0];
+            n1[b] = r[1];
+            n2[b] = r[2];
+        }
+    }
+}
+
+/* nb values of coordinate c to views[c] from element idx0 on (a plain loop for packed views). */
+static void put_coord(const bs_view *views, size_t c, size_t idx0, const double *x, size_t nb)
+{
+    if (views == NULL)
+        return;
+    if (bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double)) {
+        double *d = (double *)views[c].data + idx0;
+        for (size_t k = 0; k < nb; k++)
+            d[k] = x[k];
+        return;
+    }
+    for (size_t k = 0; k < nb; k++)
+        *bsi_at(&views[c], idx0 + k) = x[k];
+}
+
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
                                const bs_view *pos, const bs_view *nrm, unsigned char *kind)
 {
@@ -224,37 +306,34 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
         size_t nb = n - k0 < B ? n - k0 : B;
         double ub[B], vb[B];
         int bad[B];
-        for (size_t k = 0; k < B; k++) {
-            ub[k] = vb[k] = 0.0;
-            bad[k] = 0;
-            if (k < nb) {
-                ub[k] = bsi_cget(u, k0 + k);
-                vb[k] = bsi_cget(v, k0 + k);
-                bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
-                if (bad[k])
-                    ub[k] = vb[k] = 0.0;
-            }
-        }
+        bsi_load_block(u, v, k0, nb, ub, vb, bad);
         bsi_eval_first_block(p, ub, vb, 1, h, hu, hv);
-        for (size_t k = 0; k < nb; k++) {
-            double s[3], su[3], sv[3], nv[3];
-            unsigned char kd;
-            bsi_project_first(p, h + k, hu + k, hv + k, B, s, su, sv);
+        if (p->rational)
+            for (size_t k = 0; k < nb; k++) {
+                double s[3], su[3], sv[3];
+                bsi_project_first(p, h + k, hu + k, hv + k, B, s, su, sv);
+                for (size_t c = 0; c < 3; c++) {
+                    h[c * B + k] = s[c];
+                    hu[c * B + k] = su[c];
+                    hv[c * B + k] = sv[c];
+                }
+            }
+        double nv[3 * B];
+        unsigned char kd[B];
+        const double *pu[3] = {hu, hu + B, hu + 2 * B}, *pv[3] = {hv, hv + B, hv + 2 * B};
+        double *pn[3] = {nv, nv + B, nv + 2 * B};
+        bsi_normal_block(p, &sc, nb, ub, 1, vb, pu, pv, pn, kd);
+        for (size_t k = 0; k < nb; k++)
             if (bad[k]) {
-                s[0] = s[1] = s[2] = nv[0] = nv[1] = nv[2] = NAN;
-                kd = BS_NORMAL_UNDEFINED;
-            } else {
-                kd = bsi_normal(p, &sc, ub[k], vb[k], su, sv, nv);
+                h[k] = h[B + k] = h[2 * B + k] = nv[k] = nv[B + k] = nv[2 * B + k] = NAN;
+                kd[k] = BS_NORMAL_UNDEFINED;
             }
-            for (size_t c = 0; c < 3; c++) {
-                if (pos)
-                    *bsi_at(&pos[c], k0 + k) = s[c];
-                if (nrm)
-                    *bsi_at(&nrm[c], k0 + k) = nv[c];
-            }
-            if (kind)
-                kind[k0 + k] = kd;
+        for (size_t c = 0; c < 3; c++) {
+            put_coord(pos, c, k0, h + c * B, nb);
+            put_coord(nrm, c, k0, nv + c * B, nb);
         }
+        for (size_t k = 0; kind != NULL && k < nb; k++)
+            kind[k0 + k] = kd[k];
     }
     return BS_OK;
 }

@@ -40,6 +40,13 @@ static void compare(const bs_patch *p, size_t nu, const double *u, size_t nv, co
         for (size_t c = 0; c < 3; c++)
             same &= memcmp(gv[3][c].data, sview[3][c].data, tot * sizeof(double)) == 0;
         CHECKF(same, "grid normals %zu x %zu differ from scattered", nu, nv);
+        /* positions and normals without derivatives (the fused cubic-row path) are the same bits */
+        CHECK_STATUS(bs_patch_eval_grid(p, nu, &cu, nv, &cv, gv[1], NULL, NULL, gv[2], gk), BS_OK);
+        same = memcmp(gk, sk, tot) == 0;
+        for (size_t c = 0; c < 3; c++)
+            same &= memcmp(gv[1][c].data, gv[0][c].data, tot * sizeof(double)) == 0 &&
+                    memcmp(gv[2][c].data, sview[3][c].data, tot * sizeof(double)) == 0;
+        CHECKF(same, "grid positions + normals %zu x %zu differ from scattered", nu, nv);
         /* positions alone (no derivative work) are the same bits too */
         CHECK_STATUS(bs_patch_eval_grid(p, nu, &cu, nv, &cv, sview[0], NULL, NULL, NULL, NULL), BS_OK);
         same = 1;
@@ -103,6 +110,26 @@ static void test_teapot_grid(void)
     }
 }
 
+/* Polynomial 3-D nets of degree (m, 3), finite parameters: positions + normals take the fused
+ * cubic-row path, across the column-pass boundary. */
+static void test_cubic_rows(void)
+{
+    unsigned long long rng = 702;
+    for (size_t m = 1; m <= 6; m++) {
+        tnet t = tnet_random(&rng, m, 3, 3, 0, 1.0, 1.0);
+        bs_patch *p = tnet_patch(&t);
+        size_t nu = 5, nv = 300;
+        double u[5], v[300];
+        for (size_t a = 0; a < nu; a++)
+            u[a] = (double)a / (double)(nu - 1);
+        for (size_t b = 0; b < nv; b++)
+            v[b] = bs_test_rand(&rng, -0.1, 1.1);
+        compare(p, nu, u, nv, v);
+        bs_patch_destroy(p);
+        tnet_free(&t);
+    }
+}
+
 /* Negative and interleaved output strides give the same bits as packed ones. */
 static void test_strides(void)
 {
@@ -141,6 +168,7 @@ int main(void)
 {
     test_random_grids();
     test_teapot_grid();
+    test_cubic_rows();
     test_strides();
     return bs_test_exit("test_grid");
 }
