@@ -102,7 +102,8 @@ size_t bsi_format_double(double x, char *buf)
         }
         buf[o] = '\0';
         double back;
-        if (prec == 17 || (bsi_parse_double(buf, o, &back) == 1 && memcmp(&back, &x, sizeof x) == 0))
+        /* bits, not values: -0.0 must come back as -0.0 */
+        if (prec == 17 || (bsi_parse_double(buf, o, &back) == 1 && memcmp(&back, &x, sizeof x) == 0)) // NOLINT(bugprone-suspicious-memory-comparison,cert-exp42-c,cert-flp37-c)
             return o;
     }
     return 0; /* not reached for finite x */

@@ -56,7 +56,8 @@ static bs_status fail(reader *r, size_t at, const char *fmt, ...)
         r->err->column = at - r->line_start + 1;
         va_list ap;
         va_start(ap, fmt);
-        vsnprintf(r->err->message, sizeof r->err->message, fmt, ap);
+        /* a message cut to the buffer is fine; ap is started just above (the analyzer misses it) */
+        (void)vsnprintf(r->err->message, sizeof r->err->message, fmt, ap); // NOLINT(clang-analyzer-valist.Uninitialized)
         va_end(ap);
     }
     return BS_ERR_PARSE;
@@ -104,7 +105,7 @@ static bs_status read_number(reader *r, const char *what, double *x)
 /* One patch: degrees, optional rational marker "w", then the net. */
 static bs_status read_patch(reader *r, double **scratch, size_t *scratch_cap, bs_surface *s)
 {
-    size_t start = r->pos, tlen, deg[2];
+    size_t start = r->pos, tlen, deg[2] = {0, 0};
     skip_space(r);
     size_t patch_line = r->line, patch_col = r->pos - r->line_start + 1;
     bs_status st = read_count(r, "degree in u", BS_MAX_DEGREE, &deg[0]);
@@ -138,7 +139,7 @@ static bs_status read_patch(reader *r, double **scratch, size_t *scratch_cap, bs
             size_t at = r->pos;
             if ((st = read_number(r, "weight", &w[k])) != BS_OK)
                 return st;
-            if (!(w[k] > 0.0)) {
+            if (!(w[k] > 0.0)) { // NOLINT(clang-analyzer-core.NullDereference,clang-analyzer-core.UndefinedBinaryOperatorResult): w[k] was just read
                 while (at < r->len && is_space(r->text[at]))
                     at++;
                 return fail(r, at, "weight must be positive");
@@ -151,7 +152,7 @@ static bs_status read_patch(reader *r, double **scratch, size_t *scratch_cap, bs
         if (r->err != NULL) {
             r->err->line = patch_line;
             r->err->column = patch_col;
-            snprintf(r->err->message, sizeof r->err->message, "weight times coordinate overflows");
+            (void)snprintf(r->err->message, sizeof r->err->message, "weight times coordinate overflows");
         }
         return BS_ERR_PARSE;
     }
@@ -169,7 +170,7 @@ bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_error *err,
     if (out == NULL || (text == NULL && len > 0))
         return BS_ERR_INVALID_ARG;
     reader r = {text, len, 0, 1, 0, err};
-    size_t count;
+    size_t count = 0;
     bs_status st = read_count(&r, "the patch count", UINT32_MAX, &count);
     if (st != BS_OK)
         return st;
@@ -205,7 +206,7 @@ static void io_error(bs_parse_error *err, const char *what)
     if (err != NULL) {
         err->line = 0;
         err->column = 0;
-        snprintf(err->message, sizeof err->message, "%s", what);
+        (void)snprintf(err->message, sizeof err->message, "%s", what);
     }
 }
 
@@ -249,7 +250,7 @@ bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_sur
             break;
         }
     }
-    fclose(f);
+    (void)fclose(f); /* a stream only read from has nothing left to report */
     if (st == BS_OK)
         st = bs_surface_read_bpt(buf, len, err, out);
     free(buf);

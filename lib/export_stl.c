@@ -9,7 +9,7 @@ void bsi_export_stl(const bs_mesh *m, bsi_sink *s)
 {
     char head[80];
     memset(head, ' ', sizeof head);
-    memcpy(head, "libbezsurf mesh (binary STL)", 28);
+    memcpy(head, "libbezsurf mesh (binary STL)", 28); // NOLINT(bugprone-not-null-terminated-result): a space-padded header, not a string
     bsi_sink_put(s, head, sizeof head);
     bsi_sink_u32le(s, (uint32_t)m->ntri);
     for (size_t t = 0; t < m->ntri; t++) {

@@ -19,7 +19,7 @@ static void fiber_difference(const double *in, size_t deg_in, double *out, size_
         for (size_t i = 0; i + r < deg_in; i++)
             b[i] = b[i + 1] - b[i];
     for (size_t i = 0; i <= deg_out; i++)
-        out[i] = d->scale * b[i];
+        out[i] = d->scale * b[i]; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): deg_out <= deg_in
 }
 
 /* deg!/(deg-order)!, rounded once (long double carries the product exactly or nearly so). */

@@ -37,7 +37,7 @@ bs_status bs_surface_add(bs_surface *s, const bs_patch *p, size_t *index)
         return BS_ERR_SIZE;
     if (s->count == s->cap) {
         size_t cap = s->cap ? 2 * s->cap : 8;
-        bs_patch **grown = realloc(s->patches, cap * sizeof(*grown));
+        bs_patch **grown = realloc(s->patches, cap * sizeof(*grown)); // NOLINT(bugprone-sizeof-expression): an array of pointers
         if (grown == NULL)
             return BS_ERR_NO_MEMORY;
         s->patches = grown;

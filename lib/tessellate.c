@@ -432,8 +432,9 @@ static bs_status plan(tess *t)
         nslot += off;
     }
     t->nslot = nslot;
-    t->parent = malloc(nslot * sizeof(size_t));
-    t->slot_vert = malloc(nslot * sizeof(uint32_t));
+    /* at least one element: malloc(0) may return NULL, which is not a failure */
+    t->parent = malloc((nslot ? nslot : 1) * sizeof(size_t));
+    t->slot_vert = malloc((nslot ? nslot : 1) * sizeof(uint32_t));
     if (t->parent == NULL || t->slot_vert == NULL)
         return BS_ERR_NO_MEMORY;
     for (size_t k = 0; k < nslot; k++)
@@ -560,7 +561,7 @@ static bs_status evaluate(tess *t)
                 if (uf_find(t->parent, slot) != slot)
                     continue;
                 uint32_t id = t->slot_vert[slot];
-                side_param(pl, s, k, &t->uv[2 * id], &t->uv[2 * id + 1]);
+                side_param(pl, s, k, &t->uv[2 * (size_t)id], &t->uv[2 * (size_t)id + 1]);
             }
         for (size_t id = pl->vert0; id < pl->inner0; id++)
             t->vpatch[id] = (uint32_t)p;
@@ -736,6 +737,8 @@ static bs_status run(tess *t, bs_mesh **out)
         st = BS_ERR_NO_MEMORY;
     if (st != BS_OK) {
         tess_free(t);
+        /* m is still NULL here: calloc is the last step that can fail */
+        // cppcheck-suppress memleak
         return st;
     }
     repair_normals(t);

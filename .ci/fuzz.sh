@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Build the libFuzzer targets with clang in their own build tree, replay the committed seed corpora,
+# then fuzz each target for N seconds (default 120) and print its execution count.
+#   .ci/fuzz.sh [seconds]        FUZZ_BUILD=dir to choose the build tree (default build-fuzz)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+seconds=${1:-120}
+build=${FUZZ_BUILD:-$root/build-fuzz}
+CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
+  -DBS_BUILD_TOOLS=OFF >/dev/null
+cmake --build "$build" -j2 --target fuzz_bpt fuzz_api
+for target in fuzz_bpt fuzz_api; do
+  seeds=$root/tests/fuzz/corpus/$target
+  work=$build/corpus-$target
+  mkdir -p "$work" "$build/artifacts"
+  echo "== $target: replay $(ls "$seeds" | wc -l) seeds"
+  "$build/tests/$target" -runs=0 "$seeds" 2>&1 | tail -n 1
+  echo "== $target: fuzz ${seconds}s"
+  log=$build/$target.log
+  if ! "$build/tests/$target" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
+       -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" "$work" "$seeds" >"$log" 2>&1; then
+    tail -n 60 "$log"
+    echo "== $target: FAILED (the input is saved in $build/artifacts)"
+    exit 1
+  fi
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1)
+  echo "== $target: $execs executions in ${seconds}s, $cov, corpus $(ls "$work" | wc -l) files"
+done

@@ -1,0 +1,378 @@
+/* Allocation-failure injection. The library's sources are linked into this program with malloc,
+ * calloc, realloc and free wrapped (-Wl,--wrap=...): for every operation and every k, the k-th
+ * allocation of the call fails. The call must then return BS_ERR_NO_MEMORY, leave its outputs
+ * untouched (sentinel-filled buffers; new-handle outputs NULL) and hold no memory afterwards
+ * (the wrappers count live blocks). k runs up from 1 until the call makes fewer than k
+ * allocations, so every allocation of every operation fails once. */
+#include "../harness.h"
+
+#include <bezsurf.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+void *__real_malloc(size_t n);
+void *__real_calloc(size_t k, size_t n);
+void *__real_realloc(void *p, size_t n);
+void __real_free(void *p);
+void *__wrap_malloc(size_t n);
+void *__wrap_calloc(size_t k, size_t n);
+void *__wrap_realloc(void *p, size_t n);
+void __wrap_free(void *p);
+
+static size_t fail_at; /* 0: never fail; else the index (from 1) of the allocation that fails */
+static size_t n_alloc; /* allocations attempted since the counter was reset */
+static int hit;        /* the injected failure happened */
+static long live;      /* blocks allocated and not yet freed */
+
+static int should_fail(void)
+{
+    n_alloc++;
+    if (fail_at != 0 && n_alloc == fail_at) {
+        hit = 1;
+        return 1;
+    }
+    return 0;
+}
+
+void *__wrap_malloc(size_t n)
+{
+    if (should_fail())
+        return NULL;
+    void *p = __real_malloc(n);
+    live += p != NULL;
+    return p;
+}
+
+void *__wrap_calloc(size_t k, size_t n)
+{
+    if (should_fail())
+        return NULL;
+    void *p = __real_calloc(k, n);
+    live += p != NULL;
+    return p;
+}
+
+void *__wrap_realloc(void *p, size_t n)
+{
+    if (should_fail())
+        return NULL;
+    void *q = __real_realloc(p, n);
+    if (p == NULL && q != NULL)
+        live++;
+    return q;
+}
+
+void __wrap_free(void *p)
+{
+    live -= p != NULL;
+    __real_free(p);
+}
+
+/* ---- fixtures, made before injection starts ---- */
+static bs_patch *P, *R, *HIGH;
+static bs_surface *TEAPOT;
+static char *teapot_text;
+static size_t teapot_len;
+static const double net3[27] = {0, 0, 0, 1, 0, 1, 2, 0, 0, 0, 1, 1, 1, 1, 2, 2, 1, 1, 0, 2, 0, 1, 2, 1, 2, 2, 0};
+static const double w9[9] = {1, 2, 1, 0.5, 1, 3, 1, 1, 2};
+
+#define SENT -999.0
+enum { NPT = 300 };
+static double obuf[3][NPT], ubuf[NPT], vbuf[NPT];
+static unsigned char kbuf[NPT];
+static char tbuf[8192];
+
+static void fill_outputs(void)
+{
+    for (int c = 0; c < 3; c++)
+        for (int k = 0; k < NPT; k++)
+            obuf[c][k] = SENT;
+    memset(kbuf, 0xEE, sizeof kbuf);
+    memset(tbuf, 'Q', sizeof tbuf);
+}
+
+static int outputs_untouched(void)
+{
+    for (int c = 0; c < 3; c++)
+        for (int k = 0; k < NPT; k++)
+            if (obuf[c][k] != SENT)
+                return 0;
+    for (size_t k = 0; k < sizeof kbuf; k++)
+        if (kbuf[k] != 0xEE)
+            return 0;
+    for (size_t k = 0; k < sizeof tbuf; k++)
+        if (tbuf[k] != 'Q')
+            return 0;
+    return 1;
+}
+
+static bs_patch *const HSENT = (bs_patch *)(void *)&live;
+
+/* Each operation: run the call, return its status; on failure, check its handles are NULL. */
+typedef bs_status (*op_fn)(void);
+
+static int handles_null(bs_patch **h, int n)
+{
+    for (int k = 0; k < n; k++)
+        if (h[k] != NULL)
+            return 0;
+    return 1;
+}
+
+#define ONE_HANDLE(name, call)                                  \
+    static bs_status name(void)                                 \
+    {                                                           \
+        bs_patch *q = HSENT;                                    \
+        bs_status st = (call);                                  \
+        if (st != BS_OK)                                        \
+            CHECKF(q == NULL, "%s: handle not NULL", #name);    \
+        bs_patch_destroy(st == BS_OK ? q : NULL);               \
+        return st;                                              \
+    }
+
+ONE_HANDLE(op_create, bs_patch_create(2, 2, 3, net3, NULL, &q))
+ONE_HANDLE(op_create_rational, bs_patch_create(2, 2, 3, net3, w9, &q))
+ONE_HANDLE(op_clone, bs_patch_clone(R, &q))
+ONE_HANDLE(op_subpatch, bs_patch_subpatch(R, 0.25, 0.75, 0.5, 0.0, &q))
+ONE_HANDLE(op_elevate, bs_patch_elevate(R, 2, 1, &q))
+ONE_HANDLE(op_derivative, bs_patch_derivative(P, 1, 2, &q))
+ONE_HANDLE(op_transform, bs_patch_transform(R, (const double[12]){0, 1, 0, 1, 1, 0, 0, 2, 0, 0, 2, 3}, &q))
+ONE_HANDLE(op_swap, bs_patch_swap_uv(R, &q))
+ONE_HANDLE(op_reverse, bs_patch_reverse(P, BS_DIR_V, &q))
+
+static const double c0[9] = {0, 0, 0, 1, 0, 1, 2, 0, 0}, c1[6] = {0, 1, 0, 2, 1, 0};
+static const double s0[6] = {0, 0, 0, 0, 1, 0}, s1[6] = {2, 0, 0, 2, 1, 0};
+ONE_HANDLE(op_ruled, bs_patch_ruled(&(bs_curve){2, 3, c0, NULL}, &(bs_curve){1, 3, c1, (const double[2]){1, 2}}, &q))
+ONE_HANDLE(op_coons, bs_patch_coons(&(bs_curve){2, 3, c0, NULL}, &(bs_curve){1, 3, c1, NULL},
+                                    &(bs_curve){1, 3, s0, NULL}, &(bs_curve){1, 3, s1, NULL}, &q))
+
+static bs_status op_split(void)
+{
+    bs_patch *h[2] = {HSENT, HSENT};
+    bs_status st = bs_patch_split(R, BS_DIR_U, 0.3, &h[0], &h[1]);
+    if (st != BS_OK)
+        CHECKF(handles_null(h, 2), "split: handles not NULL");
+    else
+        for (int k = 0; k < 2; k++)
+            bs_patch_destroy(h[k]);
+    return st;
+}
+
+static bs_status op_split4(void)
+{
+    bs_patch *h[4] = {HSENT, HSENT, HSENT, HSENT};
+    bs_status st = bs_patch_split4(R, 0.3, 0.6, h);
+    if (st != BS_OK)
+        CHECKF(handles_null(h, 4), "split4: handles not NULL");
+    else
+        for (int k = 0; k < 4; k++)
+            bs_patch_destroy(h[k]);
+    return st;
+}
+
+static bs_status op_eval_deriv_rational(void)
+{
+    bs_view o[3] = {{obuf[0], NPT, 0}, {obuf[1], NPT, 0}, {obuf[2], NPT, 0}};
+    bs_cview u = {ubuf, NPT, 0}, v = {vbuf, NPT, 0};
+    return bs_patch_eval_deriv(R, 2, 3, NPT, &u, &v, o);
+}
+
+static bs_status op_eval_grid(void)
+{
+    bs_view o[3] = {{obuf[0], NPT, 0}, {obuf[1], NPT, 0}, {obuf[2], NPT, 0}};
+    bs_cview u = {ubuf, 15, 0}, v = {vbuf, 20, 0};
+    return bs_patch_eval_grid(HIGH, 15, &u, 20, &v, NULL, NULL, NULL, o, kbuf);
+}
+
+static bs_status op_surface_eval(void)
+{
+    bs_view o[3] = {{obuf[0], NPT, 0}, {obuf[1], NPT, 0}, {obuf[2], NPT, 0}};
+    bs_cview u = {ubuf, NPT, 0}, v = {vbuf, NPT, 0};
+    uint32_t ids[NPT];
+    for (uint32_t k = 0; k < NPT; k++)
+        ids[k] = k % 32;
+    return bs_surface_eval_normal(TEAPOT, NPT, ids, &u, &v, o, NULL, kbuf);
+}
+
+static bs_status op_surface_build(void)
+{
+    bs_surface *s = (bs_surface *)(void *)HSENT, *c = (bs_surface *)(void *)HSENT;
+    bs_status st = bs_surface_create(&s);
+    if (st != BS_OK) {
+        CHECK(s == NULL);
+        return st;
+    }
+    for (int k = 0; k < 40 && st == BS_OK; k++) {
+        size_t idx = 12345;
+        st = bs_surface_add(s, k % 2 ? P : R, &idx);
+        if (st != BS_OK)
+            CHECKF(idx == 12345 && bs_surface_count(s) == (size_t)k, "add: surface changed on failure");
+    }
+    if (st == BS_OK) {
+        st = bs_surface_clone(s, &c);
+        if (st != BS_OK)
+            CHECK(c == NULL);
+        else
+            bs_surface_destroy(c);
+    }
+    bs_surface_destroy(s);
+    return st;
+}
+
+static bs_status op_read_bpt(void)
+{
+    bs_surface *s = (bs_surface *)(void *)HSENT;
+    bs_parse_error err;
+    memset(&err, 0x33, sizeof err);
+    bs_status st = bs_surface_read_bpt(teapot_text, teapot_len, &err, &s);
+    if (st != BS_OK)
+        CHECK(s == NULL && err.line == 0x3333333333333333ull);
+    bs_surface_destroy(s == (bs_surface *)(void *)HSENT ? NULL : s);
+    return st;
+}
+
+static bs_status op_builtin(void)
+{
+    bs_surface *s = (bs_surface *)(void *)HSENT;
+    bs_status st = bs_surface_create_builtin("teacup", &s);
+    if (st != BS_OK)
+        CHECK(s == NULL);
+    bs_surface_destroy(s == (bs_surface *)(void *)HSENT ? NULL : s);
+    return st;
+}
+
+static bs_status op_write_bpt(void)
+{
+    size_t size = 777;
+    bs_status st = bs_surface_write_bpt(TEAPOT, tbuf, sizeof tbuf, &size);
+    if (st != BS_OK)
+        CHECK(size == 777);
+    return st;
+}
+
+static const char *tmp_path;
+static bs_status op_write_bpt_file(void) { return bs_surface_write_bpt_file(TEAPOT, tmp_path); }
+
+static bs_status op_continuity(void)
+{
+    bs_edge_continuity e[64];
+    bs_open_edge o[64];
+    size_t ne = 5, no = 5;
+    memset(e, 0x44, sizeof e);
+    bs_status st = bs_surface_continuity(TEAPOT, 1e-6, 8, e, 64, &ne, o, 64, &no);
+    if (st != BS_OK)
+        CHECK(ne == 5 && no == 5 && e[0].patch_a == 0x44444444u);
+    return st;
+}
+
+static bs_status op_tessellate(void)
+{
+    bs_mesh *m = (bs_mesh *)(void *)HSENT;
+    bs_status st = bs_surface_tessellate_uniform(TEAPOT, 3, 2, BS_TESS_STRIPS, &m);
+    if (st != BS_OK) {
+        CHECK(m == NULL);
+        return st;
+    }
+    size_t size = 0;
+    static char buf[1 << 17];
+    for (int f = BS_MESH_OBJ; f <= BS_MESH_STL && st == BS_OK; f++)
+        st = bs_mesh_write_memory(m, f, buf, sizeof buf, &size);
+    bs_mesh_destroy(m);
+    return st;
+}
+
+static bs_status op_tessellate_adaptive(void)
+{
+    bs_mesh *m = (bs_mesh *)(void *)HSENT;
+    bs_status st = bs_surface_tessellate_adaptive(TEAPOT, 0.05, 0, &m);
+    if (st != BS_OK)
+        CHECK(m == NULL);
+    else
+        bs_mesh_destroy(m);
+    return st;
+}
+
+typedef struct op {
+    const char *name;
+    op_fn fn;
+    int writes_views; /* check the shared output buffers */
+} op;
+
+static const op ops[] = {
+    {"bs_patch_create", op_create, 0},
+    {"bs_patch_create (rational)", op_create_rational, 0},
+    {"bs_patch_clone", op_clone, 0},
+    {"bs_patch_split", op_split, 0},
+    {"bs_patch_split4", op_split4, 0},
+    {"bs_patch_subpatch", op_subpatch, 0},
+    {"bs_patch_elevate", op_elevate, 0},
+    {"bs_patch_derivative", op_derivative, 0},
+    {"bs_patch_transform", op_transform, 0},
+    {"bs_patch_swap_uv", op_swap, 0},
+    {"bs_patch_reverse", op_reverse, 0},
+    {"bs_patch_ruled", op_ruled, 0},
+    {"bs_patch_coons", op_coons, 0},
+    {"bs_patch_eval_deriv (rational)", op_eval_deriv_rational, 1},
+    {"bs_patch_eval_grid", op_eval_grid, 1},
+    {"bs_surface_eval_normal", op_surface_eval, 1},
+    {"bs_surface_create/add/clone", op_surface_build, 0},
+    {"bs_surface_read_bpt", op_read_bpt, 0},
+    {"bs_surface_create_builtin", op_builtin, 0},
+    {"bs_surface_write_bpt", op_write_bpt, 1},
+    {"bs_surface_write_bpt_file", op_write_bpt_file, 0},
+    {"bs_surface_continuity", op_continuity, 0},
+    {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
+    {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
+};
+
+int main(void)
+{
+    CHECK_STATUS(bs_patch_create(2, 2, 3, net3, NULL, &P), BS_OK);
+    CHECK_STATUS(bs_patch_create(2, 2, 3, net3, w9, &R), BS_OK);
+    CHECK_STATUS(bs_patch_elevate(R, 10, 12, &HIGH), BS_OK);
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &TEAPOT), BS_OK);
+    CHECK_STATUS(bs_surface_write_bpt(TEAPOT, NULL, 0, &teapot_len), BS_OK);
+    teapot_text = malloc(teapot_len);
+    CHECK_STATUS(bs_surface_write_bpt(TEAPOT, teapot_text, teapot_len, &teapot_len), BS_OK);
+    teapot_len--; /* without the NUL */
+    tmp_path = getenv("BS_ALLOC_TMP") ? getenv("BS_ALLOC_TMP") : "alloc_fail_out.bpt";
+    for (int k = 0; k < NPT; k++) {
+        ubuf[k] = (k % 17) / 16.0;
+        vbuf[k] = (k % 23) / 22.0;
+    }
+    size_t total_failures = 0;
+    for (size_t i = 0; i < sizeof ops / sizeof ops[0]; i++) {
+        size_t k;
+        for (k = 1;; k++) {
+            fill_outputs();
+            long live0 = live;
+            n_alloc = 0;
+            hit = 0;
+            fail_at = k;
+            bs_status st = ops[i].fn();
+            fail_at = 0;
+            CHECKF(live == live0, "%s, allocation %zu fails: %ld blocks leaked", ops[i].name, k, live - live0);
+            if (!hit) {
+                CHECKF(st == BS_OK, "%s without failures: status %d", ops[i].name, st);
+                break;
+            }
+            CHECKF(st == BS_ERR_NO_MEMORY, "%s, allocation %zu fails: status %d", ops[i].name, k, st);
+            if (ops[i].writes_views)
+                CHECKF(outputs_untouched(), "%s, allocation %zu fails: outputs written", ops[i].name, k);
+            total_failures++;
+        }
+        printf("%-34s %3zu allocations, each failed once\n", ops[i].name, k - 1);
+    }
+    printf("allocation failures injected: %zu\n", total_failures);
+    remove(tmp_path);
+    free(teapot_text);
+    bs_surface_destroy(TEAPOT);
+    bs_patch_destroy(P);
+    bs_patch_destroy(R);
+    bs_patch_destroy(HIGH);
+    CHECKF(live == 0, "%ld blocks live at exit", live);
+    return bs_test_exit("test_alloc_fail");
+}
