@@ -84,7 +84,7 @@ typedef struct tess {
 
 /* Grid points evaluated per call into packed scratch (the evaluator writes packed arrays in
  * place; the mesh's packed triples are filled from them). */
-#define GRID_CHUNK 4096
+#define GRID_CHUNK ((size_t)4096)
 
 static const int side_from[4] = {0, 1, 3, 0}; /* start corner of each side (0:c00 1:c10 2:c11 3:c01) */
 static const int side_to[4] = {1, 2, 2, 3};
@@ -633,7 +633,7 @@ static bs_status reserve_output(tess *t)
     }
     if (ntri > SIZE_MAX / 6)
         return BS_ERR_NO_MEMORY;
-    t->gid = malloc(gids * sizeof(uint32_t));
+    t->gid = calloc(gids, sizeof(uint32_t)); /* entries an irregular patch leaves unset are never read */
     if (t->gid == NULL || !reserve((void **)&t->tri.v, &t->tri.cap, 3 * ntri, sizeof(uint32_t)) ||
         !reserve((void **)&t->tpatch.v, &t->tpatch.cap, ntri, sizeof(uint32_t)) ||
         !reserve((void **)&t->cuv.v, &t->cuv.cap, 6 * ntri, sizeof(double)))
