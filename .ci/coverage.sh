@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Line and branch coverage of lib/ by the unit tests (gcc --coverage, gcovr), printed as a summary
 # and written to build-cov/coverage.txt. Optional thresholds: COV_MIN_LINES, COV_MIN_BRANCHES (percent).
+# Counters are updated atomically: the threads test would otherwise tear them (negative counts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${COV_BUILD:-build-cov}
 rm -rf "$build"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS="--coverage -O0" \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_C_FLAGS="--coverage -fprofile-update=atomic -O0" \
   -DCMAKE_EXE_LINKER_FLAGS=--coverage -DCMAKE_SHARED_LINKER_FLAGS=--coverage \
   -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF >/dev/null
 cmake --build "$build" -j2 >/dev/null
