@@ -10,7 +10,9 @@ build=${TIDY_BUILD:-build-tidy}
 echo "== cppcheck"
 cppcheck --enable=warning,portability,performance --inline-suppr --error-exitcode=1 --std=c99 \
   -Iinclude -Ilib -q --suppress=missingIncludeSystem lib/
-cmake -S . -B "$build" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
+# Configured with clang so that the compile commands hold only flags clang-tidy understands.
+rm -rf "$build"
+cmake -S . -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
   -DBS_BUILD_TOOLS=OFF >/dev/null
 echo "== clang-tidy"
 out=$(clang-tidy -p "$build" --quiet \

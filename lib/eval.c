@@ -187,10 +187,11 @@ void bsi_project_first(const bs_patch *p, const double *h, const double *hu, con
         }
         return;
     }
-    /* S = A / w; S_u = (A_u - w_u S) / w (quotient rule). */
-    double w = h[dim * stride];
+    /* S = A / w; S_u = (A_u - w_u S) / w (quotient rule). The kernels fill all ncoord = dim + 1
+     * planes of a rational patch, which the analyzer cannot see through p->ncoord. */
+    double w = h[dim * stride]; // NOLINT(clang-analyzer-core.uninitialized.Assign)
     for (size_t c = 0; c < dim; c++) {
-        s[c] = h[c * stride] / w;
+        s[c] = h[c * stride] / w; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult)
         if (su != NULL) {
             su[c] = (hu[c * stride] - hu[dim * stride] * s[c]) / w;
             sv[c] = (hv[c * stride] - hv[dim * stride] * s[c]) / w;

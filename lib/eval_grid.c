@@ -10,7 +10,7 @@
 
 #define NMAX (BS_MAX_DEGREE + 1)
 /* Columns handled per pass: the outputs of one row pass stay in the first-level cache. */
-#define COLS 256
+#define COLS ((size_t)256)
 
 typedef struct grid_scratch {
     double *wv, *wvm;      /* [j][COLS] column weights, degree n and n-1 */
@@ -228,7 +228,8 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     bsi_bernstein_first(m, badu ? 0.0 : t, bu, bum);
     contract_row(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
     int rational = p->rational, first = gc->first;
-    double *ps[BS_MAX_DIM], *pu[BS_MAX_DIM], *pv[BS_MAX_DIM];
+    /* Set below for every coordinate; NULL until then, so no indeterminate pointer is ever passed. */
+    double *ps[BS_MAX_DIM] = {NULL}, *pu[BS_MAX_DIM] = {NULL}, *pv[BS_MAX_DIM] = {NULL};
     if (gc->fused) {
         fused_row(gc, g, t, vcol, nb, idx0);
         return;
@@ -290,8 +291,8 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             if (!badu && !g->badv[b])
                 continue;
             for (size_t c = 0; c < dim; c++) {
-                if (gc->pos != NULL || rational || !first)
-                    ps[c][b] = NAN;
+                if (gc->pos != NULL || rational || !first) /* then ps[c] was set above */
+                    ps[c][b] = NAN; // NOLINT(clang-analyzer-core.NullDereference)
                 if (first)
                     pu[c][b] = pv[c][b] = NAN;
             }

@@ -121,7 +121,7 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
 
 /* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
  * its position in a block, so results do not depend on batch size. */
-#define BSI_BLOCK 8
+#define BSI_BLOCK ((size_t)8)
 
 /* Parameters k0 .. k0+nb-1 (nb <= BSI_BLOCK) of a scattered call as one block: ub, vb and bad
  * get BSI_BLOCK entries; slots past nb and non-finite pairs become (0,0) with bad set for the
