@@ -34,7 +34,7 @@ static void block_weights(size_t deg, const double *t, double *w, double *wm)
 }
 
 /* block_weights for degree 3 written out: the same operations per lane (same bits). */
-static void weights3(const double *restrict t, double *restrict w, double *restrict wm)
+BSI_HOT static void weights3(const double *restrict t, double *restrict w, double *restrict wm)
 {
     for (size_t k = 0; k < B; k++) {
         double x = t[k], s = 1.0 - x;
@@ -51,7 +51,7 @@ static void weights3(const double *restrict t, double *restrict w, double *restr
 }
 
 /* Bicubic value only, as the general loop below does it. */
-static void bicubic_value(const double *restrict net, const double *restrict bu,
+BSI_HOT static void bicubic_value(const double *restrict net, const double *restrict bu,
                           const double *restrict bv, double *restrict h)
 {
     for (size_t k = 0; k < B; k++) {
@@ -65,7 +65,7 @@ static void bicubic_value(const double *restrict net, const double *restrict bu,
 /* Bicubic value and first partials: the general loop below with every index fixed, so the same
  * operations in the same order per point (same bits), kept in registers and vectorised over the
  * block's points. */
-static void bicubic_first(const double *restrict net, const double *restrict bu,
+BSI_HOT static void bicubic_first(const double *restrict net, const double *restrict bu,
                           const double *restrict bum, const double *restrict bv,
                           const double *restrict bvm, double *restrict h, double *restrict hu,
                           double *restrict hv)
@@ -98,7 +98,7 @@ static void bicubic_first(const double *restrict net, const double *restrict bu,
 #undef E
 }
 
-void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
+BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
                           double *h, double *hu, double *hv)
 {
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;

@@ -54,7 +54,7 @@ static void contract_row(const bs_patch *p, const double *bu, const double *bum,
  * the compiler keeps the sum in registers and vectorises over b. */
 #define W(j) w[(j) * COLS + b]
 #define COMBINE(NAME, EXPR)                                                                        \
-    static void NAME(size_t nb, const double *restrict w, const double *restrict q, int scaled,  \
+    BSI_HOT static void NAME(size_t nb, const double *restrict w, const double *restrict q, int scaled,  \
                      double scale, double *restrict dst)                                           \
     {                                                                                              \
         if (scaled)                                                                                \
@@ -72,18 +72,11 @@ COMBINE(combine5, W(0) * q[0] + W(1) * q[1] + W(2) * q[2] + W(3) * q[3] + W(4) *
 #undef COMBINE
 #undef W
 
-static void combine(size_t nt, size_t nb, const double *w, const double *q, int scaled,
-                    double scale, double *dst)
+/* Any number of terms: the same sum, accumulated in dst. */
+BSI_HOT static void combine_any(size_t nt, size_t nb, const double *restrict w,
+                                const double *restrict q, int scaled, double scale,
+                                double *restrict dst)
 {
-    switch (nt) {
-    case 1: combine1(nb, w, q, scaled, scale, dst); return;
-    case 2: combine2(nb, w, q, scaled, scale, dst); return;
-    case 3: combine3(nb, w, q, scaled, scale, dst); return;
-    case 4: combine4(nb, w, q, scaled, scale, dst); return;
-    case 5: combine5(nb, w, q, scaled, scale, dst); return;
-    default: break;
-    }
-    /* Any degree: the same sum, accumulated in dst. */
     for (size_t b = 0; b < nb; b++)
         dst[b] = w[b] * q[0];
     for (size_t j = 1; j < nt; j++) {
@@ -97,11 +90,24 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
             dst[b] = scale * dst[b];
 }
 
+static void combine(size_t nt, size_t nb, const double *w, const double *q, int scaled,
+                    double scale, double *dst)
+{
+    switch (nt) {
+    case 1: combine1(nb, w, q, scaled, scale, dst); return;
+    case 2: combine2(nb, w, q, scaled, scale, dst); return;
+    case 3: combine3(nb, w, q, scaled, scale, dst); return;
+    case 4: combine4(nb, w, q, scaled, scale, dst); return;
+    case 5: combine5(nb, w, q, scaled, scale, dst); return;
+    default: combine_any(nt, nb, w, q, scaled, scale, dst); return;
+    }
+}
+
 /* Cubic rows of a polynomial 3-D patch, positions and normals only: the three coordinates'
  * combine4 sums (value, S_u scaled by m, S_v by 3) and the regular normal rule, fused so that the
  * derivatives never leave registers. Same operations per point as combine() followed by
  * bsi_normal_block (same bits); flag[b] = 1.0 marks points left to bsi_normal. */
-static void cubic_pos_normal(size_t nb, const double *restrict w, const double *restrict wm,
+BSI_HOT static void cubic_pos_normal(size_t nb, const double *restrict w, const double *restrict wm,
                              const double *restrict q, const double *restrict qu,
                              const double *restrict qv, double m, double zu2, double zv2,
                              double *restrict s0, double *restrict s1, double *restrict s2,

@@ -119,6 +119,17 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
 
 /* ---- Evaluation kernels (lib/eval.c, lib/deriv.c) ---- */
 
+/* Marks the loops that carry evaluation. With BSI_CPU_DISPATCH (GCC on x86-64, see
+ * lib/CMakeLists.txt) each is compiled for AVX-512, AVX2 and baseline SSE2, and the loader picks
+ * the widest the CPU has. Every version performs the same IEEE operations in the same order (no
+ * FMA: -ffp-contract=off; no reassociation), only on more points per instruction, so results are
+ * the same bits whichever runs. */
+#ifdef BSI_CPU_DISPATCH
+#define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define BSI_HOT
+#endif
+
 /* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
  * its position in a block, so results do not depend on batch size. */
 #define BSI_BLOCK ((size_t)8)

@@ -216,7 +216,7 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
 }
 
 /* The regular rule's arithmetic for ne points (flag 1.0 where it does not settle the point). */
-static void regular_kernel(size_t ne, const double *restrict a0, const double *restrict a1,
+BSI_HOT static void regular_kernel(size_t ne, const double *restrict a0, const double *restrict a1,
                            const double *restrict a2, const double *restrict b0,
                            const double *restrict b1, const double *restrict b2, double zu2,
                            double zv2, double *restrict n0, double *restrict n1,
