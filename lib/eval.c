@@ -1,6 +1,7 @@
 /* Scattered evaluation of positions and first partial derivatives. */
 #include "internal.h"
 
+#include <float.h>
 #include <math.h>
 
 #define B BSI_BLOCK
@@ -33,69 +34,129 @@ static void block_weights(size_t deg, const double *t, double *w, double *wm)
     }
 }
 
-/* block_weights for degree 3 written out: the same operations per lane (same bits). */
-BSI_HOT static void weights3(const double *restrict t, double *restrict w, double *restrict wm)
+/* bsi_bernstein_first for degree 3 at one parameter, written out (same operations, same bits). */
+BSI_INLINE void weights3_at(double x, double w[4], double wm[3])
+{
+    double s = 1.0 - x;
+    double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
+    wm[0] = 0.0 + s * a0;
+    wm[1] = x * a0 + s * a1;
+    wm[2] = x * a1;
+    w[0] = 0.0 + s * wm[0];
+    w[1] = x * wm[0] + s * wm[1];
+    w[2] = x * wm[1] + s * wm[2];
+    w[3] = x * wm[2];
+}
+
+/* block_weights for degree 3, lane by lane. */
+BSI_INLINE void weights3(const double *restrict t, double *restrict w, double *restrict wm)
 {
     for (size_t k = 0; k < B; k++) {
-        double x = t[k], s = 1.0 - x;
-        double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
-        double b0 = 0.0 + s * a0, b1 = x * a0 + s * a1, b2 = x * a1;
-        wm[k] = b0;
-        wm[B + k] = b1;
-        wm[2 * B + k] = b2;
-        w[k] = 0.0 + s * b0;
-        w[B + k] = x * b0 + s * b1;
-        w[2 * B + k] = x * b1 + s * b2;
-        w[3 * B + k] = x * b2;
+        double a[4], am[3];
+        weights3_at(t[k], a, am);
+        for (size_t i = 0; i < 3; i++)
+            wm[i * B + k] = am[i];
+        for (size_t i = 0; i < 4; i++)
+            w[i * B + k] = a[i];
     }
 }
 
-/* Bicubic value only, as the general loop below does it. */
-BSI_HOT static void bicubic_value(const double *restrict net, const double *restrict bu,
-                          const double *restrict bv, double *restrict h)
-{
-    for (size_t k = 0; k < B; k++) {
-        double u0 = bu[k], u1 = bu[B + k], u2 = bu[2 * B + k], u3 = bu[3 * B + k];
-#define Q(j) (u0 * net[j] + u1 * net[4 + (j)] + u2 * net[8 + (j)] + u3 * net[12 + (j)])
-        h[k] = bv[k] * Q(0) + bv[B + k] * Q(1) + bv[2 * B + k] * Q(2) + bv[3 * B + k] * Q(3);
-#undef Q
-    }
-}
-
-/* Bicubic value and first partials: the general loop below with every index fixed, so the same
- * operations in the same order per point (same bits), kept in registers and vectorised over the
- * block's points. */
-BSI_HOT static void bicubic_first(const double *restrict net, const double *restrict bu,
-                          const double *restrict bum, const double *restrict bv,
-                          const double *restrict bvm, double *restrict h, double *restrict hu,
-                          double *restrict hv)
+/* One point of one plane of a bicubic net from its weights in u (bu, bum) and v (bv, bvm): the
+ * value, and the first partials when hu != NULL. This is the general loop of
+ * bsi_eval_first_block with every index fixed: the same operations in the same order (same bits),
+ * so that the compiler keeps everything in registers and vectorises over points. */
+BSI_INLINE void bicubic_point(const double *restrict net, const double bu[4],
+                                 const double bum[3], const double bv[4], const double bvm[3],
+                                 double *h, double *hu, double *hv)
 {
 #define P(i, j) net[(i) * 4 + (j)]
 #define D(i, j) (P((i) + 1, j) - P(i, j))
 #define E(i, j) (P(i, (j) + 1) - P(i, j))
-    for (size_t k = 0; k < B; k++) {
-        double u0 = bu[k], u1 = bu[B + k], u2 = bu[2 * B + k], u3 = bu[3 * B + k];
-        double m0 = bum[k], m1 = bum[B + k], m2 = bum[2 * B + k];
-#define Q(j) (u0 * P(0, j) + u1 * P(1, j) + u2 * P(2, j) + u3 * P(3, j))
-#define QU(j) (m0 * D(0, j) + m1 * D(1, j) + m2 * D(2, j))
-#define QV(j) (u0 * E(0, j) + u1 * E(1, j) + u2 * E(2, j) + u3 * E(3, j))
-#define V(j) bv[(j) * B + k]
-#define VM(j) bvm[(j) * B + k]
-        double acc = V(0) * Q(0) + V(1) * Q(1) + V(2) * Q(2) + V(3) * Q(3);
-        double accu = V(0) * QU(0) + V(1) * QU(1) + V(2) * QU(2) + V(3) * QU(3);
-        double accv = VM(0) * QV(0) + VM(1) * QV(1) + VM(2) * QV(2);
+#define Q(j) (bu[0] * P(0, j) + bu[1] * P(1, j) + bu[2] * P(2, j) + bu[3] * P(3, j))
+#define QU(j) (bum[0] * D(0, j) + bum[1] * D(1, j) + bum[2] * D(2, j))
+#define QV(j) (bu[0] * E(0, j) + bu[1] * E(1, j) + bu[2] * E(2, j) + bu[3] * E(3, j))
+    *h = bv[0] * Q(0) + bv[1] * Q(1) + bv[2] * Q(2) + bv[3] * Q(3);
+    if (hu == NULL)
+        return;
+    *hu = 3.0 * (bv[0] * QU(0) + bv[1] * QU(1) + bv[2] * QU(2) + bv[3] * QU(3));
+    *hv = 3.0 * (bvm[0] * QV(0) + bvm[1] * QV(1) + bvm[2] * QV(2));
 #undef Q
 #undef QU
 #undef QV
-#undef V
-#undef VM
-        h[k] = acc;
-        hu[k] = 3.0 * accu;
-        hv[k] = 3.0 * accv;
-    }
 #undef P
 #undef D
 #undef E
+}
+
+/* bicubic_point over a block: value only when hu == NULL (two loops, so each vectorises). */
+BSI_INLINE void bicubic_block(const double *restrict net, const double *restrict bu,
+                                  const double *restrict bum, const double *restrict bv,
+                                  const double *restrict bvm, double *restrict h,
+                                  double *restrict hu, double *restrict hv)
+{
+    if (hu == NULL)
+        for (size_t k = 0; k < B; k++) {
+            double au[4] = {bu[k], bu[B + k], bu[2 * B + k], bu[3 * B + k]};
+            double av[4] = {bv[k], bv[B + k], bv[2 * B + k], bv[3 * B + k]};
+            bicubic_point(net, au, NULL, av, NULL, h + k, NULL, NULL);
+        }
+    else
+        for (size_t k = 0; k < B; k++) {
+            double au[4] = {bu[k], bu[B + k], bu[2 * B + k], bu[3 * B + k]};
+            double av[4] = {bv[k], bv[B + k], bv[2 * B + k], bv[3 * B + k]};
+            double aum[3] = {bum[k], bum[B + k], bum[2 * B + k]};
+            double avm[3] = {bvm[k], bvm[B + k], bvm[2 * B + k]};
+            bicubic_point(net, au, aum, av, avm, h + k, hu + k, hv + k);
+        }
+}
+
+/* bs_patch_eval of a polynomial bicubic patch whose views are all packed: whole blocks go from
+ * the caller's arrays to the caller's arrays in one loop per block, with the per-point
+ * arithmetic of bsi_eval_first_block (weights3_at, bicubic_point: same bits). Non-finite
+ * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of B. */
+BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
+                                     const double *restrict v, double *const *pos,
+                                     double *const *du, double *const *dv)
+{
+    size_t done = n - n % B;
+    int first = du != NULL || dv != NULL;
+    for (size_t k0 = 0; k0 < done; k0 += B) {
+        double bu[4][B], bum[3][B], bv[4][B], bvm[3][B], x[B], y[B], bad[B];
+        for (size_t k = 0; k < B; k++) {
+            int ok = (fabs(u[k0 + k]) <= DBL_MAX) & (fabs(v[k0 + k]) <= DBL_MAX);
+            bad[k] = ok ? 0.0 : 1.0;
+            x[k] = ok ? u[k0 + k] : 0.0;
+            y[k] = ok ? v[k0 + k] : 0.0;
+        }
+        weights3(x, bu[0], bum[0]);
+        weights3(y, bv[0], bvm[0]);
+        for (size_t c = 0; c < p->dim; c++) {
+            const double *net = p->hom + c * p->nctrl;
+            double h[B], hu[B], hv[B];
+            bicubic_block(net, bu[0], bum[0], bv[0], bvm[0], h, first ? hu : NULL, hv);
+            if (pos != NULL)
+                for (size_t k = 0; k < B; k++)
+                    pos[c][k0 + k] = bad[k] != 0.0 ? NAN : h[k];
+            if (du != NULL)
+                for (size_t k = 0; k < B; k++)
+                    du[c][k0 + k] = bad[k] != 0.0 ? NAN : hu[k];
+            if (dv != NULL)
+                for (size_t k = 0; k < B; k++)
+                    dv[c][k0 + k] = bad[k] != 0.0 ? NAN : hv[k];
+        }
+    }
+    return done;
+}
+
+/* Element 0 of each of the k views when all are packed (stride 0 or 8), else 0. */
+static int packed_views(const bs_view *views, size_t k, double **data)
+{
+    for (size_t c = 0; c < k; c++) {
+        if (bsi_stride(views[c].stride) != (ptrdiff_t)sizeof(double))
+            return 0;
+        data[c] = views[c].data;
+    }
+    return 1;
 }
 
 BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
@@ -106,12 +167,9 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
     if (m == 3 && n == 3) {
         weights3(u, bu, bum);
         weights3(v, bv, bvm);
-        for (size_t c = 0; c < p->ncoord; c++) {
-            if (first)
-                bicubic_first(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B, hu + c * B, hv + c * B);
-            else
-                bicubic_value(p->hom + c * p->nctrl, bu, bv, h + c * B);
-        }
+        for (size_t c = 0; c < p->ncoord; c++)
+            bicubic_block(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
+                          first ? hu + c * B : NULL, first ? hv + c * B : NULL);
         return;
     }
     block_weights(m, u, bu, bum);
@@ -250,8 +308,15 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
         (dv && (st = bsi_check_views(dv, dim, n)) != BS_OK))
         return st;
     int first = du != NULL || dv != NULL;
+    size_t k0 = 0;
+    double *ps[BS_MAX_DIM], *pu[BS_MAX_DIM], *pv[BS_MAX_DIM];
+    if (!p->rational && p->deg_u == 3 && p->deg_v == 3 && bsi_stride(u->stride) == sizeof(double) &&
+        bsi_stride(v->stride) == sizeof(double) && (pos == NULL || packed_views(pos, dim, ps)) &&
+        (du == NULL || packed_views(du, dim, pu)) && (dv == NULL || packed_views(dv, dim, pv)))
+        k0 = bicubic_packed(p, n, u->data, v->data, pos ? ps : NULL, du ? pu : NULL,
+                            dv ? pv : NULL);
     double h[(BS_MAX_DIM + 1) * B], hu[(BS_MAX_DIM + 1) * B], hv[(BS_MAX_DIM + 1) * B];
-    for (size_t k0 = 0; k0 < n; k0 += B) {
+    for (; k0 < n; k0 += B) {
         size_t nb = n - k0 < B ? n - k0 : B;
         double ub[B], vb[B];
         int bad[B];

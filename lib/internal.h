@@ -129,6 +129,13 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
 #else
 #define BSI_HOT
 #endif
+/* Small helpers of BSI_HOT loops: GCC does not inline a function of the default target into a
+ * clone by itself, so they are forced inline (and then compiled for the clone's target). */
+#if defined(__GNUC__)
+#define BSI_INLINE static inline __attribute__((always_inline))
+#else
+#define BSI_INLINE static inline
+#endif
 
 /* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
  * its position in a block, so results do not depend on batch size. */
