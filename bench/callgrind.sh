@@ -13,7 +13,7 @@ printf '%-10s %-11s %12s\n' method workload "instr/point"
 for w in pos pos+du+dv pos+normal; do
   for m in store naive grid scattered; do
     case "$m" in
-      store) fn=store_only ;;
+      store) fn="store_only*" ;; # the clone the CPU dispatch picked
       naive) fn=naive_grid ;;
       grid) fn=bs_patch_eval_grid ;;
       scattered) if [ "$w" = pos+normal ]; then fn=bs_patch_eval_normal; else fn=bs_patch_eval; fi ;;

@@ -27,6 +27,10 @@ void bsi_bernstein_first(size_t deg, double t, double *b, double *bm)
         b[0] = 1.0;
         return;
     }
+    if (deg == 3) {
+        bsi_bernstein3_first(t, b, bm);
+        return;
+    }
     bsi_bernstein(deg - 1, t, bm);
     for (size_t k = 0; k < deg; k++)
         b[k] = bm[k];

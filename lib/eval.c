@@ -34,30 +34,21 @@ static void block_weights(size_t deg, const double *t, double *w, double *wm)
     }
 }
 
-/* bsi_bernstein_first for degree 3 at one parameter, written out (same operations, same bits). */
-BSI_INLINE void weights3_at(double x, double w[4], double wm[3])
+/* block_weights for degree 3 on a block of L lanes (w[i*L + k]), lane by lane, written out so
+ * that the loop vectorises. */
+BSI_INLINE void weights3(size_t L, const double *restrict t, double *restrict w,
+                         double *restrict wm)
 {
-    double s = 1.0 - x;
-    double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
-    wm[0] = 0.0 + s * a0;
-    wm[1] = x * a0 + s * a1;
-    wm[2] = x * a1;
-    w[0] = 0.0 + s * wm[0];
-    w[1] = x * wm[0] + s * wm[1];
-    w[2] = x * wm[1] + s * wm[2];
-    w[3] = x * wm[2];
-}
-
-/* block_weights for degree 3, lane by lane. */
-BSI_INLINE void weights3(const double *restrict t, double *restrict w, double *restrict wm)
-{
-    for (size_t k = 0; k < B; k++) {
+    for (size_t k = 0; k < L; k++) {
         double a[4], am[3];
-        weights3_at(t[k], a, am);
-        for (size_t i = 0; i < 3; i++)
-            wm[i * B + k] = am[i];
-        for (size_t i = 0; i < 4; i++)
-            w[i * B + k] = a[i];
+        bsi_bernstein3_first(t[k], a, am);
+        wm[k] = am[0];
+        wm[L + k] = am[1];
+        wm[2 * L + k] = am[2];
+        w[k] = a[0];
+        w[L + k] = a[1];
+        w[2 * L + k] = a[2];
+        w[3 * L + k] = a[3];
     }
 }
 
@@ -66,8 +57,8 @@ BSI_INLINE void weights3(const double *restrict t, double *restrict w, double *r
  * bsi_eval_first_block with every index fixed: the same operations in the same order (same bits),
  * so that the compiler keeps everything in registers and vectorises over points. */
 BSI_INLINE void bicubic_point(const double *restrict net, const double bu[4],
-                                 const double bum[3], const double bv[4], const double bvm[3],
-                                 double *h, double *hu, double *hv)
+                              const double bum[3], const double bv[4], const double bvm[3],
+                              double *h, double *hu, double *hv)
 {
 #define P(i, j) net[(i) * 4 + (j)]
 #define D(i, j) (P((i) + 1, j) - P(i, j))
@@ -88,60 +79,63 @@ BSI_INLINE void bicubic_point(const double *restrict net, const double bu[4],
 #undef E
 }
 
-/* bicubic_point over a block: value only when hu == NULL (two loops, so each vectorises). */
-BSI_INLINE void bicubic_block(const double *restrict net, const double *restrict bu,
-                                  const double *restrict bum, const double *restrict bv,
-                                  const double *restrict bvm, double *restrict h,
-                                  double *restrict hu, double *restrict hv)
+/* bicubic_point over a block of L lanes (weights [i*L + k]): value only when hu == NULL (two
+ * loops, so each vectorises). */
+BSI_INLINE void bicubic_block(size_t L, const double *restrict net, const double *restrict bu,
+                              const double *restrict bum, const double *restrict bv,
+                              const double *restrict bvm, double *restrict h,
+                              double *restrict hu, double *restrict hv)
 {
     if (hu == NULL)
-        for (size_t k = 0; k < B; k++) {
-            double au[4] = {bu[k], bu[B + k], bu[2 * B + k], bu[3 * B + k]};
-            double av[4] = {bv[k], bv[B + k], bv[2 * B + k], bv[3 * B + k]};
+        for (size_t k = 0; k < L; k++) {
+            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
+            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
             bicubic_point(net, au, NULL, av, NULL, h + k, NULL, NULL);
         }
     else
-        for (size_t k = 0; k < B; k++) {
-            double au[4] = {bu[k], bu[B + k], bu[2 * B + k], bu[3 * B + k]};
-            double av[4] = {bv[k], bv[B + k], bv[2 * B + k], bv[3 * B + k]};
-            double aum[3] = {bum[k], bum[B + k], bum[2 * B + k]};
-            double avm[3] = {bvm[k], bvm[B + k], bvm[2 * B + k]};
+        for (size_t k = 0; k < L; k++) {
+            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
+            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
+            double aum[3] = {bum[k], bum[L + k], bum[2 * L + k]};
+            double avm[3] = {bvm[k], bvm[L + k], bvm[2 * L + k]};
             bicubic_point(net, au, aum, av, avm, h + k, hu + k, hv + k);
         }
 }
 
 /* bs_patch_eval of a polynomial bicubic patch whose views are all packed: whole blocks go from
  * the caller's arrays to the caller's arrays in one loop per block, with the per-point
- * arithmetic of bsi_eval_first_block (weights3_at, bicubic_point: same bits). Non-finite
- * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of B. */
+ * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bicubic_point: same bits). Non-finite
+ * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of PB. */
+/* Points per block of bicubic_packed: the set-up per coordinate is shared by more points. */
+#define PB ((size_t)64)
 BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
                                      const double *restrict v, double *const *pos,
                                      double *const *du, double *const *dv)
 {
-    size_t done = n - n % B;
+    size_t done = n - n % PB;
     int first = du != NULL || dv != NULL;
-    for (size_t k0 = 0; k0 < done; k0 += B) {
-        double bu[4][B], bum[3][B], bv[4][B], bvm[3][B], x[B], y[B], bad[B];
-        for (size_t k = 0; k < B; k++) {
+    for (size_t k0 = 0; k0 < done; k0 += PB) {
+        double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB], x[PB], y[PB], bad[PB];
+        for (size_t k = 0; k < PB; k++) {
             int ok = (fabs(u[k0 + k]) <= DBL_MAX) & (fabs(v[k0 + k]) <= DBL_MAX);
             bad[k] = ok ? 0.0 : 1.0;
             x[k] = ok ? u[k0 + k] : 0.0;
             y[k] = ok ? v[k0 + k] : 0.0;
         }
-        weights3(x, bu[0], bum[0]);
-        weights3(y, bv[0], bvm[0]);
+        weights3(PB, x, bu[0], bum[0]);
+        weights3(PB, y, bv[0], bvm[0]);
         for (size_t c = 0; c < p->dim; c++) {
             const double *net = p->hom + c * p->nctrl;
-            double h[B], hu[B], hv[B];
-            bicubic_block(net, bu[0], bum[0], bv[0], bvm[0], h, first ? hu : NULL, hv);
+            double h[PB], hu[PB], hv[PB];
+            bicubic_block(PB, net, bu[0], bum[0], bv[0], bvm[0], h, first ? hu : NULL, hv);
             if (pos != NULL)
-                for (size_t k = 0; k < B; k++)
+                for (size_t k = 0; k < PB; k++)
                     pos[c][k0 + k] = bad[k] != 0.0 ? NAN : h[k];
             if (du != NULL)
-                for (size_t k = 0; k < B; k++)
+                for (size_t k = 0; k < PB; k++)
                     du[c][k0 + k] = bad[k] != 0.0 ? NAN : hu[k];
             if (dv != NULL)
-                for (size_t k = 0; k < B; k++)
+                for (size_t k = 0; k < PB; k++)
                     dv[c][k0 + k] = bad[k] != 0.0 ? NAN : hv[k];
         }
     }
@@ -165,10 +159,10 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
     double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
     if (m == 3 && n == 3) {
-        weights3(u, bu, bum);
-        weights3(v, bv, bvm);
+        weights3(B, u, bu, bum);
+        weights3(B, v, bv, bvm);
         for (size_t c = 0; c < p->ncoord; c++)
-            bicubic_block(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
+            bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
                           first ? hu + c * B : NULL, first ? hv + c * B : NULL);
         return;
     }

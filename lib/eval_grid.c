@@ -22,11 +22,13 @@ typedef struct grid_scratch {
     unsigned char *badv;   /* [COLS] non-finite v */
 } grid_scratch;
 
-/* Contract the u-direction for one row, as bsi_eval_first_block does per column j. */
-static void contract_row(const bs_patch *p, const double *bu, const double *bum, int du, int dv,
-                         double *q, double *qu, double *qv)
+/* Contract the u-direction for one row, as bsi_eval_first_block does per column j; n1 = deg_v + 1
+ * is a parameter so that the cubic case below gets loops of fixed length. */
+BSI_INLINE void contract_row_n(const bs_patch *p, size_t n1, const double *bu, const double *bum,
+                               int du, int dv, double *restrict q, double *restrict qu,
+                               double *restrict qv)
 {
-    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
+    size_t m = p->deg_u, n = n1 - 1;
     for (size_t c = 0; c < p->ncoord; c++) {
         const double *net = p->hom + c * p->nctrl;
         double *qc = q + c * n1, *quc = qu + c * n1, *qvc = qv + c * n1;
@@ -47,6 +49,15 @@ static void contract_row(const bs_patch *p, const double *bu, const double *bum,
                     qvc[j] += w * (row[j + 1] - row[j]);
         }
     }
+}
+
+BSI_HOT static void contract_row(const bs_patch *p, const double *bu, const double *bum, int du,
+                                 int dv, double *q, double *qu, double *qv)
+{
+    if (p->deg_v == 3)
+        contract_row_n(p, 4, bu, bum, du, dv, q, qu, qv);
+    else
+        contract_row_n(p, p->deg_v + 1, bu, bum, du, dv, q, qu, qv);
 }
 
 /* dst[b] = scale * sum_j w[j][b] q[j], j ascending from -0.0 (so the first term is exact), the
@@ -103,6 +114,42 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
     }
 }
 
+/* Cubic rows of a polynomial 3-D patch: the three coordinates' combine4 sums in one loop, so
+ * the column weights are loaded once per point rather than once per coordinate. Positions, and
+ * when s1u != NULL also S_u (scaled by m) and S_v (by 3); same operations per point as
+ * combine() (same bits). */
+#define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
+#define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
+BSI_HOT static void cubic_rows(size_t nb, const double *restrict w, const double *restrict wm,
+                               const double *restrict q, const double *restrict qu,
+                               const double *restrict qv, double m, double *restrict s0,
+                               double *restrict s1, double *restrict s2, double *restrict u0,
+                               double *restrict u1, double *restrict u2, double *restrict d0,
+                               double *restrict d1, double *restrict d2)
+{
+    if (u0 == NULL)
+        for (size_t b = 0; b < nb; b++) {
+            double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
+            s0[b] = VAL(q);
+            s1[b] = VAL(q + 4);
+            s2[b] = VAL(q + 8);
+        }
+    else
+        for (size_t b = 0; b < nb; b++) {
+            double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
+            double v0 = wm[b], v1 = wm[COLS + b], v2 = wm[2 * COLS + b];
+            s0[b] = VAL(q);
+            s1[b] = VAL(q + 4);
+            s2[b] = VAL(q + 8);
+            u0[b] = m * VAL(qu);
+            u1[b] = m * VAL(qu + 4);
+            u2[b] = m * VAL(qu + 8);
+            d0[b] = DV(qv);
+            d1[b] = DV(qv + 4);
+            d2[b] = DV(qv + 8);
+        }
+}
+
 /* Cubic rows of a polynomial 3-D patch, positions and normals only: the three coordinates'
  * combine4 sums (value, S_u scaled by m, S_v by 3) and the regular normal rule, fused so that the
  * derivatives never leave registers. Same operations per point as combine() followed by
@@ -117,21 +164,19 @@ BSI_HOT static void cubic_pos_normal(size_t nb, const double *restrict w, const 
     for (size_t b = 0; b < nb; b++) {
         double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
         double v0 = wm[b], v1 = wm[COLS + b], v2 = wm[2 * COLS + b];
-#define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
-#define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
         s0[b] = VAL(q);
         s1[b] = VAL(q + 4);
         s2[b] = VAL(q + 8);
         bsi_rnormal r = bsi_regular_normal(m * VAL(qu), m * VAL(qu + 4), m * VAL(qu + 8), DV(qv),
                                            DV(qv + 4), DV(qv + 8), zu2, zv2);
-#undef VAL
-#undef DV
         n0[b] = r.n0;
         n1[b] = r.n1;
         n2[b] = r.n2;
         flag[b] = r.flag;
     }
 }
+#undef VAL
+#undef DV
 
 static void fill(double *dst, size_t nb, double x)
 {
@@ -181,6 +226,7 @@ typedef struct grid_call {
     unsigned char *kind;
     int first, normals, wdu, wdv;
     int fused; /* cubic_pos_normal applies */
+    int cubic; /* cubic_rows applies */
     bsi_nscale sc;
 } grid_call;
 
@@ -238,6 +284,21 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     double *ps[BS_MAX_DIM] = {NULL}, *pu[BS_MAX_DIM] = {NULL}, *pv[BS_MAX_DIM] = {NULL};
     if (gc->fused) {
         fused_row(gc, g, t, vcol, nb, idx0);
+        return;
+    }
+    if (gc->cubic) {
+        for (size_t c = 0; c < 3; c++) {
+            ps[c] = target(gc->pos, c, idx0, g->h + c * COLS);
+            pu[c] = target(gc->du, c, idx0, g->hu + c * COLS);
+            pv[c] = target(gc->dv, c, idx0, g->hv + c * COLS);
+        }
+        cubic_rows(nb, g->wv, g->wvm, g->q, g->qu, g->qv, (double)m, ps[0], ps[1], ps[2],
+                   first ? pu[0] : NULL, pu[1], pu[2], pv[0], pv[1], pv[2]);
+        for (size_t c = 0; c < 3; c++) {
+            store(gc->pos, c, idx0, ps[c], nb);
+            store(gc->du, c, idx0, pu[c], nb);
+            store(gc->dv, c, idx0, pv[c], nb);
+        }
         return;
     }
     for (size_t c = 0; c < p->ncoord; c++) {
@@ -385,6 +446,9 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
             anybadu |= !isfinite(bsi_cget(u, a));
         gc.fused = !p->rational && p->dim == 3 && n == 3 && m > 0 && gc.normals && du == NULL &&
                    dv == NULL && !anybadu && !anybadv;
+        /* positions, or positions and first partials, of cubic rows without normals */
+        gc.cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !gc.normals &&
+                   (pos != NULL || gc.first) && !anybadu && !anybadv;
         for (size_t a = 0; a < nu; a++) {
             double t = bsi_cget(u, a);
             int badu = !isfinite(t);

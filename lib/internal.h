@@ -113,6 +113,22 @@ void bsi_bernstein(size_t deg, double t, double *b);
 /* b[0..deg] = B(deg,i)(t) and, when deg > 0, bm[0..deg-1] = B(deg-1,i)(t) (the weights of the
  * first-derivative difference net). b is bit-identical to bsi_bernstein(deg, t, b). */
 void bsi_bernstein_first(size_t deg, double t, double *b, double *bm);
+/* bsi_bernstein_first for degree 3, written out: the same operations (same bits). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void bsi_bernstein3_first(double x, double w[4], double wm[3])
+{
+    double s = 1.0 - x;
+    double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
+    wm[0] = 0.0 + s * a0;
+    wm[1] = x * a0 + s * a1;
+    wm[2] = x * a1;
+    w[0] = 0.0 + s * wm[0];
+    w[1] = x * wm[0] + s * wm[1];
+    w[2] = x * wm[1] + s * wm[2];
+    w[3] = x * wm[2];
+}
 /* b[0..deg] = d^k/dt^k B(deg,i)(t): B(deg-k, .) differenced k times and scaled by deg!/(deg-k)!;
  * all zero when k > deg. */
 void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
