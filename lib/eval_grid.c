@@ -118,9 +118,19 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
  * the column weights are loaded once per point rather than once per coordinate. Positions, and
  * when s1u != NULL also S_u (scaled by m) and S_v (by 3); same operations per point as
  * combine() (same bits). */
+/* The column weights of the point, recomputed from its parameter rather than loaded from the
+ * table: the same bits (bsi_bernstein_first uses bsi_bernstein3_first), and when the outputs are
+ * bound for main memory, seven loads per point stall behind the queued stores and halve the
+ * speed (docs/performance.md). */
+#define CUBIC_WEIGHTS(t)                                                                           \
+    double cw_[4], cwm_[3];                                                                        \
+    bsi_bernstein3_first(t, cw_, cwm_);                                                            \
+    double w0 = cw_[0], w1 = cw_[1], w2 = cw_[2], w3 = cw_[3];                                     \
+    double v0 = cwm_[0], v1 = cwm_[1], v2 = cwm_[2];                                              \
+    (void)v0, (void)v1, (void)v2
 #define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
 #define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
-BSI_HOT static void cubic_rows(size_t nb, const double *restrict w, const double *restrict wm,
+BSI_HOT static void cubic_rows(size_t nb, const double *restrict vcol,
                                const double *restrict q, const double *restrict qu,
                                const double *restrict qv, double m, double *restrict s0,
                                double *restrict s1, double *restrict s2, double *restrict u0,
@@ -129,15 +139,14 @@ BSI_HOT static void cubic_rows(size_t nb, const double *restrict w, const double
 {
     if (u0 == NULL)
         for (size_t b = 0; b < nb; b++) {
-            double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
+            CUBIC_WEIGHTS(vcol[b]);
             s0[b] = VAL(q);
             s1[b] = VAL(q + 4);
             s2[b] = VAL(q + 8);
         }
     else
         for (size_t b = 0; b < nb; b++) {
-            double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
-            double v0 = wm[b], v1 = wm[COLS + b], v2 = wm[2 * COLS + b];
+            CUBIC_WEIGHTS(vcol[b]);
             s0[b] = VAL(q);
             s1[b] = VAL(q + 4);
             s2[b] = VAL(q + 8);
@@ -153,17 +162,19 @@ BSI_HOT static void cubic_rows(size_t nb, const double *restrict w, const double
 /* Cubic rows of a polynomial 3-D patch, positions and normals only: the three coordinates'
  * combine4 sums (value, S_u scaled by m, S_v by 3) and the regular normal rule, fused so that the
  * derivatives never leave registers. Same operations per point as combine() followed by
- * bsi_normal_block (same bits); flag[b] = 1.0 marks points left to bsi_normal. */
-BSI_HOT static void cubic_pos_normal(size_t nb, const double *restrict w, const double *restrict wm,
-                             const double *restrict q, const double *restrict qu,
-                             const double *restrict qv, double m, double zu2, double zv2,
-                             double *restrict s0, double *restrict s1, double *restrict s2,
-                             double *restrict n0, double *restrict n1, double *restrict n2,
-                             double *restrict flag)
+ * bsi_normal_block (same bits); flag[b] = 1.0 marks points left to bsi_normal, and the count
+ * of such points is returned. */
+BSI_HOT static size_t cubic_pos_normal(size_t nb, const double *restrict vcol,
+                                       const double *restrict q, const double *restrict qu,
+                                       const double *restrict qv, double m, double zu2,
+                                       double zv2, double *restrict s0, double *restrict s1,
+                                       double *restrict s2, double *restrict n0,
+                                       double *restrict n1, double *restrict n2,
+                                       double *restrict flag)
 {
+    size_t nflag = 0;
     for (size_t b = 0; b < nb; b++) {
-        double w0 = w[b], w1 = w[COLS + b], w2 = w[2 * COLS + b], w3 = w[3 * COLS + b];
-        double v0 = wm[b], v1 = wm[COLS + b], v2 = wm[2 * COLS + b];
+        CUBIC_WEIGHTS(vcol[b]);
         s0[b] = VAL(q);
         s1[b] = VAL(q + 4);
         s2[b] = VAL(q + 8);
@@ -173,8 +184,11 @@ BSI_HOT static void cubic_pos_normal(size_t nb, const double *restrict w, const 
         n1[b] = r.n1;
         n2[b] = r.n2;
         flag[b] = r.flag;
+        nflag += r.flag != 0.0;
     }
+    return nflag;
 }
+#undef CUBIC_WEIGHTS
 #undef VAL
 #undef DV
 
@@ -242,12 +256,12 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
     }
     unsigned char *kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
     double *flag = g->hu; /* free in this pass */
-    cubic_pos_normal(nb, g->wv, g->wvm, g->q, g->qu, g->qv, (double)gc->p->deg_u,
+    size_t nflag = cubic_pos_normal(nb, vcol, g->q, g->qu, g->qv, (double)gc->p->deg_u,
                      gc->sc.zu * gc->sc.zu, gc->sc.zv * gc->sc.zv, ps[0], ps[1], ps[2], pn[0],
                      pn[1], pn[2], flag);
     for (size_t b = 0; b < nb; b++)
         kd[b] = BS_NORMAL_REGULAR;
-    for (size_t b = 0; b < nb; b++) {
+    for (size_t b = 0; nflag > 0 && b < nb; b++) { /* most rows have no flagged point */
         if (flag[b] == 0.0)
             continue;
         /* the derivatives again, by the same sums, for the full rule */
@@ -292,7 +306,7 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             pu[c] = target(gc->du, c, idx0, g->hu + c * COLS);
             pv[c] = target(gc->dv, c, idx0, g->hv + c * COLS);
         }
-        cubic_rows(nb, g->wv, g->wvm, g->q, g->qu, g->qv, (double)m, ps[0], ps[1], ps[2],
+        cubic_rows(nb, vcol, g->q, g->qu, g->qv, (double)m, ps[0], ps[1], ps[2],
                    first ? pu[0] : NULL, pu[1], pu[2], pv[0], pv[1], pv[2]);
         for (size_t c = 0; c < 3; c++) {
             store(gc->pos, c, idx0, ps[c], nb);

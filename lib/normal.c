@@ -122,7 +122,6 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
     }
     double scratch[(KD + 1) * (BS_MAX_DEGREE + 1) * 2 + (BS_MAX_DEGREE + 1) + (KD + 1) * (KD + 1) * 4];
     double tab[(KD + 1) * (KD + 1) * 3];
-    bsi_deriv_table(p, u, v, KD, KD, scratch, tab);
     double A[KD][3], Bv[KD][3], binom[KD + 1], fact = 1.0, pu[KD + 1], pv[KD + 1];
     for (int k = 0; k <= KD; k++) { /* the values of ipow(du, k), ipow(dv, k) */
         pu[k] = ipow(du, k);
@@ -132,34 +131,38 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
         A[0][c] = a0[c];
         Bv[0][c] = b0[c];
     }
-    for (int k = 1; k < KD; k++) {
-        fact *= k;
+    /* Order by order, so that the usual case (the first order settles it) needs partials up to
+     * total order 2 only. A table entry does not depend on the table's size, so the terms are
+     * the same whichever order stops the search. */
+    for (int K = 1; K < KD; K++) {
+        size_t kt = (size_t)K + 2; /* the table holds S^(a,b) for a, b <= K + 1 */
+        bsi_deriv_table(p, u, v, (unsigned)K + 1, (unsigned)K + 1, scratch, tab);
+        fact *= K;
         binom[0] = 1.0;
-        for (int a = 1; a <= k; a++)
-            binom[a] = binom[a - 1] * (k - a + 1) / a;
+        for (int a = 1; a <= K; a++)
+            binom[a] = binom[a - 1] * (K - a + 1) / a;
         double na = 0.0, nb = 0.0;
-        for (int a = 0; a <= k; a++) {
-            double w = fabs(binom[a] * pu[a] * pv[k - a]);
-            na += w * deriv_noise(p, sc, a + 1, k - a);
-            nb += w * deriv_noise(p, sc, a, k - a + 1);
+        for (int a = 0; a <= K; a++) {
+            double w = fabs(binom[a] * pu[a] * pv[K - a]);
+            na += w * deriv_noise(p, sc, a + 1, K - a);
+            nb += w * deriv_noise(p, sc, a, K - a + 1);
         }
         for (int c = 0; c < 3; c++) {
             double sa = 0.0, sb = 0.0;
-            for (int a = 0; a <= k; a++) {
-                double w = binom[a] * pu[a] * pv[k - a];
-                sa += w * tab[((size_t)(a + 1) * (KD + 1) + (size_t)(k - a)) * 3 + (size_t)c];
-                sb += w * tab[((size_t)a * (KD + 1) + (size_t)(k - a + 1)) * 3 + (size_t)c];
+            for (int a = 0; a <= K; a++) {
+                double w = binom[a] * pu[a] * pv[K - a];
+                sa += w * tab[((size_t)(a + 1) * kt + (size_t)(K - a)) * 3 + (size_t)c];
+                sb += w * tab[((size_t)a * kt + (size_t)(K - a + 1)) * 3 + (size_t)c];
             }
-            A[k][c] = sa / fact;
-            Bv[k][c] = sb / fact;
+            A[K][c] = sa / fact;
+            Bv[K][c] = sb / fact;
         }
         /* A term within rounding of zero is zero: noise must not pass for a direction. */
-        if (norm3(A[k]) <= CLEAN * na / fact)
-            A[k][0] = A[k][1] = A[k][2] = 0.0;
-        if (norm3(Bv[k]) <= CLEAN * nb / fact)
-            Bv[k][0] = Bv[k][1] = Bv[k][2] = 0.0;
-    }
-    for (int K = 1; K < KD; K++) {
+        if (norm3(A[K]) <= CLEAN * na / fact)
+            A[K][0] = A[K][1] = A[K][2] = 0.0;
+        if (norm3(Bv[K]) <= CLEAN * nb / fact)
+            Bv[K][0] = Bv[K][1] = Bv[K][2] = 0.0;
+
         double ck[3] = {0.0, 0.0, 0.0}, mag = 0.0;
         for (int k = 0; k <= K; k++) {
             double x[3];
