@@ -107,7 +107,7 @@ BSI_INLINE void bicubic_block(size_t L, const double *restrict net, const double
  * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bicubic_point: same bits). Non-finite
  * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of PB. */
 /* Points per block of bicubic_packed: the set-up per coordinate is shared by more points. */
-#define PB ((size_t)64)
+#define PB ((size_t)32)
 BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
                                      const double *restrict v, double *const *pos,
                                      double *const *du, double *const *dv)
@@ -115,28 +115,26 @@ BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *
     size_t done = n - n % PB;
     int first = du != NULL || dv != NULL;
     for (size_t k0 = 0; k0 < done; k0 += PB) {
-        double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB], x[PB], y[PB], bad[PB];
+        double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB], x[PB], y[PB];
+        size_t nbad = 0;
         for (size_t k = 0; k < PB; k++) {
             int ok = (fabs(u[k0 + k]) <= DBL_MAX) & (fabs(v[k0 + k]) <= DBL_MAX);
-            bad[k] = ok ? 0.0 : 1.0;
+            nbad += !ok;
             x[k] = ok ? u[k0 + k] : 0.0;
             y[k] = ok ? v[k0 + k] : 0.0;
         }
         weights3(PB, x, bu[0], bum[0]);
         weights3(PB, y, bv[0], bvm[0]);
         for (size_t c = 0; c < p->dim; c++) {
-            const double *net = p->hom + c * p->nctrl;
-            double h[PB], hu[PB], hv[PB];
-            bicubic_block(PB, net, bu[0], bum[0], bv[0], bvm[0], h, first ? hu : NULL, hv);
-            if (pos != NULL)
-                for (size_t k = 0; k < PB; k++)
-                    pos[c][k0 + k] = bad[k] != 0.0 ? NAN : h[k];
-            if (du != NULL)
-                for (size_t k = 0; k < PB; k++)
-                    du[c][k0 + k] = bad[k] != 0.0 ? NAN : hu[k];
-            if (dv != NULL)
-                for (size_t k = 0; k < PB; k++)
-                    dv[c][k0 + k] = bad[k] != 0.0 ? NAN : hv[k];
+            /* straight into the outputs; a result not asked for goes to scratch */
+            double th[PB], thu[PB], thv[PB];
+            double *h = pos != NULL ? pos[c] + k0 : th;
+            double *hu = du != NULL ? du[c] + k0 : thu, *hv = dv != NULL ? dv[c] + k0 : thv;
+            bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h,
+                          first ? hu : NULL, hv);
+            for (size_t k = 0; nbad > 0 && k < PB; k++)
+                if (!(fabs(u[k0 + k]) <= DBL_MAX) || !(fabs(v[k0 + k]) <= DBL_MAX))
+                    h[k] = hu[k] = hv[k] = NAN;
         }
     }
     return done;

@@ -96,8 +96,15 @@ static void batches(const bs_patch *p, const double *u, const double *v)
 /* The built-in teapot (bicubic, with collapsed edges) through the paths its degree has kernels
  * for: grid positions + normals alone (the fused path), grid and scattered first partials,
  * scattered normals. Only mixed into the digest, which .ci/isa.sh compares across instruction sets. */
-static void teapot(const double *u, const double *v)
+static void teapot(const double *u0, const double *v0)
 {
+    /* non-finite parameters too, inside a block of the packed path and in the tail */
+    double u[NPT], v[NPT];
+    memcpy(u, u0, sizeof u);
+    memcpy(v, v0, sizeof v);
+    u[37] = NAN;
+    v[70] = INFINITY;
+    u[NPT - 2] = -INFINITY;
     enum { G = 33 };
     static double grid[9][G * G], pts[9][NPT];
     static unsigned char gk[G * G], pk[NPT];
@@ -129,9 +136,11 @@ static void teapot(const double *u, const double *v)
         CHECK_STATUS(bs_patch_eval(p, NPT, &cu, &cv, sv, sv + 3, sv + 6), BS_OK);
         int same = 1;
         for (size_t c = 0; c < 9; c++)
-            for (size_t k = 0; k < NPT; k++)
-                same &= memcmp(&pts[c][k], &wide[c][2 * k], sizeof(double)) == 0;
+            for (size_t i = 0; i < NPT; i++)
+                same &= memcmp(&pts[c][i], &wide[c][2 * i], sizeof(double)) == 0;
         CHECKF(same, "teapot patch %zu: strided views differ from packed ones", k);
+        CHECKF(isnan(pts[0][37]) && isnan(pts[5][70]) && isnan(pts[8][NPT - 2]) && !isnan(pts[0][36]),
+               "teapot patch %zu: non-finite parameters must give NaN, and only there", k);
         CHECK_STATUS(bs_patch_eval(p, NPT, &cu, &cv, pv, NULL, NULL), BS_OK);
         mix(pts, 3 * sizeof pts[0]);
         CHECK_STATUS(bs_patch_eval_normal(p, NPT, &cu, &cv, pv, pv + 3, pk), BS_OK);
