@@ -106,8 +106,8 @@ BSI_INLINE void bicubic_block(size_t L, const double *restrict net, const double
  * the caller's arrays to the caller's arrays in one loop per block, with the per-point
  * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bicubic_point: same bits). Non-finite
  * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of PB. */
-/* Points per block of bicubic_packed: the set-up per coordinate is shared by more points. */
-#define PB ((size_t)32)
+/* Points per block of the bicubic paths: the set-up per coordinate is shared by more points. */
+#define PB BSI_CHUNK
 BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
                                      const double *restrict v, double *const *pos,
                                      double *const *du, double *const *dv)
@@ -138,6 +138,17 @@ BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *
         }
     }
     return done;
+}
+
+BSI_HOT void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v,
+                                     double *h, double *hu, double *hv)
+{
+    double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB];
+    weights3(PB, u, bu[0], bum[0]);
+    weights3(PB, v, bv[0], bvm[0]);
+    for (size_t c = 0; c < p->dim; c++)
+        bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h + c * PB,
+                      hu + c * PB, hv + c * PB);
 }
 
 /* Element 0 of each of the k views when all are packed (stride 0 or 8), else 0. */
@@ -271,6 +282,18 @@ static void put_block(const bs_view *views, size_t dim, size_t idx0, const doubl
 void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
                     double *ub, double *vb, int *bad)
 {
+    if (nb == BSI_BLOCK && bsi_stride(u->stride) == (ptrdiff_t)sizeof(double) &&
+        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double)) {
+        /* a whole block from packed arrays: the same values, without a branch per point */
+        const double *x = (const double *)u->data + k0, *y = (const double *)v->data + k0;
+        for (size_t k = 0; k < BSI_BLOCK; k++) {
+            int ok = (fabs(x[k]) <= DBL_MAX) & (fabs(y[k]) <= DBL_MAX);
+            bad[k] = !ok;
+            ub[k] = ok ? x[k] : 0.0;
+            vb[k] = ok ? y[k] : 0.0;
+        }
+        return;
+    }
     for (size_t k = 0; k < BSI_BLOCK; k++) {
         ub[k] = vb[k] = 0.0;
         bad[k] = 0;

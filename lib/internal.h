@@ -170,6 +170,14 @@ void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
 void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
                           double *h, double *hu, double *hv);
 
+/* Points per chunk of the bicubic kernels, which share their set-up over more points. */
+#define BSI_CHUNK ((size_t)32)
+
+/* bsi_eval_first_block with first != 0 for a polynomial bicubic patch, on BSI_CHUNK finite
+ * parameter pairs; outputs [dim][BSI_CHUNK]. The same arithmetic per point (same bits). */
+void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v, double *h,
+                             double *hu, double *hv);
+
 /* Cartesian S (and S_u, S_v when su != NULL) of one point from its homogeneous values; element c
  * of h, hu, hv is at index c*stride. */
 void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,

@@ -304,36 +304,45 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
         return st;
     bsi_nscale sc;
     bsi_normal_scale(p, &sc);
-    double h[4 * B], hu[4 * B], hv[4 * B];
-    for (size_t k0 = 0; k0 < n; k0 += B) {
-        size_t nb = n - k0 < B ? n - k0 : B;
-        double ub[B], vb[B];
-        int bad[B];
-        bsi_load_block(u, v, k0, nb, ub, vb, bad);
-        bsi_eval_first_block(p, ub, vb, 1, h, hu, hv);
+    /* Polynomial bicubic patches go in chunks of BSI_CHUNK points, others in blocks of
+     * BSI_BLOCK: the same arithmetic per point either way. */
+    int chunked = !p->rational && p->deg_u == 3 && p->deg_v == 3;
+    size_t L = chunked ? BSI_CHUNK : B;
+    double h[4 * BSI_CHUNK], hu[4 * BSI_CHUNK], hv[4 * BSI_CHUNK];
+    for (size_t k0 = 0; k0 < n; k0 += L) {
+        size_t nb = n - k0 < L ? n - k0 : L;
+        double ub[BSI_CHUNK], vb[BSI_CHUNK];
+        int bad[BSI_CHUNK];
+        for (size_t s = 0; s < L; s += B)
+            bsi_load_block(u, v, k0 + s, nb > s ? (nb - s < B ? nb - s : B) : 0, ub + s, vb + s,
+                           bad + s);
+        if (chunked)
+            bsi_bicubic_first_chunk(p, ub, vb, h, hu, hv);
+        else
+            bsi_eval_first_block(p, ub, vb, 1, h, hu, hv);
         if (p->rational)
             for (size_t k = 0; k < nb; k++) {
                 double s[3], su[3], sv[3];
-                bsi_project_first(p, h + k, hu + k, hv + k, B, s, su, sv);
+                bsi_project_first(p, h + k, hu + k, hv + k, L, s, su, sv);
                 for (size_t c = 0; c < 3; c++) {
-                    h[c * B + k] = s[c];
-                    hu[c * B + k] = su[c];
-                    hv[c * B + k] = sv[c];
+                    h[c * L + k] = s[c];
+                    hu[c * L + k] = su[c];
+                    hv[c * L + k] = sv[c];
                 }
             }
-        double nv[3 * B];
-        unsigned char kd[B];
-        const double *pu[3] = {hu, hu + B, hu + 2 * B}, *pv[3] = {hv, hv + B, hv + 2 * B};
-        double *pn[3] = {nv, nv + B, nv + 2 * B};
+        double nv[3 * BSI_CHUNK];
+        unsigned char kd[BSI_CHUNK];
+        const double *pu[3] = {hu, hu + L, hu + 2 * L}, *pv[3] = {hv, hv + L, hv + 2 * L};
+        double *pn[3] = {nv, nv + L, nv + 2 * L};
         bsi_normal_block(p, &sc, nb, ub, 1, vb, pu, pv, pn, kd);
         for (size_t k = 0; k < nb; k++)
             if (bad[k]) {
-                h[k] = h[B + k] = h[2 * B + k] = nv[k] = nv[B + k] = nv[2 * B + k] = NAN;
+                h[k] = h[L + k] = h[2 * L + k] = nv[k] = nv[L + k] = nv[2 * L + k] = NAN;
                 kd[k] = BS_NORMAL_UNDEFINED;
             }
         for (size_t c = 0; c < 3; c++) {
-            put_coord(pos, c, k0, h + c * B, nb);
-            put_coord(nrm, c, k0, nv + c * B, nb);
+            put_coord(pos, c, k0, h + c * L, nb);
+            put_coord(nrm, c, k0, nv + c * L, nb);
         }
         for (size_t k = 0; kind != NULL && k < nb; k++)
             kind[k0 + k] = kd[k];
