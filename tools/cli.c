@@ -21,17 +21,57 @@ int cli_fail(const char *cmd, int code, const char *fmt, ...)
     return code;
 }
 
-int cli_take_builtin(int argc, char **argv, int *i, cli_input *in)
+int cli_usage_error(const char *cmd, const char *msg, const char *arg)
+{
+    return cli_fail(cmd, CLI_USAGE, "%s%s%s (try 'bezsurf %s --help')", msg, arg ? ": " : "", arg ? arg : "", cmd);
+}
+
+/* --builtin NAME or -b NAME: 1 when taken (with *i on NAME), -1 after a usage error, 0 otherwise. */
+static int take_builtin(const char *cmd, int argc, char **argv, int *i, cli_input *in)
 {
     if (strcmp(argv[*i], "--builtin") != 0 && strcmp(argv[*i], "-b") != 0)
         return 0;
     if (*i + 1 >= argc) {
-        cli_fail(argv[0], CLI_USAGE, "%s needs a name (teapot, teacup or teaspoon)", argv[*i]);
+        cli_fail(cmd, CLI_USAGE, "%s needs a name (teapot, teacup or teaspoon)", argv[*i]);
         return -1;
     }
     in->builtin = argv[++*i];
     in->path = NULL;
     return 1;
+}
+
+int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in)
+{
+    const char *a = argv[*i];
+    int b = take_builtin(cmd, argc, argv, i, in);
+    if (b != 0)
+        return b > 0 ? CLI_NEXT : CLI_USAGE;
+    if (cli_is_help(a)) {
+        fputs(usage, stdout);
+        return cli_finish(cmd);
+    }
+    if (a[0] == '-' && a[1] != '\0')
+        return CLI_NOT_COMMON;
+    if (in->path != NULL)
+        return cli_usage_error(cmd, "more than one input file", a);
+    in->path = a; /* "-" included: standard input */
+    return CLI_NEXT;
+}
+
+void cli_default_output(const cli_input *in, const char *ext, char *out, size_t cap)
+{
+    const char *base = in->builtin ? in->builtin : "teapot";
+    size_t len = strlen(base);
+    if (in->path != NULL && strcmp(in->path, "-") == 0) {
+        base = "surface";
+        len = strlen(base);
+    } else if (in->path != NULL) {
+        const char *slash = strrchr(in->path, '/');
+        base = slash ? slash + 1 : in->path;
+        const char *dot = strrchr(base, '.');
+        len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
+    }
+    snprintf(out, cap, "%.*s%s", (int)len, base, ext);
 }
 
 const char *cli_input_name(const cli_input *in)

@@ -6,16 +6,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void help(void)
-{
-    printf("usage: bezsurf continuity [--builtin NAME] [--tol T] [--samples N] [FILE]\n"
-           "One line per shared edge (sides whose control points agree within T per coordinate,\n"
-           "default 1e-9):\n"
-           "  patch_a side_a patch_b side_b reversed c0_gap g1_degrees c1 c1_defect flipped samples\n"
-           "sides are v0 (v=0), u1 (u=1), v1 (v=1), u0 (u=0); g1_degrees is the largest angle between\n"
-           "the tangent planes over N samples along the edge (default 32); c1 is 1 when the\n"
-           "cross-boundary derivatives are opposite within T. Then a summary and the open edges.\n");
-}
+static const char usage[] =
+    "usage: bezsurf continuity [--builtin NAME] [--tol T] [--samples N] [FILE]\n"
+    "One line per shared edge (sides whose control points agree within T per coordinate,\n"
+    "default 1e-9):\n"
+    "  patch_a side_a patch_b side_b reversed c0_gap g1_degrees c1 c1_defect flipped samples\n"
+    "sides are v0 (v=0), u1 (u=1), v1 (v=1), u0 (u=0); g1_degrees is the largest angle between\n"
+    "the tangent planes over N samples along the edge (default 32); c1 is 1 when the\n"
+    "cross-boundary derivatives are opposite within T. Then a summary and the open edges.\n";
 
 int cmd_continuity(int argc, char **argv)
 {
@@ -24,27 +22,19 @@ int cmd_continuity(int argc, char **argv)
     double tol = 1e-9;
     size_t samples = 32;
     for (int i = 1; i < argc; i++) {
-        int b = cli_take_builtin(argc, argv, &i, &in);
-        if (b < 0)
-            return CLI_USAGE;
-        if (b > 0)
+        int r = cli_common_arg(cmd, usage, argc, argv, &i, &in);
+        if (r == CLI_NEXT)
             continue;
-        if (cli_is_help(argv[i])) {
-            help();
-            return cli_finish(cmd);
-        }
+        if (r != CLI_NOT_COMMON)
+            return r;
         if (strcmp(argv[i], "--tol") == 0) {
             if (i + 1 >= argc || !cli_parse_double(argv[++i], &tol) || tol < 0)
                 return cli_fail(cmd, CLI_USAGE, "--tol needs a finite number >= 0");
         } else if (strcmp(argv[i], "--samples") == 0) {
             if (i + 1 >= argc || !cli_parse_size(argv[++i], &samples) || samples < 1 || samples > 4096)
                 return cli_fail(cmd, CLI_USAGE, "--samples needs an integer from 1 to 4096");
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_fail(cmd, CLI_USAGE, "unknown option '%s' (try 'bezsurf continuity --help')", argv[i]);
-        } else if (in.path != NULL) {
-            return cli_fail(cmd, CLI_USAGE, "more than one input file");
         } else {
-            in.path = argv[i];
+            return cli_usage_error(cmd, "unknown option", argv[i]);
         }
     }
     bs_surface *s;

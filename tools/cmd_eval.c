@@ -5,14 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void help(void)
-{
-    printf("usage: bezsurf eval [--builtin NAME] [--normals] --point ID U V [--point ID U V ...] [FILE]\n"
-           "Evaluate the surface on patch ID at (U,V) and print one line per point:\n"
-           "  ID U V x y z                     (--normals adds: nx ny nz kind)\n"
-           "kind is 0 (regular), 1 (limit normal at a degenerate point) or 2 (undefined).\n"
-           "Numbers are printed with the fewest digits (at most 17) that read back exactly. U and V may lie outside [0,1].\n");
-}
+static const char usage[] =
+    "usage: bezsurf eval [--builtin NAME] [--normals] --point ID U V [--point ID U V ...] [FILE]\n"
+    "Evaluate the surface on patch ID at (U,V) and print one line per point:\n"
+    "  ID U V x y z                     (--normals adds: nx ny nz kind)\n"
+    "kind is 0 (regular), 1 (limit normal at a degenerate point) or 2 (undefined).\n"
+    "Numbers are printed with the fewest digits (at most 17) that read back exactly. U and V may lie outside [0,1].\n";
 
 int cmd_eval(int argc, char **argv)
 {
@@ -26,16 +24,14 @@ int cmd_eval(int argc, char **argv)
     unsigned char *kind = malloc(maxn);
     int rc = (ids && uv && out && kind) ? CLI_OK : cli_fail(cmd, CLI_INTERNAL, "out of memory");
     for (int i = 1; rc == CLI_OK && i < argc; i++) {
-        int b = cli_take_builtin(argc, argv, &i, &in);
-        if (b < 0)
-            rc = CLI_USAGE;
-        else if (b > 0)
+        int r = cli_common_arg(cmd, usage, argc, argv, &i, &in);
+        if (r == CLI_NEXT)
             continue;
-        else if (cli_is_help(argv[i])) {
-            help();
-            rc = cli_finish(cmd);
+        if (r != CLI_NOT_COMMON) {
+            rc = r; /* after --help too: nothing more to do */
             goto done;
-        } else if (strcmp(argv[i], "--normals") == 0) {
+        }
+        if (strcmp(argv[i], "--normals") == 0) {
             normals = 1;
         } else if (strcmp(argv[i], "--point") == 0) {
             size_t id;
@@ -45,12 +41,8 @@ int cmd_eval(int argc, char **argv)
             else
                 ids[n++] = (uint32_t)id;
             i += 3;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            rc = cli_fail(cmd, CLI_USAGE, "unknown option '%s' (try 'bezsurf eval --help')", argv[i]);
-        } else if (in.path != NULL) {
-            rc = cli_fail(cmd, CLI_USAGE, "more than one input file");
         } else {
-            in.path = argv[i];
+            rc = cli_usage_error(cmd, "unknown option", argv[i]);
         }
     }
     if (rc == CLI_OK && n == 0)

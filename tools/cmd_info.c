@@ -4,13 +4,11 @@
 #include <stdio.h>
 #include <string.h>
 
-static void help(void)
-{
-    printf("usage: bezsurf info [--builtin NAME] [--tol T] [FILE]\n"
-           "Print the number of patches, their degrees, the bounds of the control points (which\n"
-           "contain the surface) and the numbers of shared and open edges (sides matched when their\n"
-           "control points agree within T per coordinate, default 1e-9).\n");
-}
+static const char usage[] =
+    "usage: bezsurf info [--builtin NAME] [--tol T] [FILE]\n"
+    "Print the number of patches, their degrees, the bounds of the control points (which\n"
+    "contain the surface) and the numbers of shared and open edges (sides matched when their\n"
+    "control points agree within T per coordinate, default 1e-9).\n";
 
 int cmd_info(int argc, char **argv)
 {
@@ -18,24 +16,16 @@ int cmd_info(int argc, char **argv)
     cli_input in = {NULL, "teapot"};
     double tol = 1e-9;
     for (int i = 1; i < argc; i++) {
-        int b = cli_take_builtin(argc, argv, &i, &in);
-        if (b < 0)
-            return CLI_USAGE;
-        if (b > 0)
+        int r = cli_common_arg(cmd, usage, argc, argv, &i, &in);
+        if (r == CLI_NEXT)
             continue;
-        if (cli_is_help(argv[i])) {
-            help();
-            return cli_finish(cmd);
-        }
+        if (r != CLI_NOT_COMMON)
+            return r;
         if (strcmp(argv[i], "--tol") == 0) {
             if (i + 1 >= argc || !cli_parse_double(argv[++i], &tol) || tol < 0)
                 return cli_fail(cmd, CLI_USAGE, "--tol needs a finite number >= 0");
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_fail(cmd, CLI_USAGE, "unknown option '%s' (try 'bezsurf info --help')", argv[i]);
-        } else if (in.path != NULL) {
-            return cli_fail(cmd, CLI_USAGE, "more than one input file");
         } else {
-            in.path = argv[i];
+            return cli_usage_error(cmd, "unknown option", argv[i]);
         }
     }
     bs_surface *s;

@@ -29,11 +29,6 @@ static const char usage[] =
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
 
-static int bad_usage(const char *msg, const char *arg)
-{
-    return cli_fail("render", CLI_USAGE, "%s%s%s (try 'bezsurf render --help')", msg, arg ? ": " : "", arg ? arg : "");
-}
-
 typedef struct render_opts {
     cli_input in;
     const char *output;
@@ -46,16 +41,12 @@ typedef struct render_opts {
 static int parse_args(int argc, char **argv, render_opts *o)
 {
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
-        int b = cli_take_builtin(argc, argv, &i, &o->in);
-        if (b < 0)
-            return CLI_USAGE;
-        if (b > 0)
+        int r = cli_common_arg("render", usage, argc, argv, &i, &o->in);
+        if (r == CLI_NEXT)
             continue;
-        if (cli_is_help(a)) {
-            fputs(usage, stdout);
-            return cli_finish("render");
-        }
+        if (r != CLI_NOT_COMMON)
+            return r;
+        const char *a = argv[i];
         if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0) {
             if (a[2] == 'n')
                 o->nets = 1;
@@ -63,15 +54,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
                 o->split = 1;
             continue;
         }
-        if (a[0] != '-' || a[1] == '\0') {
-            if (o->in.path != NULL)
-                return bad_usage("more than one input", a);
-            o->in.path = a;
-            continue;
-        }
-        if (val == NULL)
-            return bad_usage("missing value for", a);
-        i++;
+        if (i + 1 >= argc)
+            return cli_usage_error("render", "missing value for", a);
+        const char *val = argv[++i];
         if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
             o->output = val;
         } else if (strcmp(a, "--size") == 0) {
@@ -79,49 +64,49 @@ static int parse_args(int argc, char **argv, render_opts *o)
             snprintf(buf, sizeof buf, "%s", val);
             char *x = strchr(buf, 'x');
             if (x == NULL)
-                return bad_usage("bad size", val);
+                return cli_usage_error("render", "bad size", val);
             *x = '\0';
             if (!cli_parse_size(buf, &o->w) || !cli_parse_size(x + 1, &o->h) || o->w < 16 ||
                 o->h < 16 || o->w > 8192 || o->h > 8192)
-                return bad_usage("bad size", val);
+                return cli_usage_error("render", "bad size", val);
         } else if (strcmp(a, "-a") == 0 || strcmp(a, "--azimuth") == 0) {
             if (!cli_parse_double(val, &o->azimuth))
-                return bad_usage("bad azimuth", val);
+                return cli_usage_error("render", "bad azimuth", val);
         } else if (strcmp(a, "-e") == 0 || strcmp(a, "--elevation") == 0) {
             if (!cli_parse_double(val, &o->elevation) || fabs(o->elevation) > 90.0)
-                return bad_usage("bad elevation", val);
+                return cli_usage_error("render", "bad elevation", val);
         } else if (strcmp(a, "--up") == 0) {
             if (strcmp(val, "y") != 0 && strcmp(val, "z") != 0)
-                return bad_usage("bad up axis", val);
+                return cli_usage_error("render", "bad up axis", val);
             o->up_y = val[0] == 'y';
             o->up_given = 1;
         } else if (strcmp(a, "-r") == 0 || strcmp(a, "--relative") == 0) {
             if (!cli_parse_double(val, &o->rel) || !(o->rel > 0.0))
-                return bad_usage("bad tolerance", val);
+                return cli_usage_error("render", "bad tolerance", val);
         } else if (strcmp(a, "--color") == 0) {
             char buf[128], *p = buf;
             snprintf(buf, sizeof buf, "%s", val);
             for (int k = 0; k < 3; k++) {
                 char *comma = strchr(p, ',');
                 if ((comma == NULL) != (k == 2))
-                    return bad_usage("bad colour", val);
+                    return cli_usage_error("render", "bad colour", val);
                 if (comma)
                     *comma = '\0';
                 if (!cli_parse_double(p, &o->color[k]) || o->color[k] < 0.0 || o->color[k] > 1.0)
-                    return bad_usage("bad colour", val);
+                    return cli_usage_error("render", "bad colour", val);
                 p = comma ? comma + 1 : p;
             }
         } else if (strcmp(a, "--patch") == 0) {
             if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
-                return bad_usage("bad patch id", val);
+                return cli_usage_error("render", "bad patch id", val);
         } else if (strcmp(a, "--ss") == 0) {
             if (!cli_parse_size(val, &o->ss) || o->ss < 1 || o->ss > 4)
-                return bad_usage("bad supersampling", val);
+                return cli_usage_error("render", "bad supersampling", val);
         } else {
-            return bad_usage("unknown option", a);
+            return cli_usage_error("render", "unknown option", a);
         }
     }
-    return -1; /* go on */
+    return CLI_NEXT; /* go on */
 }
 
 /* Box of all control points (it contains the surface). */
@@ -170,24 +155,6 @@ static void draw_nets(raster *r, const bs_surface *s)
             }
         free(net);
     }
-}
-
-/* Default output name: the input file's name without directory and extension, or the built-in's
- * name ("surface" for standard input), followed by ext. */
-static void default_output(const cli_input *in, const char *ext, char *out, size_t cap)
-{
-    const char *base = in->builtin ? in->builtin : "teapot";
-    size_t len = strlen(base);
-    if (in->path != NULL && strcmp(in->path, "-") == 0) {
-        base = "surface";
-        len = strlen(base);
-    } else if (in->path != NULL) {
-        const char *slash = strrchr(in->path, '/');
-        base = slash ? slash + 1 : in->path;
-        const char *dot = strrchr(base, '.');
-        len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-    }
-    snprintf(out, cap, "%.*s%s", (int)len, base, ext);
 }
 
 static int render(const render_opts *o, const bs_surface *s)
@@ -270,7 +237,7 @@ int cmd_render(int argc, char **argv)
         o.up_y = 1; /* the teacup and the teaspoon of the tea set are modelled with y up */
     char outbuf[1024];
     if (o.output == NULL) {
-        default_output(&o.in, ".png", outbuf, sizeof outbuf);
+        cli_default_output(&o.in, ".png", outbuf, sizeof outbuf);
         o.output = outbuf;
     }
     bs_surface *s = NULL;

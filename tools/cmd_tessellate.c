@@ -21,24 +21,6 @@ static const char usage[] =
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
 
-/* Default output name: the input file's name without directory and extension, or the built-in's
- * name ("surface" for standard input), followed by ext. */
-static void default_output(const cli_input *in, const char *ext, char *out, size_t cap)
-{
-    const char *base = in->builtin ? in->builtin : "teapot";
-    size_t len = strlen(base);
-    if (in->path != NULL && strcmp(in->path, "-") == 0) {
-        base = "surface";
-        len = strlen(base);
-    } else if (in->path != NULL) {
-        const char *slash = strrchr(in->path, '/');
-        base = slash ? slash + 1 : in->path;
-        const char *dot = strrchr(base, '.');
-        len = dot && dot != base ? (size_t)(dot - base) : strlen(base);
-    }
-    snprintf(out, cap, "%.*s%s", (int)len, base, ext);
-}
-
 static int format_of(const char *name, int *format)
 {
     static const struct { const char *name; int format; } table[] = {
@@ -62,12 +44,6 @@ static int format_of_path(const char *path)
     return format;
 }
 
-static int bad_usage(const char *msg, const char *arg)
-{
-    return cli_fail("tessellate", CLI_USAGE, "%s%s%s (try 'bezsurf tessellate --help')", msg, arg ? ": " : "",
-                    arg ? arg : "");
-}
-
 int cmd_tessellate(int argc, char **argv)
 {
     cli_input in = {NULL, "teapot"};
@@ -76,59 +52,51 @@ int cmd_tessellate(int argc, char **argv)
     double tol = 1e-3;
     size_t nu = 0, nv = 0;
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        int takes = 1, b = cli_take_builtin(argc, argv, &i, &in);
-        if (b < 0)
-            return CLI_USAGE;
-        if (b > 0)
+        int r = cli_common_arg("tessellate", usage, argc, argv, &i, &in);
+        if (r == CLI_NEXT)
             continue;
-        if (cli_is_help(a)) {
-            fputs(usage, stdout);
-            return cli_finish("tessellate");
-        } else if (strcmp(a, "-s") == 0 || strcmp(a, "--strips") == 0) {
+        if (r != CLI_NOT_COMMON)
+            return r;
+        const char *a = argv[i];
+        if (strcmp(a, "-s") == 0 || strcmp(a, "--strips") == 0) {
             flags |= BS_TESS_STRIPS;
-            takes = 0;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            if (val == NULL)
-                return bad_usage("missing value for", a);
-            if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
-                output = val;
-            } else if (strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0) {
-                if (!format_of(val, &format))
-                    return bad_usage("unknown format", val);
-            } else if (strcmp(a, "-u") == 0 || strcmp(a, "--uniform") == 0) {
-                char buf[64];
-                snprintf(buf, sizeof buf, "%s", val);
-                char *x = strchr(buf, 'x');
-                if (x != NULL)
-                    *x = '\0';
-                if (!cli_parse_size(buf, &nu) || (x && !cli_parse_size(x + 1, &nv)))
-                    return bad_usage("bad rate", val);
-                if (x == NULL)
-                    nv = nu;
-                mode = 2;
-            } else if (strcmp(a, "-t") == 0 || strcmp(a, "--tolerance") == 0 || strcmp(a, "-r") == 0 ||
-                       strcmp(a, "--relative") == 0) {
-                if (!cli_parse_double(val, &tol) || !(tol > 0.0))
-                    return bad_usage("bad tolerance", val);
-                mode = (a[1] == 't' || a[2] == 't') ? 1 : 0;
-            } else {
-                return bad_usage("unknown option", a);
-            }
-        } else {
-            if (in.path != NULL)
-                return bad_usage("more than one input", a);
-            in.path = a;
-            takes = 0;
+            continue;
         }
-        i += takes;
+        if (i + 1 >= argc)
+            return cli_usage_error("tessellate", "missing value for", a);
+        const char *val = argv[++i];
+        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            output = val;
+        } else if (strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0) {
+            if (!format_of(val, &format))
+                return cli_usage_error("tessellate", "unknown format", val);
+        } else if (strcmp(a, "-u") == 0 || strcmp(a, "--uniform") == 0) {
+            char buf[64];
+            snprintf(buf, sizeof buf, "%s", val);
+            char *x = strchr(buf, 'x');
+            if (x != NULL)
+                *x = '\0';
+            if (!cli_parse_size(buf, &nu) || (x && !cli_parse_size(x + 1, &nv)))
+                return cli_usage_error("tessellate", "bad rate", val);
+            if (x == NULL)
+                nv = nu;
+            mode = 2;
+        } else if (strcmp(a, "-t") == 0 || strcmp(a, "--tolerance") == 0 || strcmp(a, "-r") == 0 ||
+                   strcmp(a, "--relative") == 0) {
+            if (!cli_parse_double(val, &tol) || !(tol > 0.0))
+                return cli_usage_error("tessellate", "bad tolerance", val);
+            mode = (a[1] == 't' || a[2] == 't') ? 1 : 0;
+        } else {
+            return cli_usage_error("tessellate", "unknown option", a);
+        }
     }
     char outbuf[1024];
     if (output == NULL) {
-        default_output(&in, format == BS_MESH_PLY || format == BS_MESH_PLY_ASCII ? ".ply"
-                                                     : format == BS_MESH_STL ? ".stl" : ".obj",
-                                     outbuf, sizeof outbuf);
+        cli_default_output(&in,
+                           format == BS_MESH_PLY || format == BS_MESH_PLY_ASCII ? ".ply"
+                           : format == BS_MESH_STL                              ? ".stl"
+                                                                                : ".obj",
+                           outbuf, sizeof outbuf);
         output = outbuf;
     }
     if (format < 0)

@@ -37,9 +37,20 @@ typedef struct cli_input {
 
 /* 1 if arg is -h or --help. */
 int cli_is_help(const char *arg);
-/* If argv[*i] is --builtin NAME (or -b NAME), take it into in and advance *i; returns 1 when taken,
- * -1 (after printing a usage error) when NAME is missing, else 0. */
-int cli_take_builtin(int argc, char **argv, int *i, cli_input *in);
+/* Print "bezsurf CMD: MSG: ARG (try 'bezsurf CMD --help')" (no ": ARG" when arg is NULL);
+ * returns CLI_USAGE. */
+int cli_usage_error(const char *cmd, const char *msg, const char *arg);
+
+/* What cli_common_arg returns when the subcommand is to go on parsing (exit codes are >= 0). */
+#define CLI_NEXT       (-1) /* argv[*i] (and its value) taken: go on with argv[*i + 1] */
+#define CLI_NOT_COMMON (-2) /* argv[*i] is an option of the subcommand's own */
+/* The arguments every subcommand takes: --builtin NAME (-b NAME), -h/--help (prints usage to
+ * stdout) and the input FILE (an argument not starting with '-', or "-"; at most one). Returns
+ * CLI_NEXT, CLI_NOT_COMMON, or else the exit code the subcommand must return at once. */
+int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in);
+/* Default output name: the input file's name without directory and extension, or the built-in's
+ * name ("surface" for standard input), followed by ext. */
+void cli_default_output(const cli_input *in, const char *ext, char *out, size_t cap);
 /* Load the input; on failure print one line to stderr and return CLI_INPUT or CLI_INTERNAL. */
 int cli_load(const char *cmd, const cli_input *in, bs_surface **out);
 /* Human-readable name of the input, for reports. */
