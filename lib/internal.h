@@ -237,12 +237,16 @@ bs_status bsi_elevate_net(const double *in, size_t ncoord, size_t deg_u, size_t 
                           size_t raise, double *out);
 
 /* ---- Meshes (lib/mesh.c); filled by lib/tessellate.c, read by the exporters ----
- * Arrays are packed: pos, nrm 3 per vertex, uv 2 per vertex, tri 3 per triangle, corner_uv 6 per
- * triangle; strip k is strip_idx[strip_start[k] .. strip_start[k+1]). Every array is its own
- * malloc block (NULL when empty) freed by bs_mesh_destroy(). */
+ * Arrays are packed: pos, nrm 3 per vertex, uv 2 per vertex, tri 3 per triangle; strip k is
+ * strip_idx[strip_start[k] .. strip_start[k+1]). A triangle corner's (u,v) on the triangle's
+ * patch is its vertex's uv, except for the corners listed in ascending order in xcorner (index
+ * 3 * triangle + corner) with their own (u,v) in xuv (2 each): corners on a shared edge that the
+ * neighbour's parameters own, and at poles. Every array is its own malloc block (NULL when empty)
+ * freed by bs_mesh_destroy(). */
 struct bs_mesh {
-    size_t nvert, ntri, nstrip, nstrip_idx;
-    double *pos, *nrm, *uv, *corner_uv;
+    size_t nvert, ntri, nstrip, nstrip_idx, nx;
+    double *pos, *nrm, *uv, *xuv;
+    size_t *xcorner;
     uint32_t *vpatch, *tri, *tpatch, *strip_idx, *strip_start;
 };
 

@@ -10,7 +10,8 @@ void bs_mesh_destroy(bs_mesh *m)
     free(m->pos);
     free(m->nrm);
     free(m->uv);
-    free(m->corner_uv);
+    free(m->xuv);
+    free(m->xcorner);
     free(m->vpatch);
     free(m->tri);
     free(m->tpatch);
@@ -68,7 +69,23 @@ bs_status bs_mesh_copy_uv(const bs_mesh *m, const bs_view uv[2])
 
 bs_status bs_mesh_copy_corner_uv(const bs_mesh *m, const bs_view uv[2])
 {
-    return m ? copy_tuples(m->corner_uv, 3 * m->ntri, 2, uv) : BS_ERR_INVALID_ARG;
+    if (m == NULL || uv == NULL)
+        return BS_ERR_INVALID_ARG;
+    size_t n = 3 * m->ntri;
+    if (n == 0)
+        return BS_OK;
+    bs_status st = bsi_check_views(uv, 2, n);
+    if (st != BS_OK)
+        return st;
+    /* the vertex's (u,v), or the corner's own where the mesh lists it */
+    for (size_t k = 0, x = 0; k < n; k++) {
+        const double *src = m->uv + 2 * (size_t)m->tri[k];
+        if (x < m->nx && m->xcorner[x] == k)
+            src = m->xuv + 2 * x++;
+        *bsi_at(&uv[0], k) = src[0];
+        *bsi_at(&uv[1], k) = src[1];
+    }
+    return BS_OK;
 }
 
 bs_status bs_mesh_copy_patch_ids(const bs_mesh *m, uint32_t *ids, size_t cap)

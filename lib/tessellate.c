@@ -25,8 +25,9 @@
 #include <string.h>
 
 /* Output arrays, sized once before emission and filled without checks. */
-typedef struct dbuf { double *v; size_t n, cap; } dbuf;
 typedef struct ubuf { uint32_t *v; size_t n, cap; } ubuf;
+/* Triangle corners whose (u,v) on the triangle's patch is not their vertex's (struct bs_mesh). */
+typedef struct xbuf { size_t *corner; double *uv; size_t n, cap; } xbuf;
 
 /* Allocate room for exactly `need` elements (none when need is 0). */
 static int reserve(void **v, size_t *cap, size_t need, size_t elem)
@@ -45,7 +46,6 @@ static int reserve(void **v, size_t *cap, size_t need, size_t elem)
 
 /* Appends into reserved room. */
 #define UPUT(b, x) ((b).v[(b).n++] = (x))
-#define DPUT(b, x) ((b).v[(b).n++] = (x))
 
 /* Per-patch sampling. */
 typedef struct patch_plan {
@@ -74,7 +74,7 @@ typedef struct tess {
     uint32_t *vpatch;
     unsigned char *kind;
     ubuf tri, tpatch, sidx, sstart;
-    dbuf cuv;
+    xbuf xc;
     /* scratch: grid parameters i/g per direction, vertex ids of one patch's grid points */
     double *pu, *pv;
     uint32_t *gid;
@@ -172,12 +172,39 @@ static corner side_corner(const tess *t, const patch_plan *pl, int s, size_t k)
     return c;
 }
 
-/* Append a triangle unless degenerate (into reserved room); orient it counter-clockwise in (u,v)
- * when asked. */
-static void emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orient)
+/* Corner k (3 * triangle + corner) is c: listed when its (u,v) differs from its vertex's. The
+ * bits are compared, so a list of corners rebuilt from the mesh is exactly what was emitted. */
+static void note_corner(tess *t, size_t k, corner c)
+{
+    const double *vuv = t->uv + 2 * (size_t)c.id;
+    if (memcmp(&vuv[0], &c.u, sizeof(double)) == 0 && memcmp(&vuv[1], &c.v, sizeof(double)) == 0)
+        return;
+    xbuf *x = &t->xc;
+    x->corner[x->n] = k;
+    x->uv[2 * x->n] = c.u;
+    x->uv[2 * x->n + 1] = c.v;
+    x->n++;
+}
+
+/* Append triangle a b c (into reserved room) unless a pole makes it degenerate; 1 if appended. */
+static int emit_plain(tess *t, uint32_t patch, corner a, corner b, corner c)
 {
     if (a.id == b.id || b.id == c.id || a.id == c.id)
-        return;
+        return 0;
+    size_t k = t->tri.n;
+    UPUT(t->tri, a.id);
+    UPUT(t->tri, b.id);
+    UPUT(t->tri, c.id);
+    UPUT(t->tpatch, patch);
+    note_corner(t, k, a);
+    note_corner(t, k + 1, b);
+    note_corner(t, k + 2, c);
+    return 1;
+}
+
+/* emit_plain, oriented counter-clockwise in (u,v) when asked, as a strip of its own. */
+static void emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orient)
+{
     if (orient) {
         double area = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
         if (area < 0.0) {
@@ -186,22 +213,12 @@ static void emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orie
             c = x;
         }
     }
-    if (t->strips) {
-        UPUT(t->sstart, (uint32_t)t->sidx.n);
-        UPUT(t->sidx, a.id);
-        UPUT(t->sidx, b.id);
-        UPUT(t->sidx, c.id);
-    }
-    UPUT(t->tri, a.id);
-    UPUT(t->tri, b.id);
-    UPUT(t->tri, c.id);
-    UPUT(t->tpatch, patch);
-    DPUT(t->cuv, a.u);
-    DPUT(t->cuv, a.v);
-    DPUT(t->cuv, b.u);
-    DPUT(t->cuv, b.v);
-    DPUT(t->cuv, c.u);
-    DPUT(t->cuv, c.v);
+    if (!emit_plain(t, patch, a, b, c) || !t->strips)
+        return;
+    UPUT(t->sstart, (uint32_t)t->sidx.n);
+    UPUT(t->sidx, a.id);
+    UPUT(t->sidx, b.id);
+    UPUT(t->sidx, c.id);
 }
 
 /* Vertex ids of the patch's grid points into t->gid ((gu+1) x (gv+1), row i = u index): the
@@ -227,6 +244,16 @@ static void grid_ids(tess *t, const patch_plan *pl)
     }
 }
 
+/* A grid quad with a corner on the grid's border: its triangles (a b d, d b c) unless a pole
+ * makes them degenerate, and the corners whose (u,v) is not their vertex's. */
+static void border_quad(tess *t, uint32_t patch, const uint32_t *r0, const uint32_t *r1, size_t j,
+                        double u0, double u1, double v0, double v1)
+{
+    corner a = {r0[j], u0, v0}, b = {r1[j], u1, v0}, c = {r1[j + 1], u1, v1}, d = {r0[j + 1], u0, v1};
+    emit_plain(t, patch, a, b, d);
+    emit_plain(t, patch, d, b, c);
+}
+
 /* Quads of grid rows i0..i1-1 and columns j0..j1-1 as two triangles each (a b d, d b c with
  * a = (i,j), b = (i+1,j), c = (i+1,j+1), d = (i,j+1)), and one strip per row; t->gid holds the
  * ids and t->pu, t->pv the parameters. Only quads touching the grid's border can have a repeated
@@ -246,32 +273,29 @@ static void emit_grid(tess *t, uint32_t patch, const patch_plan *pl, size_t i0, 
             }
             t->sidx.n += 2 * (j1 - j0 + 1);
         }
-        uint32_t *tri = t->tri.v + t->tri.n, *tp = t->tpatch.v + t->tpatch.n;
-        double *cuv = t->cuv.v + t->cuv.n;
         double u0 = pu[i], u1 = pu[i + 1];
         /* columns [ja, jb) have no border corner in this row */
         int border_row = i == 0 || i + 1 == pl->gu;
         size_t ja = border_row ? j1 : (j0 == 0 ? 1 : j0), jb = border_row ? j1 : (j1 == pl->gv ? j1 - 1 : j1);
         if (ja > jb)
             ja = jb;
-        for (size_t j = j0; j < j1; j++) {
+        for (size_t j = j0; j < ja; j++)
+            border_quad(t, patch, r0, r1, j, u0, u1, pv[j], pv[j + 1]);
+        /* Interior quads: two triangles each, corners at interior grid points of this patch,
+         * whose vertices carry these very (u,v), so no corner is listed. */
+        uint32_t *tri = t->tri.v + t->tri.n, *tp = t->tpatch.v + t->tpatch.n;
+        for (size_t j = ja; j < jb; j++) {
             uint32_t a = r0[j], b = r1[j], c = r1[j + 1], d = r0[j + 1];
-            double v0 = pv[j], v1 = pv[j + 1];
-            int check = j < ja || j >= jb;
-            if (!check || (a != b && b != d && a != d)) {
-                tri[0] = a, tri[1] = b, tri[2] = d, tri += 3;
-                *tp++ = patch;
-                cuv[0] = u0, cuv[1] = v0, cuv[2] = u1, cuv[3] = v0, cuv[4] = u0, cuv[5] = v1, cuv += 6;
-            }
-            if (!check || (d != b && b != c && d != c)) {
-                tri[0] = d, tri[1] = b, tri[2] = c, tri += 3;
-                *tp++ = patch;
-                cuv[0] = u0, cuv[1] = v1, cuv[2] = u1, cuv[3] = v0, cuv[4] = u1, cuv[5] = v1, cuv += 6;
-            }
+            tri[0] = a, tri[1] = b, tri[2] = d;
+            tri[3] = d, tri[4] = b, tri[5] = c;
+            tri += 6;
+            tp[0] = tp[1] = patch;
+            tp += 2;
         }
         t->tri.n = (size_t)(tri - t->tri.v);
         t->tpatch.n = (size_t)(tp - t->tpatch.v);
-        t->cuv.n = (size_t)(cuv - t->cuv.v);
+        for (size_t j = jb; j < j1; j++)
+            border_quad(t, patch, r0, r1, j, u0, u1, pv[j], pv[j + 1]);
     }
 }
 
@@ -381,7 +405,8 @@ static void tess_free(tess *t)
     free(t->tpatch.v);
     free(t->sidx.v);
     free(t->sstart.v);
-    free(t->cuv.v);
+    free(t->xc.corner);
+    free(t->xc.uv);
     free(t->pu);
     free(t->pv);
     free(t->gid);
@@ -609,7 +634,7 @@ static bs_status evaluate(tess *t)
 /* Room for every triangle, strip and index the patches can emit (poles drop some). */
 static bs_status reserve_output(tess *t)
 {
-    size_t ntri = 0, nstrip = 1, nsidx = 0, gids = 1;
+    size_t ntri = 0, nstrip = 1, nsidx = 0, gids = 1, uv_cap = 0;
     for (size_t p = 0; p < t->np; p++) {
         const patch_plan *pl = &t->plan[p];
         size_t gu = pl->gu, gv = pl->gv; /* at most BS_TESS_MAX_RATE: no overflow per patch */
@@ -636,7 +661,8 @@ static bs_status reserve_output(tess *t)
     t->gid = calloc(gids, sizeof(uint32_t)); /* entries an irregular patch leaves unset are never read */
     if (t->gid == NULL || !reserve((void **)&t->tri.v, &t->tri.cap, 3 * ntri, sizeof(uint32_t)) ||
         !reserve((void **)&t->tpatch.v, &t->tpatch.cap, ntri, sizeof(uint32_t)) ||
-        !reserve((void **)&t->cuv.v, &t->cuv.cap, 6 * ntri, sizeof(double)))
+        !reserve((void **)&t->xc.corner, &t->xc.cap, 3 * ntri, sizeof(size_t)) ||
+        !reserve((void **)&t->xc.uv, &uv_cap, 6 * ntri, sizeof(double)))
         return BS_ERR_NO_MEMORY;
     if (t->strips && (!reserve((void **)&t->sstart.v, &t->sstart.cap, nstrip, sizeof(uint32_t)) ||
                       !reserve((void **)&t->sidx.v, &t->sidx.cap, nsidx, sizeof(uint32_t))))
@@ -723,6 +749,27 @@ static bs_status check_surface(const bs_surface *s, int flags, bs_mesh **out)
 }
 
 /* Run the tessellation with rates already in t->plan, and hand the arrays to a new mesh. */
+/* The corner list had room for every corner; keep only the few used (the mesh lives long). */
+static bs_status trim_corner_list(tess *t)
+{
+    xbuf *x = &t->xc, small = {NULL, NULL, x->n, x->n};
+    if (x->n > 0) {
+        small.corner = malloc(x->n * sizeof(size_t));
+        small.uv = malloc(2 * x->n * sizeof(double));
+        if (small.corner == NULL || small.uv == NULL) {
+            free(small.corner);
+            free(small.uv);
+            return BS_ERR_NO_MEMORY;
+        }
+        memcpy(small.corner, x->corner, x->n * sizeof(size_t));
+        memcpy(small.uv, x->uv, 2 * x->n * sizeof(double));
+    }
+    free(x->corner);
+    free(x->uv);
+    *x = small;
+    return BS_OK;
+}
+
 static bs_status run(tess *t, bs_mesh **out)
 {
     bs_status st = plan(t);
@@ -730,6 +777,8 @@ static bs_status run(tess *t, bs_mesh **out)
         st = evaluate(t);
     if (st == BS_OK)
         st = triangulate(t);
+    if (st == BS_OK)
+        st = trim_corner_list(t);
     bs_mesh *m = NULL;
     if (st == BS_OK && t->strips)
         UPUT(t->sstart, (uint32_t)t->sidx.n);
@@ -752,7 +801,9 @@ static bs_status run(tess *t, bs_mesh **out)
     m->vpatch = t->vpatch;
     m->tri = t->tri.v;
     m->tpatch = t->tpatch.v;
-    m->corner_uv = t->cuv.v;
+    m->nx = t->xc.n;
+    m->xcorner = t->xc.corner;
+    m->xuv = t->xc.uv;
     m->strip_idx = t->strips ? t->sidx.v : NULL;
     m->strip_start = t->strips ? t->sstart.v : NULL;
     if (!t->strips) {
@@ -762,7 +813,8 @@ static bs_status run(tess *t, bs_mesh **out)
     t->pos = t->nrm = t->uv = NULL;
     t->vpatch = NULL;
     t->tri.v = t->tpatch.v = t->sidx.v = t->sstart.v = NULL;
-    t->cuv.v = NULL;
+    t->xc.corner = NULL;
+    t->xc.uv = NULL;
     tess_free(t);
     *out = m;
     return BS_OK;
