@@ -312,7 +312,7 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     for (size_t k0 = 0; k0 < n; k0 += L) {
         size_t nb = n - k0 < L ? n - k0 : L;
         double ub[BSI_CHUNK], vb[BSI_CHUNK];
-        int bad[BSI_CHUNK];
+        int bad[BSI_CHUNK] = {0}; /* filled below block by block; zero keeps the analyzer sure */
         for (size_t s = 0; s < L; s += B)
             bsi_load_block(u, v, k0 + s, nb > s ? (nb - s < B ? nb - s : B) : 0, ub + s, vb + s,
                            bad + s);

@@ -172,12 +172,15 @@ static corner side_corner(const tess *t, const patch_plan *pl, int s, size_t k)
     return c;
 }
 
-/* Corner k (3 * triangle + corner) is c: listed when its (u,v) differs from its vertex's. The
- * bits are compared, so a list of corners rebuilt from the mesh is exactly what was emitted. */
+/* Same value and sign: the same bits for the finite numbers parameters are. */
+static int same_param(double a, double b) { return a == b && !signbit(a) == !signbit(b); }
+
+/* Corner k (3 * triangle + corner) is c: listed when its (u,v) differs from its vertex's, so that
+ * the corners rebuilt from the mesh are exactly those emitted. */
 static void note_corner(tess *t, size_t k, corner c)
 {
     const double *vuv = t->uv + 2 * (size_t)c.id;
-    if (memcmp(&vuv[0], &c.u, sizeof(double)) == 0 && memcmp(&vuv[1], &c.v, sizeof(double)) == 0)
+    if (same_param(vuv[0], c.u) && same_param(vuv[1], c.v))
         return;
     xbuf *x = &t->xc;
     x->corner[x->n] = k;
