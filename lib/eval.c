@@ -102,12 +102,13 @@ BSI_INLINE void bicubic_block(size_t L, const double *restrict net, const double
         }
 }
 
+/* Points per block of the bicubic paths: the set-up per coordinate is shared by more points. */
+#define PB BSI_CHUNK
+
 /* bs_patch_eval of a polynomial bicubic patch whose views are all packed: whole blocks go from
  * the caller's arrays to the caller's arrays in one loop per block, with the per-point
  * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bicubic_point: same bits). Non-finite
  * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of PB. */
-/* Points per block of the bicubic paths: the set-up per coordinate is shared by more points. */
-#define PB BSI_CHUNK
 BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
                                      const double *restrict v, double *const *pos,
                                      double *const *du, double *const *dv)
@@ -325,8 +326,9 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
     int first = du != NULL || dv != NULL;
     size_t k0 = 0;
     double *ps[BS_MAX_DIM], *pu[BS_MAX_DIM], *pv[BS_MAX_DIM];
-    if (!p->rational && p->deg_u == 3 && p->deg_v == 3 && bsi_stride(u->stride) == sizeof(double) &&
-        bsi_stride(v->stride) == sizeof(double) && (pos == NULL || packed_views(pos, dim, ps)) &&
+    if (!p->rational && p->deg_u == 3 && p->deg_v == 3 &&
+        bsi_stride(u->stride) == (ptrdiff_t)sizeof(double) &&
+        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double) && (pos == NULL || packed_views(pos, dim, ps)) &&
         (du == NULL || packed_views(du, dim, pu)) && (dv == NULL || packed_views(dv, dim, pv)))
         k0 = bicubic_packed(p, n, u->data, v->data, pos ? ps : NULL, du ? pu : NULL,
                             dv ? pv : NULL);

@@ -65,8 +65,8 @@ BSI_HOT static void contract_row(const bs_patch *p, const double *bu, const doub
  * the compiler keeps the sum in registers and vectorises over b. */
 #define W(j) w[(j) * COLS + b]
 #define COMBINE(NAME, EXPR)                                                                        \
-    BSI_HOT static void NAME(size_t nb, const double *restrict w, const double *restrict q, int scaled,  \
-                     double scale, double *restrict dst)                                           \
+    BSI_HOT static void NAME(size_t nb, const double *restrict w, const double *restrict q,        \
+                             int scaled, double scale, double *restrict dst)                       \
     {                                                                                              \
         if (scaled)                                                                                \
             for (size_t b = 0; b < nb; b++)                                                        \
@@ -114,14 +114,10 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
     }
 }
 
-/* Cubic rows of a polynomial 3-D patch: the three coordinates' combine4 sums in one loop, so
- * the column weights are loaded once per point rather than once per coordinate. Positions, and
- * when s1u != NULL also S_u (scaled by m) and S_v (by 3); same operations per point as
- * combine() (same bits). */
 /* The column weights of the point, recomputed from its parameter rather than loaded from the
  * table: the same bits (bsi_bernstein_first uses bsi_bernstein3_first), and when the outputs are
- * bound for main memory, seven loads per point stall behind the queued stores and halve the
- * speed (docs/performance.md). */
+ * bound for main memory, seven loads per point stall behind the queued stores and cost up to
+ * 2.4 times the time (docs/performance.md). */
 #define CUBIC_WEIGHTS(t)                                                                           \
     double cw_[4], cwm_[3];                                                                        \
     bsi_bernstein3_first(t, cw_, cwm_);                                                            \
@@ -130,6 +126,9 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
     (void)v0, (void)v1, (void)v2
 #define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
 #define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
+/* Cubic rows of a polynomial 3-D patch: the three coordinates' combine4 sums in one loop, so
+ * that each point's weights serve all of them. Positions, and when u0 != NULL also S_u (scaled by
+ * m) into u0..u2 and S_v (by 3) into d0..d2; same operations per point as combine() (same bits). */
 BSI_HOT static void cubic_rows(size_t nb, const double *restrict vcol,
                                const double *restrict q, const double *restrict qu,
                                const double *restrict qv, double m, double *restrict s0,
@@ -257,8 +256,8 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
     unsigned char *kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
     double *flag = g->hu; /* free in this pass */
     size_t nflag = cubic_pos_normal(nb, vcol, g->q, g->qu, g->qv, (double)gc->p->deg_u,
-                     gc->sc.zu * gc->sc.zu, gc->sc.zv * gc->sc.zv, ps[0], ps[1], ps[2], pn[0],
-                     pn[1], pn[2], flag);
+                                    gc->sc.zu * gc->sc.zu, gc->sc.zv * gc->sc.zv, ps[0], ps[1],
+                                    ps[2], pn[0], pn[1], pn[2], flag);
     for (size_t b = 0; b < nb; b++)
         kd[b] = BS_NORMAL_REGULAR;
     for (size_t b = 0; nflag > 0 && b < nb; b++) { /* most rows have no flagged point */

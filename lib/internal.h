@@ -104,6 +104,15 @@ typedef struct bsi_builtin {
 extern const bsi_builtin bsi_builtins[];
 extern const size_t bsi_builtin_count;
 
+/* Small helpers of the evaluation loops (BSI_HOT below): GCC does not inline a function of the
+ * default target into a loop compiled for another by itself, so they are forced inline (and then
+ * compiled for the loop's target). */
+#if defined(__GNUC__)
+#define BSI_INLINE static inline __attribute__((always_inline))
+#else
+#define BSI_INLINE static inline
+#endif
+
 /* ---- Bernstein basis (lib/basis.c) ----
  * All by the triangular recurrence B(r,k) = (1-t) B(r-1,k) + t B(r-1,k-1), so every value is a
  * sum of non-negative terms for t in [0,1]. */
@@ -114,10 +123,7 @@ void bsi_bernstein(size_t deg, double t, double *b);
  * first-derivative difference net). b is bit-identical to bsi_bernstein(deg, t, b). */
 void bsi_bernstein_first(size_t deg, double t, double *b, double *bm);
 /* bsi_bernstein_first for degree 3, written out: the same operations (same bits). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void bsi_bernstein3_first(double x, double w[4], double wm[3])
+BSI_INLINE void bsi_bernstein3_first(double x, double w[4], double wm[3])
 {
     double s = 1.0 - x;
     double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
@@ -144,13 +150,6 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
 #define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define BSI_HOT
-#endif
-/* Small helpers of BSI_HOT loops: GCC does not inline a function of the default target into a
- * clone by itself, so they are forced inline (and then compiled for the clone's target). */
-#if defined(__GNUC__)
-#define BSI_INLINE static inline __attribute__((always_inline))
-#else
-#define BSI_INLINE static inline
 #endif
 
 /* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
