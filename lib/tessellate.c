@@ -16,7 +16,8 @@
  * rows (bit-identical to the list evaluator, so the vertices are those a list would give); only the
  * side samples a patch owns go through bs_patch_eval_normal. Output arrays are sized from the
  * sampling before any triangle is emitted, and grid quads are emitted by plain loops over the
- * patch's table of vertex ids.
+ * patch's table of vertex ids. A corner's (u,v) is stored only where it is not its vertex's (the
+ * neighbour's side of a shared edge, poles), which halves the mesh.
  */
 #include "internal.h"
 
@@ -751,7 +752,6 @@ static bs_status check_surface(const bs_surface *s, int flags, bs_mesh **out)
     return BS_OK;
 }
 
-/* Run the tessellation with rates already in t->plan, and hand the arrays to a new mesh. */
 /* The corner list had room for every corner; keep only the few used (the mesh lives long). */
 static bs_status trim_corner_list(tess *t)
 {
@@ -773,6 +773,7 @@ static bs_status trim_corner_list(tess *t)
     return BS_OK;
 }
 
+/* Run the tessellation with rates already in t->plan, and hand the arrays to a new mesh. */
 static bs_status run(tess *t, bs_mesh **out)
 {
     bs_status st = plan(t);
