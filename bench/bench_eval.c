@@ -62,7 +62,7 @@ static int load_teapot(const char *path, double nets[NPATCH][NCTRL * 3])
 #else
 #define NOINLINE
 #endif
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#ifdef BENCH_CPU_DISPATCH /* set by CMake when the library dispatches its loops */
 #define STORE_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define STORE_CLONES
