@@ -114,12 +114,16 @@ static bs_patch *const HSENT = (bs_patch *)(void *)&live;
 /* Each operation: run the call, return its status; on failure, check its handles are NULL. */
 typedef bs_status (*op_fn)(void);
 
-static int handles_null(bs_patch **h, int n)
+/* After a call that makes n handles: on failure they must all be NULL, on success destroy them. */
+static bs_status settle_handles(const char *what, bs_status st, bs_patch **h, int n)
 {
-    for (int k = 0; k < n; k++)
-        if (h[k] != NULL)
-            return 0;
-    return 1;
+    for (int k = 0; k < n; k++) {
+        if (st != BS_OK)
+            CHECKF(h[k] == NULL, "%s: handle %d not NULL", what, k);
+        else
+            bs_patch_destroy(h[k]);
+    }
+    return st;
 }
 
 #define ONE_HANDLE(name, call)                                  \
@@ -152,25 +156,13 @@ ONE_HANDLE(op_coons, bs_patch_coons(&(bs_curve){2, 3, c0, NULL}, &(bs_curve){1, 
 static bs_status op_split(void)
 {
     bs_patch *h[2] = {HSENT, HSENT};
-    bs_status st = bs_patch_split(R, BS_DIR_U, 0.3, &h[0], &h[1]);
-    if (st != BS_OK)
-        CHECKF(handles_null(h, 2), "split: handles not NULL");
-    else
-        for (int k = 0; k < 2; k++)
-            bs_patch_destroy(h[k]);
-    return st;
+    return settle_handles("split", bs_patch_split(R, BS_DIR_U, 0.3, &h[0], &h[1]), h, 2);
 }
 
 static bs_status op_split4(void)
 {
     bs_patch *h[4] = {HSENT, HSENT, HSENT, HSENT};
-    bs_status st = bs_patch_split4(R, 0.3, 0.6, h);
-    if (st != BS_OK)
-        CHECKF(handles_null(h, 4), "split4: handles not NULL");
-    else
-        for (int k = 0; k < 4; k++)
-            bs_patch_destroy(h[k]);
-    return st;
+    return settle_handles("split4", bs_patch_split4(R, 0.3, 0.6, h), h, 4);
 }
 
 static bs_status op_eval_deriv_rational(void)
