@@ -1,6 +1,6 @@
 #!/bin/sh
 # The evaluation loops are compiled for AVX-512, AVX2 and SSE2 and one is picked at load time
-# (lib/internal.h, BSI_HOT). Every version must give the same bits: compare the digest of all
+# (lib/core/kernels.h, BSI_HOT). Every version must give the same bits: compare the digest of all
 # results that tests/test_determinism prints
 #   - from the test build as this CPU runs it (its widest instruction set),
 #   - from the same binary under valgrind, which hides AVX-512 (so the AVX2 versions run),

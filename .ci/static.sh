@@ -16,9 +16,9 @@ cmake -S . -B "$build" -DCMAKE_C_COMPILER=clang -DCMAKE_EXPORT_COMPILE_COMMANDS=
   -DBS_BUILD_TOOLS=OFF >/dev/null
 echo "== clang-tidy"
 out=$(clang-tidy -p "$build" --quiet \
-  --checks='-*,bugprone-*,cert-*,clang-analyzer-*,-bugprone-easily-swappable-parameters' lib/*.c 2>/dev/null || true)
+  --checks='-*,bugprone-*,cert-*,clang-analyzer-*,-bugprone-easily-swappable-parameters' $(find lib -name '*.c' | sort) 2>/dev/null || true)
 if echo "$out" | grep -q 'warning:\|error:'; then
   echo "$out"
   exit 1
 fi
-echo "== static analysis clean: $(ls lib/*.c | wc -l) files"
+echo "== static analysis clean: $(find lib -name '*.c' | wc -l) files"

@@ -3,7 +3,7 @@
  * pairwise comparison written independently here. */
 #include "harness.h"
 #include "bpt_reader.h"
-#include "internal.h"
+#include "surface/internal.h"
 
 #include <math.h>
 #include <string.h>

@@ -2,7 +2,7 @@
 # The library holds no writable static data: the only symbols in .data, .bss, .tdata and .tbss of
 # the shared object are the ones the toolchain puts there: its start-up files, and libgcc's CPU
 # feature record (__cpu_model, __cpu_features2), filled once at load time for the ifunc dispatch
-# of the evaluation loops (lib/internal.h, BSI_HOT).
+# of the evaluation loops (lib/core/kernels.h, BSI_HOT).
 #   check_static_data.sh LIBRARY
 set -eu
 lib=$1

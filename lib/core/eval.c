@@ -1,0 +1,364 @@
+/* Scattered evaluation of positions and first partial derivatives. */
+#include "core/kernels.h"
+
+#include <float.h>
+#include <math.h>
+
+#define B BSI_BLOCK
+#define NMAX (BS_MAX_DEGREE + 1)
+
+/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k] = B(deg,i)(t[k]) and
+ * wm[i*B + k] = B(deg-1,i)(t[k]). The recurrence of bsi_bernstein_first, run on all lanes at
+ * once with the same operations per lane, so the values are the same bits. */
+static void block_weights(size_t deg, const double *t, double *w, double *wm)
+{
+    double s[B], saved[B];
+    for (size_t k = 0; k < B; k++) {
+        s[k] = 1.0 - t[k];
+        w[k] = 1.0;
+    }
+    for (size_t r = 1; r <= deg; r++) {
+        if (r == deg)
+            for (size_t x = 0; x < deg * B; x++)
+                wm[x] = w[x];
+        for (size_t k = 0; k < B; k++)
+            saved[k] = 0.0;
+        for (size_t i = 0; i < r; i++)
+            for (size_t k = 0; k < B; k++) {
+                double tmp = w[i * B + k];
+                w[i * B + k] = saved[k] + s[k] * tmp;
+                saved[k] = t[k] * tmp;
+            }
+        for (size_t k = 0; k < B; k++)
+            w[r * B + k] = saved[k];
+    }
+}
+
+/* block_weights for degree 3 on a block of L lanes (w[i*L + k]), lane by lane, written out so
+ * that the loop vectorises. */
+BSI_INLINE void weights3(size_t L, const double *restrict t, double *restrict w,
+                         double *restrict wm)
+{
+    for (size_t k = 0; k < L; k++) {
+        double a[4], am[3];
+        bsi_bernstein3_first(t[k], a, am);
+        wm[k] = am[0];
+        wm[L + k] = am[1];
+        wm[2 * L + k] = am[2];
+        w[k] = a[0];
+        w[L + k] = a[1];
+        w[2 * L + k] = a[2];
+        w[3 * L + k] = a[3];
+    }
+}
+
+/* One point of one plane of a bicubic net from its weights in u (bu, bum) and v (bv, bvm): the
+ * value, and the first partials when hu != NULL. This is the general loop of
+ * bsi_eval_first_block with every index fixed: the same operations in the same order (same bits),
+ * so that the compiler keeps everything in registers and vectorises over points. */
+BSI_INLINE void bicubic_point(const double *restrict net, const double bu[4],
+                              const double bum[3], const double bv[4], const double bvm[3],
+                              double *h, double *hu, double *hv)
+{
+#define P(i, j) net[(i) * 4 + (j)]
+#define D(i, j) (P((i) + 1, j) - P(i, j))
+#define E(i, j) (P(i, (j) + 1) - P(i, j))
+#define Q(j) (bu[0] * P(0, j) + bu[1] * P(1, j) + bu[2] * P(2, j) + bu[3] * P(3, j))
+#define QU(j) (bum[0] * D(0, j) + bum[1] * D(1, j) + bum[2] * D(2, j))
+#define QV(j) (bu[0] * E(0, j) + bu[1] * E(1, j) + bu[2] * E(2, j) + bu[3] * E(3, j))
+    *h = bv[0] * Q(0) + bv[1] * Q(1) + bv[2] * Q(2) + bv[3] * Q(3);
+    if (hu == NULL)
+        return;
+    *hu = 3.0 * (bv[0] * QU(0) + bv[1] * QU(1) + bv[2] * QU(2) + bv[3] * QU(3));
+    *hv = 3.0 * (bvm[0] * QV(0) + bvm[1] * QV(1) + bvm[2] * QV(2));
+#undef Q
+#undef QU
+#undef QV
+#undef P
+#undef D
+#undef E
+}
+
+/* bicubic_point over a block of L lanes (weights [i*L + k]): value only when hu == NULL (two
+ * loops, so each vectorises). */
+BSI_INLINE void bicubic_block(size_t L, const double *restrict net, const double *restrict bu,
+                              const double *restrict bum, const double *restrict bv,
+                              const double *restrict bvm, double *restrict h,
+                              double *restrict hu, double *restrict hv)
+{
+    if (hu == NULL)
+        for (size_t k = 0; k < L; k++) {
+            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
+            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
+            bicubic_point(net, au, NULL, av, NULL, h + k, NULL, NULL);
+        }
+    else
+        for (size_t k = 0; k < L; k++) {
+            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
+            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
+            double aum[3] = {bum[k], bum[L + k], bum[2 * L + k]};
+            double avm[3] = {bvm[k], bvm[L + k], bvm[2 * L + k]};
+            bicubic_point(net, au, aum, av, avm, h + k, hu + k, hv + k);
+        }
+}
+
+/* Points per block of the bicubic paths: the set-up per coordinate is shared by more points. */
+#define PB BSI_CHUNK
+
+/* bs_patch_eval of a polynomial bicubic patch whose views are all packed: whole blocks go from
+ * the caller's arrays to the caller's arrays in one loop per block, with the per-point
+ * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bicubic_point: same bits). Non-finite
+ * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of PB. */
+BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
+                                     const double *restrict v, double *const *pos,
+                                     double *const *du, double *const *dv)
+{
+    size_t done = n - n % PB;
+    int first = du != NULL || dv != NULL;
+    for (size_t k0 = 0; k0 < done; k0 += PB) {
+        double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB], x[PB], y[PB];
+        size_t nbad = 0;
+        for (size_t k = 0; k < PB; k++) {
+            int ok = (fabs(u[k0 + k]) <= DBL_MAX) & (fabs(v[k0 + k]) <= DBL_MAX);
+            nbad += !ok;
+            x[k] = ok ? u[k0 + k] : 0.0;
+            y[k] = ok ? v[k0 + k] : 0.0;
+        }
+        weights3(PB, x, bu[0], bum[0]);
+        weights3(PB, y, bv[0], bvm[0]);
+        for (size_t c = 0; c < p->dim; c++) {
+            /* straight into the outputs; a result not asked for goes to scratch */
+            double th[PB], thu[PB], thv[PB];
+            double *h = pos != NULL ? pos[c] + k0 : th;
+            double *hu = du != NULL ? du[c] + k0 : thu, *hv = dv != NULL ? dv[c] + k0 : thv;
+            bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h,
+                          first ? hu : NULL, hv);
+            for (size_t k = 0; nbad > 0 && k < PB; k++)
+                if (!(fabs(u[k0 + k]) <= DBL_MAX) || !(fabs(v[k0 + k]) <= DBL_MAX))
+                    h[k] = hu[k] = hv[k] = NAN;
+        }
+    }
+    return done;
+}
+
+BSI_HOT void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v,
+                                     double *h, double *hu, double *hv)
+{
+    double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB];
+    weights3(PB, u, bu[0], bum[0]);
+    weights3(PB, v, bv[0], bvm[0]);
+    for (size_t c = 0; c < p->dim; c++)
+        bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h + c * PB,
+                      hu + c * PB, hv + c * PB);
+}
+
+/* Element 0 of each of the k views when all are packed (stride 0 or 8), else 0. */
+static int packed_views(const bs_view *views, size_t k, double **data)
+{
+    for (size_t c = 0; c < k; c++) {
+        if (bsi_stride(views[c].stride) != (ptrdiff_t)sizeof(double))
+            return 0;
+        data[c] = views[c].data;
+    }
+    return 1;
+}
+
+BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
+                          double *h, double *hu, double *hv)
+{
+    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
+    double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
+    if (m == 3 && n == 3) {
+        weights3(B, u, bu, bum);
+        weights3(B, v, bv, bvm);
+        for (size_t c = 0; c < p->ncoord; c++)
+            bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
+                          first ? hu + c * B : NULL, first ? hv + c * B : NULL);
+        return;
+    }
+    block_weights(m, u, bu, bum);
+    block_weights(n, v, bv, bvm);
+    int du = first && m > 0, dv = first && n > 0;
+
+    for (size_t c = 0; c < p->ncoord; c++) {
+        const double *net = p->hom + c * p->nctrl;
+        double acc[B], accu[B], accv[B];
+        for (size_t k = 0; k < B; k++)
+            acc[k] = accu[k] = accv[k] = -0.0;
+        /* Per column j: contract u (i ascending) into q, qu, qv held in registers, then add the
+         * column's v-weighted share to the results (j ascending). */
+        for (size_t j = 0; j <= n; j++) {
+            double q[B], qu[B], qv[B];
+            for (size_t k = 0; k < B; k++)
+                q[k] = qu[k] = qv[k] = -0.0;
+            if (!first) {
+                for (size_t i = 0; i <= m; i++) {
+                    double pij = net[i * n1 + j];
+                    const double *wi = bu + i * B;
+                    for (size_t k = 0; k < B; k++)
+                        q[k] += wi[k] * pij;
+                }
+            } else {
+                /* One pass over the column; each accumulator still sums i ascending. */
+                int jv = dv && j < n;
+                for (size_t i = 0; i <= m; i++) {
+                    double pij = net[i * n1 + j];
+                    double dvij = jv ? net[i * n1 + j + 1] - pij : 0.0;
+                    double duij = du && i < m ? net[(i + 1) * n1 + j] - pij : 0.0;
+                    const double *wi = bu + i * B, *wmi = bum + i * B;
+                    for (size_t k = 0; k < B; k++) {
+                        q[k] += wi[k] * pij;
+                        qv[k] += wi[k] * dvij;
+                    }
+                    if (du && i < m)
+                        for (size_t k = 0; k < B; k++)
+                            qu[k] += wmi[k] * duij;
+                }
+            }
+            const double *wj = bv + j * B, *wmj = bvm + j * B;
+            for (size_t k = 0; k < B; k++)
+                acc[k] += wj[k] * q[k];
+            if (du)
+                for (size_t k = 0; k < B; k++)
+                    accu[k] += wj[k] * qu[k];
+            if (dv && j < n)
+                for (size_t k = 0; k < B; k++)
+                    accv[k] += wmj[k] * qv[k];
+        }
+        for (size_t k = 0; k < B; k++) {
+            h[c * B + k] = acc[k];
+            if (first) {
+                hu[c * B + k] = du ? (double)m * accu[k] : 0.0;
+                hv[c * B + k] = dv ? (double)n * accv[k] : 0.0;
+            }
+        }
+    }
+}
+
+void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
+                       size_t stride, double *s, double *su, double *sv)
+{
+    size_t dim = p->dim;
+    if (!p->rational) {
+        for (size_t c = 0; c < dim; c++) {
+            s[c] = h[c * stride];
+            if (su != NULL) {
+                su[c] = hu[c * stride];
+                sv[c] = hv[c * stride];
+            }
+        }
+        return;
+    }
+    /* S = A / w; S_u = (A_u - w_u S) / w (quotient rule). The kernels fill all ncoord = dim + 1
+     * planes of a rational patch, which the analyzer cannot see through p->ncoord. */
+    double w = h[dim * stride]; // NOLINT(clang-analyzer-core.uninitialized.Assign)
+    for (size_t c = 0; c < dim; c++) {
+        s[c] = h[c * stride] / w; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult)
+        if (su != NULL) {
+            su[c] = (hu[c * stride] - hu[dim * stride] * s[c]) / w;
+            sv[c] = (hv[c * stride] - hv[dim * stride] * s[c]) / w;
+        }
+    }
+}
+
+/* Coordinate c of nb results src[c*B + k] to views[c] from element idx0 on (packed views take a
+ * plain loop). */
+static void put_block(const bs_view *views, size_t dim, size_t idx0, const double *src, size_t nb)
+{
+    if (views == NULL)
+        return;
+    for (size_t c = 0; c < dim; c++) {
+        const double *x = src + c * B;
+        if (bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double)) {
+            double *d = (double *)views[c].data + idx0;
+            for (size_t k = 0; k < nb; k++)
+                d[k] = x[k];
+        } else {
+            for (size_t k = 0; k < nb; k++)
+                *bsi_at(&views[c], idx0 + k) = x[k];
+        }
+    }
+}
+
+void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
+                    double *ub, double *vb, int *bad)
+{
+    if (nb == BSI_BLOCK && bsi_stride(u->stride) == (ptrdiff_t)sizeof(double) &&
+        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double)) {
+        /* a whole block from packed arrays: the same values, without a branch per point */
+        const double *x = (const double *)u->data + k0, *y = (const double *)v->data + k0;
+        for (size_t k = 0; k < BSI_BLOCK; k++) {
+            int ok = (fabs(x[k]) <= DBL_MAX) & (fabs(y[k]) <= DBL_MAX);
+            bad[k] = !ok;
+            ub[k] = ok ? x[k] : 0.0;
+            vb[k] = ok ? y[k] : 0.0;
+        }
+        return;
+    }
+    for (size_t k = 0; k < BSI_BLOCK; k++) {
+        ub[k] = vb[k] = 0.0;
+        bad[k] = 0;
+        if (k < nb) {
+            ub[k] = bsi_cget(u, k0 + k);
+            vb[k] = bsi_cget(v, k0 + k);
+            bad[k] = !isfinite(ub[k]) || !isfinite(vb[k]);
+            if (bad[k])
+                ub[k] = vb[k] = 0.0;
+        }
+    }
+}
+
+bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
+                        const bs_view *pos, const bs_view *du, const bs_view *dv)
+{
+    if (p == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (n == 0)
+        return BS_OK;
+    bs_status st;
+    size_t dim = p->dim;
+    if ((st = bsi_check_cview(u, n)) != BS_OK || (st = bsi_check_cview(v, n)) != BS_OK)
+        return st;
+    if ((pos && (st = bsi_check_views(pos, dim, n)) != BS_OK) ||
+        (du && (st = bsi_check_views(du, dim, n)) != BS_OK) ||
+        (dv && (st = bsi_check_views(dv, dim, n)) != BS_OK))
+        return st;
+    int first = du != NULL || dv != NULL;
+    size_t k0 = 0;
+    double *ps[BS_MAX_DIM], *pu[BS_MAX_DIM], *pv[BS_MAX_DIM];
+    if (!p->rational && p->deg_u == 3 && p->deg_v == 3 &&
+        bsi_stride(u->stride) == (ptrdiff_t)sizeof(double) &&
+        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double) && (pos == NULL || packed_views(pos, dim, ps)) &&
+        (du == NULL || packed_views(du, dim, pu)) && (dv == NULL || packed_views(dv, dim, pv)))
+        k0 = bicubic_packed(p, n, u->data, v->data, pos ? ps : NULL, du ? pu : NULL,
+                            dv ? pv : NULL);
+    double h[(BS_MAX_DIM + 1) * B], hu[(BS_MAX_DIM + 1) * B], hv[(BS_MAX_DIM + 1) * B];
+    for (; k0 < n; k0 += B) {
+        size_t nb = n - k0 < B ? n - k0 : B;
+        double ub[B], vb[B];
+        int bad[B];
+        bsi_load_block(u, v, k0, nb, ub, vb, bad);
+        bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
+        if (p->rational)
+            for (size_t k = 0; k < nb; k++) {
+                /* in place: S replaces A, S_u and S_v replace A_u and A_v */
+                double s[BS_MAX_DIM], su[BS_MAX_DIM], sv[BS_MAX_DIM];
+                bsi_project_first(p, h + k, hu + k, hv + k, B, s, first ? su : NULL, sv);
+                for (size_t c = 0; c < dim; c++) {
+                    h[c * B + k] = s[c];
+                    if (first) {
+                        hu[c * B + k] = su[c];
+                        hv[c * B + k] = sv[c];
+                    }
+                }
+            }
+        for (size_t k = 0; k < nb; k++)
+            if (bad[k])
+                for (size_t c = 0; c < dim; c++)
+                    h[c * B + k] = hu[c * B + k] = hv[c * B + k] = NAN;
+        put_block(pos, dim, k0, h, nb);
+        put_block(du, dim, k0, hu, nb);
+        put_block(dv, dim, k0, hv, nb);
+    }
+    return BS_OK;
+}

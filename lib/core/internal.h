@@ -1,0 +1,65 @@
+/*
+ * Core layer, shared with every layer above it (ops, surface, continuity, io, mesh, query): the
+ * patch object and the checks and accessors of strided views. The evaluation kernels are the
+ * core's own business and live in core/kernels.h. Not installed.
+ */
+#ifndef BEZSURF_CORE_INTERNAL_H
+#define BEZSURF_CORE_INTERNAL_H
+
+#include "bezsurf.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/*
+ * The patch object. Allocated as one block; never modified after bsi_patch_finish().
+ * `ctrl` is the caller's packed Cartesian net, `weights` NULL or the weights. `hom` holds the same
+ * net coordinate-major for evaluation: plane c (0 <= c < ncoord) is (deg_u+1)(deg_v+1) doubles
+ * hom[c*nctrl + i*(deg_v+1) + j]; for rational patches the planes are w*P_c and the last plane is w
+ * (ncoord = dim+1), for polynomial ones the planes are P_c (ncoord = dim).
+ */
+struct bs_patch {
+    size_t deg_u, deg_v, dim;
+    size_t nctrl;      /* (deg_u+1)(deg_v+1) */
+    size_t ncoord;     /* planes in hom: dim, or dim+1 when rational */
+    int rational;
+    double *ctrl;      /* nctrl*dim, packed as in the API */
+    double *weights;   /* nctrl or NULL */
+    double *hom;       /* ncoord*nctrl, coordinate-major (homogeneous when rational) */
+};
+
+/* Allocate a patch with uninitialised ctrl (and weights when rational); degrees and dim must
+ * already be valid. Fill ctrl/weights, then call bsi_patch_finish(). NULL when out of memory. */
+bs_patch *bsi_patch_alloc(size_t deg_u, size_t deg_v, size_t dim, int rational);
+
+/* Build hom from ctrl and weights. BS_ERR_NONFINITE if a coordinate or weight is invalid or w*P
+ * overflows (the patch must then be destroyed by the caller). */
+bs_status bsi_patch_finish(bs_patch *p);
+
+/* Make a patch from a coordinate-major homogeneous net (layout of struct bs_patch's hom, planes
+ * w*P then w when rational): Cartesian points are recovered by division. */
+bs_status bsi_patch_from_hom(size_t deg_u, size_t deg_v, size_t dim, int rational,
+                             const double *hom, bs_patch **out);
+
+/* View checks: n elements from each of k views (k = 0 accepted). BS_ERR_INVALID_ARG for NULL
+ * or misaligned data or strides, BS_ERR_SIZE when count < n or the byte extent overflows. */
+bs_status bsi_check_views(const bs_view *views, size_t k, size_t n);
+bs_status bsi_check_cview(const bs_cview *view, size_t n);
+
+/* Byte stride of a view, with 0 meaning packed. */
+static inline ptrdiff_t bsi_stride(ptrdiff_t stride) { return stride ? stride : (ptrdiff_t)sizeof(double); }
+
+/* Element k of a view. */
+static inline double *bsi_at(const bs_view *v, size_t k)
+{
+    return (double *)(void *)((char *)v->data + (ptrdiff_t)k * bsi_stride(v->stride));
+}
+static inline double bsi_cget(const bs_cview *v, size_t k)
+{
+    return *(const double *)(const void *)((const char *)v->data + (ptrdiff_t)k * bsi_stride(v->stride));
+}
+
+/* 1 if every one of the n values is finite. */
+int bsi_all_finite(const double *x, size_t n);
+
+#endif

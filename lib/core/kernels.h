@@ -1,0 +1,141 @@
+/*
+ * Core layer, private to lib/core/: the Bernstein basis, the evaluation and derivative kernels
+ * and the normal rule, shared by the files that evaluate (eval, eval_grid, deriv, normal). No
+ * other layer includes this header: they evaluate through the public functions. Not installed.
+ */
+#ifndef BEZSURF_CORE_KERNELS_H
+#define BEZSURF_CORE_KERNELS_H
+
+#include "core/internal.h"
+
+#include <math.h>
+
+/* Small helpers of the evaluation loops (BSI_HOT below): GCC does not inline a function of the
+ * default target into a loop compiled for another by itself, so they are forced inline (and then
+ * compiled for the loop's target). */
+#if defined(__GNUC__)
+#define BSI_INLINE static inline __attribute__((always_inline))
+#else
+#define BSI_INLINE static inline
+#endif
+
+/* ---- Bernstein basis (lib/core/basis.c) ----
+ * All by the triangular recurrence B(r,k) = (1-t) B(r-1,k) + t B(r-1,k-1), so every value is a
+ * sum of non-negative terms for t in [0,1]. */
+
+/* b[0..deg] = B(deg,i)(t). */
+void bsi_bernstein(size_t deg, double t, double *b);
+/* b[0..deg] = B(deg,i)(t) and, when deg > 0, bm[0..deg-1] = B(deg-1,i)(t) (the weights of the
+ * first-derivative difference net). b is bit-identical to bsi_bernstein(deg, t, b). */
+void bsi_bernstein_first(size_t deg, double t, double *b, double *bm);
+/* bsi_bernstein_first for degree 3, written out: the same operations (same bits). */
+BSI_INLINE void bsi_bernstein3_first(double x, double w[4], double wm[3])
+{
+    double s = 1.0 - x;
+    double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
+    wm[0] = 0.0 + s * a0;
+    wm[1] = x * a0 + s * a1;
+    wm[2] = x * a1;
+    w[0] = 0.0 + s * wm[0];
+    w[1] = x * wm[0] + s * wm[1];
+    w[2] = x * wm[1] + s * wm[2];
+    w[3] = x * wm[2];
+}
+/* b[0..deg] = d^k/dt^k B(deg,i)(t): B(deg-k, .) differenced k times and scaled by deg!/(deg-k)!;
+ * all zero when k > deg. */
+void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
+
+/* ---- Evaluation kernels (lib/core/eval.c, lib/core/deriv.c) ---- */
+
+/* Marks the loops that carry evaluation. With BSI_CPU_DISPATCH (GCC on x86-64, see
+ * lib/CMakeLists.txt) each is compiled for AVX-512, AVX2 and baseline SSE2, and the loader picks
+ * the widest the CPU has. Every version performs the same IEEE operations in the same order (no
+ * FMA: -ffp-contract=off; no reassociation), only on more points per instruction, so results are
+ * the same bits whichever runs. */
+#ifdef BSI_CPU_DISPATCH
+#define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define BSI_HOT
+#endif
+
+/* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
+ * its position in a block, so results do not depend on batch size. */
+#define BSI_BLOCK ((size_t)8)
+
+/* Parameters k0 .. k0+nb-1 (nb <= BSI_BLOCK) of a scattered call as one block: ub, vb and bad
+ * get BSI_BLOCK entries; slots past nb and non-finite pairs become (0,0) with bad set for the
+ * latter, so the kernels only ever see finite parameters (lib/core/eval.c). */
+void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
+                    double *ub, double *vb, int *bad);
+
+/* Homogeneous value h and, when first != 0, first partials hu, hv at BSI_BLOCK finite parameter
+ * pairs; each output is [ncoord][BSI_BLOCK]. The u-direction is contracted first (per column j,
+ * i ascending), then v (j ascending), with the derivatives taken from inline difference nets;
+ * the grid evaluator repeats exactly this arithmetic. */
+void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
+                          double *h, double *hu, double *hv);
+
+/* Points per chunk of the bicubic kernels, which share their set-up over more points. */
+#define BSI_CHUNK ((size_t)32)
+
+/* bsi_eval_first_block with first != 0 for a polynomial bicubic patch, on BSI_CHUNK finite
+ * parameter pairs; outputs [dim][BSI_CHUNK]. The same arithmetic per point (same bits). */
+void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v, double *h,
+                             double *hu, double *hv);
+
+/* Cartesian S (and S_u, S_v when su != NULL) of one point from its homogeneous values; element c
+ * of h, hu, hv is at index c*stride. */
+void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
+                       size_t stride, double *s, double *su, double *sv);
+
+/* All Cartesian partials S^(a,b), a <= ka, b <= kb, at one finite point:
+ * out[(a*(kb+1) + b)*dim + c]. scratch holds bsi_deriv_table_scratch(p, ka, kb) doubles. */
+size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
+void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
+                     double *scratch, double *out);
+
+/* ---- Normals (lib/core/normal.c) ---- */
+
+/* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
+typedef struct bsi_nscale {
+    double lu, lv;   /* bounds on |S_u| and |S_v| over the unit square */
+    double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
+    double rho;      /* wmax / wmin, 1 for polynomial patches */
+    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero */
+} bsi_nscale;
+
+void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
+/* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
+unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
+                         const double *su, const double *sv, double *nrm);
+/* bsi_normal at nb points, the regular case vectorised: su[c][b], sv[c][b] in, nrm[c][b] and
+ * kind[b] out; point b is at (u[b*ustep], v[b]). Same bits as bsi_normal point by point. */
+void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
+                      size_t ustep, const double *v, const double *const *su,
+                      const double *const *sv, double *const *nrm, unsigned char *kind);
+/* ---- The regular normal rule at one point (lib/core/normal.c, lib/core/eval_grid.c) ----
+ * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
+ * when the point needs bsi_normal. Inline so that every vectorised caller does the same
+ * operations (and gets the same bits). zu2, zv2: the squared zero thresholds of bsi_nscale. */
+typedef struct bsi_rnormal {
+    double n0, n1, n2, flag;
+} bsi_rnormal;
+static inline bsi_rnormal bsi_regular_normal(double x0, double x1, double x2, double y0,
+                                             double y1, double y2, double zu2, double zv2)
+{
+    double qa = x0 * x0 + x1 * x1 + x2 * x2;
+    double qb = y0 * y0 + y1 * y1 + y2 * y2;
+    double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
+    double qc = c0 * c0 + c1 * c1 + c2 * c2;
+    long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
+              (qb > zv2) & (qc > 0x1p-60 * (qa * qb));
+    double inv = 1.0 / sqrt(qc);
+    bsi_rnormal r;
+    r.n0 = c0 * inv;
+    r.n1 = c1 * inv;
+    r.n2 = c2 * inv;
+    r.flag = ok ? 0.0 : 1.0;
+    return r;
+}
+
+#endif

@@ -1,0 +1,47 @@
+/* Validation of caller views: the only place that decides whether a view may be read or written. */
+#include "core/internal.h"
+
+#include <math.h>
+
+static bs_status check_extent(const void *data, ptrdiff_t stride, size_t count, size_t n)
+{
+    if (data == NULL)
+        return BS_ERR_INVALID_ARG;
+    if ((uintptr_t)data % sizeof(double) != 0 || stride % (ptrdiff_t)sizeof(double) != 0)
+        return BS_ERR_INVALID_ARG;
+    if (count < n)
+        return BS_ERR_SIZE;
+    /* (n-1) * |stride| must fit in ptrdiff_t so that element addresses can be formed. */
+    ptrdiff_t s = bsi_stride(stride);
+    size_t mag = s < 0 ? (size_t)0 - (size_t)s : (size_t)s;
+    if (n > 1 && (n - 1) > (size_t)PTRDIFF_MAX / mag)
+        return BS_ERR_SIZE;
+    return BS_OK;
+}
+
+bs_status bsi_check_views(const bs_view *views, size_t k, size_t n)
+{
+    if (k > 0 && views == NULL)
+        return BS_ERR_INVALID_ARG;
+    for (size_t c = 0; c < k; c++) {
+        bs_status st = check_extent(views[c].data, views[c].stride, views[c].count, n);
+        if (st != BS_OK)
+            return st;
+    }
+    return BS_OK;
+}
+
+bs_status bsi_check_cview(const bs_cview *view, size_t n)
+{
+    if (view == NULL)
+        return BS_ERR_INVALID_ARG;
+    return check_extent(view->data, view->stride, view->count, n);
+}
+
+int bsi_all_finite(const double *x, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(x[k]))
+            return 0;
+    return 1;
+}

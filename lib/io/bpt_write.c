@@ -1,0 +1,115 @@
+/* Writing the .bpt text format: shortest exact decimals, '.' as decimal point in every locale. */
+#include "io/internal.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Appends to buf while there is room and counts every byte, so one routine both measures and writes. */
+typedef struct sink {
+    char *buf;
+    size_t cap, len;
+} sink;
+
+static void put(sink *o, const char *text, size_t n)
+{
+    if (o->buf != NULL && o->len + n <= o->cap)
+        memcpy(o->buf + o->len, text, n);
+    o->len += n;
+}
+
+static void put_size(sink *o, size_t v)
+{
+    char tmp[32];
+    int n = snprintf(tmp, sizeof tmp, "%zu", v);
+    put(o, tmp, (size_t)n);
+}
+
+static void put_double(sink *o, double x)
+{
+    char tmp[32];
+    put(o, tmp, bsi_format_double(x, tmp));
+}
+
+static bs_status check_surface(const bs_surface *s)
+{
+    if (s == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (bs_surface_count(s) > 0 && bs_surface_dim(s) != 3)
+        return BS_ERR_DIMENSION;
+    return BS_OK;
+}
+
+/* The text without a final NUL; o->len is its length even when it did not fit. */
+static void emit(const bs_surface *s, sink *o)
+{
+    size_t count = bs_surface_count(s);
+    put_size(o, count);
+    put(o, "\n", 1);
+    for (size_t k = 0; k < count; k++) {
+        const bs_patch *p = bs_surface_get(s, k);
+        put_size(o, p->deg_u);
+        put(o, " ", 1);
+        put_size(o, p->deg_v);
+        put(o, p->rational ? " w\n" : "\n", p->rational ? 3 : 1);
+        for (size_t i = 0; i < p->nctrl; i++) {
+            for (size_t c = 0; c < 3; c++) {
+                if (c > 0)
+                    put(o, " ", 1);
+                put_double(o, p->ctrl[3 * i + c]);
+            }
+            if (p->rational) {
+                put(o, " ", 1);
+                put_double(o, p->weights[i]);
+            }
+            put(o, "\n", 1);
+        }
+    }
+}
+
+bs_status bs_surface_write_bpt(const bs_surface *s, char *buf, size_t cap, size_t *size)
+{
+    if (size == NULL)
+        return BS_ERR_INVALID_ARG;
+    bs_status st = check_surface(s);
+    if (st != BS_OK)
+        return st;
+    sink measure = {NULL, 0, 0};
+    emit(s, &measure);
+    size_t need = measure.len + 1;
+    if (buf != NULL) {
+        if (cap < need)
+            return BS_ERR_SIZE;
+        sink o = {buf, cap, 0};
+        emit(s, &o);
+        buf[o.len] = '\0';
+    }
+    *size = need;
+    return BS_OK;
+}
+
+bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path)
+{
+    if (path == NULL)
+        return BS_ERR_INVALID_ARG;
+    bs_status st = check_surface(s);
+    if (st != BS_OK)
+        return st;
+    sink o = {NULL, 0, 0};
+    emit(s, &o);
+    o.cap = o.len;
+    o.len = 0;
+    o.buf = malloc(o.cap ? o.cap : 1);
+    if (o.buf == NULL)
+        return BS_ERR_NO_MEMORY;
+    emit(s, &o);
+    FILE *f = fopen(path, "wb");
+    if (f == NULL) {
+        free(o.buf);
+        return BS_ERR_IO;
+    }
+    int ok = fwrite(o.buf, 1, o.len, f) == o.len;
+    ok = (fclose(f) == 0) && ok;
+    free(o.buf);
+    return ok ? BS_OK : BS_ERR_IO;
+}

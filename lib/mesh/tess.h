@@ -1,0 +1,134 @@
+/*
+ * The tessellator's shared state and phases, private to lib/mesh/ (the overview is at the top of
+ * lib/mesh/tessellate.c). A tessellation runs the phases in order on one `tess`:
+ *   1. rates   (tessellate.c, tess_plan.c)  segments per direction of each patch
+ *   2. plan    (tess_plan.c)    sides sampled into slots, shared slots merged, vertex ids
+ *   3. sample  (tess_sample.c)  parameters, positions and normals of every vertex
+ *   4. emit    (tess_emit.c)    triangles, strips and the corners that keep their own (u,v)
+ *   5. finish  (tess_sample.c, tess_emit.c)  normals repaired, corner list trimmed
+ * Not installed.
+ */
+#ifndef BEZSURF_MESH_TESS_H
+#define BEZSURF_MESH_TESS_H
+
+#include "mesh/internal.h"
+#include "surface/internal.h"
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Output arrays, sized once before emission and filled without checks. */
+typedef struct ubuf { uint32_t *v; size_t n, cap; } ubuf;
+/* Triangle corners whose (u,v) on the triangle's patch is not their vertex's (struct bs_mesh). */
+typedef struct xbuf { size_t *corner; double *uv; size_t n, cap; } xbuf;
+
+/* Appends into reserved room. */
+#define UPUT(b, x) ((b).v[(b).n++] = (x))
+
+/* Per-patch sampling. */
+typedef struct patch_plan {
+    size_t ru, rv;      /* own rates */
+    size_t e[4];        /* segments per side */
+    size_t gu, gv;      /* grid used for the interior */
+    int regular;        /* sides sampled at the own rates: plain grid */
+    size_t slot0;       /* first slot: corners 0..3, then inner samples of sides 0..3 */
+    size_t side_off[4]; /* offset of side s's inner samples from slot0 */
+    size_t vert0;       /* first vertex id of this patch: its root slots, then the interior */
+    size_t inner0;      /* first vertex id of the interior grid points */
+} patch_plan;
+
+typedef struct tess {
+    const bs_surface *s;
+    size_t np;
+    bsi_topology topo;
+    patch_plan *plan;
+    size_t nslot;
+    size_t *parent;     /* union-find over slots; the root of a set is its lowest slot */
+    uint32_t *slot_vert;
+    int strips;
+    /* output */
+    size_t nvert;
+    double *pos, *nrm, *uv;
+    uint32_t *vpatch;
+    unsigned char *kind;
+    ubuf tri, tpatch, sidx, sstart;
+    xbuf xc;
+    /* scratch: grid parameters i/g per direction, vertex ids of one patch's grid points */
+    double *pu, *pv;
+    uint32_t *gid;
+    size_t nbad; /* vertices whose normal repair_normals must replace */
+    double *soa; /* 6 x GRID_CHUNK: positions and normals of a block of grid rows, by coordinate */
+} tess;
+
+/* Grid points evaluated per call into packed scratch (the evaluator writes packed arrays in
+ * place; the mesh's packed triples are filled from them). */
+#define GRID_CHUNK ((size_t)4096)
+
+/* ---- Slots, sides and grid parameters, used by every phase ---- */
+
+static inline size_t uf_find(size_t *parent, size_t x)
+{
+    size_t r = x;
+    while (parent[r] != r)
+        r = parent[r];
+    while (parent[x] != r) {
+        size_t nx = parent[x];
+        parent[x] = r;
+        x = nx;
+    }
+    return r;
+}
+
+/* Slot of sample k (0..e) of side s of patch p. */
+static inline size_t side_slot(const patch_plan *pl, int s, size_t k)
+{
+    static const int from[4] = {0, 1, 3, 0}; /* start corner of each side (0:c00 1:c10 2:c11 3:c01) */
+    static const int to[4] = {1, 2, 2, 3};
+    if (k == 0)
+        return pl->slot0 + (size_t)from[s];
+    if (k == pl->e[s])
+        return pl->slot0 + (size_t)to[s];
+    return pl->slot0 + pl->side_off[s] + k - 1;
+}
+
+/* Parameters of sample k of side s. */
+static inline void side_param(const patch_plan *pl, int s, size_t k, double *u, double *v)
+{
+    size_t e = pl->e[s];
+    double t = k == 0 ? 0.0 : k == e ? 1.0 : (double)k / (double)e;
+    switch (s) {
+    case BSI_SIDE_V0: *u = t; *v = 0.0; break;
+    case BSI_SIDE_U1: *u = 1.0; *v = t; break;
+    case BSI_SIDE_V1: *u = t; *v = 1.0; break;
+    default:          *u = 0.0; *v = t; break;
+    }
+}
+
+static inline double grid_param(size_t i, size_t n)
+{
+    return i == 0 ? 0.0 : i == n ? 1.0 : (double)i / (double)n;
+}
+
+/* Grid parameters i/n, i = 0..n, exactly 0 and 1 at the ends. */
+static inline void grid_params(double *dst, size_t n)
+{
+    for (size_t i = 0; i <= n; i++)
+        dst[i] = grid_param(i, n);
+}
+
+/* ---- The phases ---- */
+
+/* Rates (ru, rv) of patch p meeting tolerance tol by the second-difference bound (tess_plan.c). */
+void bsi_tess_adaptive_rates(const bs_patch *p, double tol, size_t *ru, size_t *rv);
+/* Plan the sampling from the rates in t->plan: side counts, slots, merges, vertex ids. */
+bs_status bsi_tess_plan(tess *t);
+/* Parameters, positions, normals and patch ids of every vertex (tess_sample.c). */
+bs_status bsi_tess_evaluate(tess *t);
+/* Replace normals the surface does not define (or that are not unit) by the adjacent triangles'. */
+void bsi_tess_repair_normals(tess *t);
+/* Reserve the output arrays, then emit every patch's triangles (tess_emit.c). */
+bs_status bsi_tess_triangulate(tess *t);
+/* Shrink the corner list to the corners actually listed. */
+bs_status bsi_tess_trim_corners(tess *t);
+
+#endif
