@@ -4,7 +4,7 @@
  * untouched (sentinel-filled buffers; new-handle outputs NULL) and hold no memory afterwards
  * (the wrappers count live blocks). k runs up from 1 until the call makes fewer than k
  * allocations, so every allocation of every operation fails once. */
-#include "../harness.h"
+#include "harness.h"
 
 #include <bezsurf.h>
 
