@@ -1,4 +1,4 @@
-/* Continuity across the shared edges of a surface, on top of the topology (lib/topology.c). */
+/* Continuity across the shared edges of a surface, on top of the topology (lib/surface/topology.c). */
 #include "surface/internal.h"
 
 #include <math.h>

@@ -7,7 +7,7 @@
 
 #include "core/internal.h"
 
-/* ---- Meshes (lib/mesh/mesh.c); filled by lib/mesh/tessellate.c, read by the exporters ----
+/* ---- Meshes (lib/mesh/mesh.c); filled by the tessellator (lib/mesh/tess*.c), read by the exporters ----
  * Arrays are packed: pos, nrm 3 per vertex, uv 2 per vertex, tri 3 per triangle; strip k is
  * strip_idx[strip_start[k] .. strip_start[k+1]). A triangle corner's (u,v) on the triangle's
  * patch is its vertex's uv, except for the corners listed in ascending order in xcorner (index
