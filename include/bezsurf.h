@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf: rectangular (tensor-product) Bezier surface patches.
  *
  * The one header users include. The API is split into topical headers:

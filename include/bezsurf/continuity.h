@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf continuity report: how the patches of a surface meet along their shared edges.
  * Include <bezsurf.h> rather than this file.
  */

@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf core: status codes, version, strided views, patches and their evaluation.
  * Include <bezsurf.h> rather than this file.
  */
@@ -7,6 +8,11 @@
 
 #include <stddef.h>
 
+/**
+ * @def BS_API
+ * Marks the library's exported functions (default visibility; dllexport/dllimport on Windows,
+ * nothing with BS_STATIC). Not for use by callers.
+ */
 #if defined(_WIN32) && !defined(BS_STATIC)
 #  if defined(BS_BUILDING_LIBRARY)
 #    define BS_API __declspec(dllexport)
@@ -55,8 +61,9 @@ typedef int bs_status;
 #define BS_NORMAL_LIMIT     1  /**< S_u x S_v vanishes; the limit normal along the surface */
 #define BS_NORMAL_UNDEFINED 2  /**< no normal exists here; (0,0,0) is written (NaN for a NaN parameter) */
 
-/** Directions for the operations that act along one parameter. @since 1.0 */
+/** Direction u, for the operations that act along one parameter. @since 1.0 */
 #define BS_DIR_U 0
+/** Direction v, for the operations that act along one parameter. @since 1.0 */
 #define BS_DIR_V 1
 
 /**
@@ -157,13 +164,33 @@ BS_API void bs_patch_destroy(bs_patch *p);
  */
 BS_API bs_status bs_patch_clone(const bs_patch *p, bs_patch **out);
 
-/** @brief Degree along u; 0 for a NULL patch. @since 1.0 */
+/**
+ * @brief Degree along u.
+ * @param[in] p  the patch, or NULL.
+ * @return the degree m along u (0..BS_MAX_DEGREE); 0 for a NULL patch.
+ * @since 1.0
+ */
 BS_API size_t bs_patch_degree_u(const bs_patch *p);
-/** @brief Degree along v; 0 for a NULL patch. @since 1.0 */
+/**
+ * @brief Degree along v.
+ * @param[in] p  the patch, or NULL.
+ * @return the degree n along v (0..BS_MAX_DEGREE); 0 for a NULL patch.
+ * @since 1.0
+ */
 BS_API size_t bs_patch_degree_v(const bs_patch *p);
-/** @brief Dimension of a control point; 0 for a NULL patch. @since 1.0 */
+/**
+ * @brief Dimension of a control point.
+ * @param[in] p  the patch, or NULL.
+ * @return the dimension (1..BS_MAX_DIM); 0 for a NULL patch.
+ * @since 1.0
+ */
 BS_API size_t bs_patch_dim(const bs_patch *p);
-/** @brief 1 if the patch has weights, 0 if it is polynomial or NULL. @since 1.0 */
+/**
+ * @brief Whether the patch is rational.
+ * @param[in] p  the patch, or NULL.
+ * @return 1 if the patch has weights, 0 if it is polynomial or NULL.
+ * @since 1.0
+ */
 BS_API int bs_patch_is_rational(const bs_patch *p);
 
 /**

@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf input and output: the .bpt text format and the built-in tea set.
  * Numbers are read and written in the C notation whatever LC_NUMERIC says; the functions may run in
  * any number of threads at once, as long as no thread changes the locale meanwhile.

@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf meshes: tessellation of a surface into an indexed triangle mesh, read-back of the mesh
  * into caller buffers, and export to OBJ, PLY and STL. Include <bezsurf.h> rather than this file.
  */
@@ -78,20 +79,46 @@ BS_API bs_status bs_surface_tessellate_uniform(const bs_surface *s, size_t nu, s
 BS_API bs_status bs_surface_tessellate_adaptive(const bs_surface *s, double tolerance, int flags,
                                                 bs_mesh **out);
 
-/** @brief Release a mesh. NULL is a no-op. @since 1.0 */
+/**
+ * @brief Release a mesh.
+ * @param[in] m  the mesh; NULL is a no-op.
+ * @since 1.0
+ */
 BS_API void bs_mesh_destroy(bs_mesh *m);
 
-/** @brief Number of vertices; 0 for NULL. @since 1.0 */
+/**
+ * @brief Number of vertices.
+ * @param[in] m  the mesh, or NULL.
+ * @return the number of vertices; 0 for NULL.
+ * @since 1.0
+ */
 BS_API size_t bs_mesh_vertex_count(const bs_mesh *m);
-/** @brief Number of triangles; 0 for NULL. @since 1.0 */
+/**
+ * @brief Number of triangles.
+ * @param[in] m  the mesh, or NULL.
+ * @return the number of triangles; 0 for NULL.
+ * @since 1.0
+ */
 BS_API size_t bs_mesh_triangle_count(const bs_mesh *m);
-/** @brief Number of triangle strips (0 unless built with BS_TESS_STRIPS, or for NULL). @since 1.0 */
+/**
+ * @brief Number of triangle strips.
+ * @param[in] m  the mesh, or NULL.
+ * @return the number of strips: 0 unless the mesh was built with BS_TESS_STRIPS, or for NULL.
+ * @since 1.0
+ */
 BS_API size_t bs_mesh_strip_count(const bs_mesh *m);
-/** @brief Total number of indices in all strips; 0 for NULL. @since 1.0 */
+/**
+ * @brief Total number of indices in all strips.
+ * @param[in] m  the mesh, or NULL.
+ * @return the number of strip indices; 0 for NULL.
+ * @since 1.0
+ */
 BS_API size_t bs_mesh_strip_index_count(const bs_mesh *m);
 
 /**
  * @brief Copy the vertex positions into 3 views (x, y, z) of bs_mesh_vertex_count() elements.
+ * @param[in]  m    the mesh.
+ * @param[out] xyz  3 views: x, y and z of each vertex.
  * @return BS_OK; BS_ERR_INVALID_ARG if m or xyz is NULL or a view's data is NULL or misaligned;
  *         BS_ERR_SIZE if a view is too short (nothing is written then). With 0 vertices the views
  *         are not read.
@@ -103,6 +130,8 @@ BS_API bs_status bs_mesh_copy_positions(const bs_mesh *m, const bs_view xyz[3]);
  * @brief Copy the unit vertex normals into 3 views. Never NaN: where the surface has no normal at a
  * vertex (a net degenerate to a line) the average of the adjacent triangles' normals is used, or
  * (0,0,1) if that vanishes too.
+ * @param[in]  m    the mesh.
+ * @param[out] nrm  3 views: the normal's x, y and z of each vertex.
  * @return as bs_mesh_copy_positions().
  * @since 1.0
  */
@@ -112,6 +141,8 @@ BS_API bs_status bs_mesh_copy_normals(const bs_mesh *m, const bs_view nrm[3]);
  * @brief Copy the vertex (u,v) parameters into 2 views. A vertex shared by several patches keeps the
  * parameters on the patch it was evaluated on (the one with the lowest patch id among those that
  * share it; see bs_mesh_copy_patch_ids()).
+ * @param[in]  m    the mesh.
+ * @param[out] uv   2 views: u and v of each vertex.
  * @return as bs_mesh_copy_positions().
  * @since 1.0
  */
@@ -129,6 +160,9 @@ BS_API bs_status bs_mesh_copy_patch_ids(const bs_mesh *m, uint32_t *ids, size_t 
 
 /**
  * @brief Copy the triangles as 3 * bs_mesh_triangle_count() vertex indices.
+ * @param[in]  m    the mesh.
+ * @param[out] idx  room for cap indices, three per triangle (counter-clockwise seen from the normal).
+ * @param[in]  cap  number of indices idx can hold.
  * @return BS_OK; BS_ERR_INVALID_ARG if m or idx is NULL; BS_ERR_SIZE if cap is too small.
  * @since 1.0
  */
@@ -136,6 +170,9 @@ BS_API bs_status bs_mesh_copy_triangles(const bs_mesh *m, uint32_t *idx, size_t 
 
 /**
  * @brief Copy, per triangle, the id of the patch it tessellates.
+ * @param[in]  m    the mesh.
+ * @param[out] ids  room for cap ids.
+ * @param[in]  cap  number of ids ids can hold.
  * @return BS_OK; BS_ERR_INVALID_ARG if m or ids is NULL; BS_ERR_SIZE if cap < bs_mesh_triangle_count().
  * @since 1.0
  */

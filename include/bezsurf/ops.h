@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf exact operations: subdivision, sub-patches, degree elevation, hodographs, iso-curves,
  * bounds, transforms, orientation and constructions from curves. Every result is a new, independent
  * patch (or values copied into caller buffers); inputs are never modified.

@@ -1,4 +1,5 @@
-/*
+/**
+ * @file
  * libbezsurf surfaces: ordered sets of patches (a quilt such as the Utah teapot).
  * Include <bezsurf.h> rather than this file.
  */
@@ -29,13 +30,16 @@ typedef struct bs_surface bs_surface;
 BS_API bs_status bs_surface_create(bs_surface **out);
 
 /**
- * @brief Release a surface and the patches it holds. NULL is a no-op.
+ * @brief Release a surface and the patches it holds.
+ * @param[in] s  the surface; NULL is a no-op.
  * @since 1.0
  */
 BS_API void bs_surface_destroy(bs_surface *s);
 
 /**
  * @brief Make an independent copy of a surface.
+ * @param[in]  s    the surface.
+ * @param[out] out  receives the copy (NULL on failure); release with bs_surface_destroy().
  * @return BS_OK; BS_ERR_INVALID_ARG if s or out is NULL; BS_ERR_NO_MEMORY.
  * @since 1.0
  */
@@ -53,14 +57,26 @@ BS_API bs_status bs_surface_clone(const bs_surface *s, bs_surface **out);
  */
 BS_API bs_status bs_surface_add(bs_surface *s, const bs_patch *p, size_t *index);
 
-/** @brief Number of patches; 0 for NULL. @since 1.0 */
+/**
+ * @brief Number of patches.
+ * @param[in] s  the surface, or NULL.
+ * @return the number of patches; 0 for NULL.
+ * @since 1.0
+ */
 BS_API size_t bs_surface_count(const bs_surface *s);
 
-/** @brief Dimension of the patches; 0 for an empty or NULL surface. @since 1.0 */
+/**
+ * @brief Dimension of the patches.
+ * @param[in] s  the surface, or NULL.
+ * @return the dimension of its patches; 0 for an empty or NULL surface.
+ * @since 1.0
+ */
 BS_API size_t bs_surface_dim(const bs_surface *s);
 
 /**
  * @brief Borrow patch i. The pointer stays valid until the surface is destroyed.
+ * @param[in] s  the surface.
+ * @param[in] i  the patch id, 0 .. bs_surface_count(s) - 1.
  * @return the patch, or NULL if s is NULL or i >= bs_surface_count(s).
  * @since 1.0
  */
