@@ -9,6 +9,7 @@
  *   bezsurf/io.h       the .bpt text format, the built-in tea set
  *   bezsurf/continuity.h  shared and open edges of a surface, continuity across them
  *   bezsurf/mesh.h     tessellation into triangle meshes, mesh export
+ *   bezsurf/bspline.h  B-spline and NURBS surfaces cut into Bezier patches (from 1.1)
  * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
  */
 #ifndef BEZSURF_H
@@ -21,5 +22,6 @@
 #include "bezsurf/io.h"
 #include "bezsurf/continuity.h"
 #include "bezsurf/mesh.h"
+#include "bezsurf/bspline.h"
 
 #endif

@@ -1,11 +1,17 @@
 /*
- * Surface layer, shared with the layers above it (continuity, mesh, query): which patch sides of
- * a surface are shared with a neighbour, and how. Not installed.
+ * Surface layer, shared with the layers above it (bspline, continuity, io, mesh, query): taking
+ * patches in whole, and which patch sides of a surface are shared with a neighbour, and how.
+ * Not installed.
  */
 #ifndef BEZSURF_SURFACE_INTERNAL_H
 #define BEZSURF_SURFACE_INTERNAL_H
 
 #include "core/internal.h"
+
+/* Append n patches to s, passing their ownership to s: all of them, or on failure none
+ * (BS_ERR_INCOMPATIBLE when a dim differs from the surface's or each other's, BS_ERR_SIZE past
+ * UINT32_MAX patches, BS_ERR_NO_MEMORY), the patches then still the caller's. */
+bs_status bsi_surface_adopt(bs_surface *s, bs_patch **patches, size_t n);
 
 /* ---- Topology of a surface: which patch sides are shared (lib/surface/topology.c) ----
  * Sides of the unit square, counter-clockwise; t is the side's own parameter. */

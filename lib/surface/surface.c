@@ -1,5 +1,5 @@
 /* Surfaces: an ordered, growable array of owned patches. */
-#include "core/internal.h"
+#include "surface/internal.h"
 
 #include <stdlib.h>
 
@@ -52,6 +52,33 @@ bs_status bs_surface_add(bs_surface *s, const bs_patch *p, size_t *index)
     if (index != NULL)
         *index = s->count;
     s->count++;
+    return BS_OK;
+}
+
+bs_status bsi_surface_adopt(bs_surface *s, bs_patch **patches, size_t n)
+{
+    if (n == 0)
+        return BS_OK;
+    size_t dim = s->count > 0 ? s->dim : patches[0]->dim;
+    for (size_t k = 0; k < n; k++)
+        if (patches[k]->dim != dim)
+            return BS_ERR_INCOMPATIBLE;
+    if (n > UINT32_MAX || s->count > UINT32_MAX - n)
+        return BS_ERR_SIZE;
+    if (s->count + n > s->cap) {
+        size_t cap = s->cap ? s->cap : 8;
+        while (cap < s->count + n)
+            cap *= 2;
+        bs_patch **grown = realloc(s->patches, cap * sizeof(*grown)); // NOLINT(bugprone-sizeof-expression): an array of pointers
+        if (grown == NULL)
+            return BS_ERR_NO_MEMORY;
+        s->patches = grown;
+        s->cap = cap;
+    }
+    for (size_t k = 0; k < n; k++)
+        s->patches[s->count + k] = patches[k];
+    s->count += n;
+    s->dim = dim;
     return BS_OK;
 }
 

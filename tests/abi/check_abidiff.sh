@@ -1,5 +1,5 @@
 #!/bin/sh
-# Compare the built library with the committed ABI baseline (abi/libbezsurf.abi) using abidiff.
+# Compare the built library with the committed ABI baseline (abi/libbezsurf-RELEASE.abi) using abidiff.
 # Fails when an existing function or variable was removed or changed, or when a symbol was added to
 # a version node that the baseline already has; symbols in a new version node are fine.
 # Exit 77 (skipped) when abidiff is not installed.
