@@ -21,8 +21,18 @@ pub(crate) fn c_path(path: &Path) -> Result<CString> {
         path.as_os_str().as_bytes().to_vec()
     };
     #[cfg(not(unix))]
-    let bytes = path.to_str().ok_or_else(|| Error::from_code(sys::BS_ERR_INVALID_ARG))?.as_bytes().to_vec();
-    CString::new(bytes).map_err(|_| Error::from_code(sys::BS_ERR_INVALID_ARG))
+    let bytes = path
+        .to_str()
+        .ok_or_else(|| Error::argument_error(sys::BS_ERR_INVALID_ARG, "path", "is not valid Unicode"))?
+        .as_bytes()
+        .to_vec();
+    CString::new(bytes).map_err(|e| {
+        Error::argument_error(
+            sys::BS_ERR_INVALID_ARG,
+            "path",
+            format!("has a NUL byte at {}", e.nul_position()),
+        )
+    })
 }
 
 /// Runs a reader and turns its status and parse error into a surface or an [`Error`] with
@@ -87,7 +97,13 @@ impl Surface {
     /// One of the built-in surfaces (`bs_surface_create_builtin`): "teapot", "teacup" or
     /// "teaspoon" (see [`builtin_names`]). An unknown name is `InvalidArg`.
     pub fn builtin(name: &str) -> Result<Surface> {
-        let name = CString::new(name).map_err(|_| Error::from_code(sys::BS_ERR_INVALID_ARG))?;
+        let name = CString::new(name).map_err(|e| {
+            Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "name",
+                format!("has a NUL byte at {}", e.nul_position()),
+            )
+        })?;
         let mut out = ptr::null_mut();
         // SAFETY: name is NUL-terminated; out is valid.
         check(unsafe { sys::bs_surface_create_builtin(name.as_ptr(), &mut out) })?;

@@ -5,7 +5,7 @@ use std::ops::BitOr;
 use std::path::Path;
 use std::ptr::{self, NonNull};
 
-use crate::error::{check, Error, Result};
+use crate::error::{check, Error, ErrorKind, Result};
 use crate::io::c_path;
 use crate::strided::PointsMut;
 use crate::surface::Surface;
@@ -153,33 +153,41 @@ impl Mesh {
         &self,
         out: PointsMut<'_>,
         dim: usize,
+        needed: usize,
         f: unsafe extern "C" fn(*const sys::bs_mesh, *const sys::bs_view) -> sys::bs_status,
     ) -> Result<()> {
         let mut out = out;
-        let views = out.c_views(dim)?;
+        let views = out.c_views(dim, "out")?;
         // SAFETY: the views stay inside the slices they were built from and do not overlap.
-        check(unsafe { f(self.as_ptr(), views.as_ptr()) })
+        check(unsafe { f(self.as_ptr(), views.as_ptr()) }).map_err(|e| {
+            let cap = out.capacity(dim);
+            if e.kind() == ErrorKind::Size && cap < needed {
+                e.with_argument("out", format!("has room for {cap} points, {needed} are needed"))
+            } else {
+                e
+            }
+        })
     }
 
     /// Copies the vertex positions (3 coordinates per vertex) (`bs_mesh_copy_positions`).
     pub fn copy_positions<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 3, sys::bs_mesh_copy_positions)
+        self.copy_views(out.into(), 3, self.vertex_count(), sys::bs_mesh_copy_positions)
     }
 
     /// Copies the unit vertex normals (3 per vertex) (`bs_mesh_copy_normals`).
     pub fn copy_normals<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 3, sys::bs_mesh_copy_normals)
+        self.copy_views(out.into(), 3, self.vertex_count(), sys::bs_mesh_copy_normals)
     }
 
     /// Copies the vertex (u, v) parameters (2 per vertex) (`bs_mesh_copy_uv`).
     pub fn copy_uv<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 2, sys::bs_mesh_copy_uv)
+        self.copy_views(out.into(), 2, self.vertex_count(), sys::bs_mesh_copy_uv)
     }
 
     /// Copies the (u, v) of every triangle corner on the triangle's own patch (2 per corner, 3
     /// corners per triangle) (`bs_mesh_copy_corner_uv`).
     pub fn copy_corner_uv<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 2, sys::bs_mesh_copy_corner_uv)
+        self.copy_views(out.into(), 2, 3 * self.triangle_count(), sys::bs_mesh_copy_corner_uv)
     }
 
     /// Positions as a new interleaved vector, x y z per vertex.

@@ -2,7 +2,7 @@
 
 use std::ptr;
 
-use crate::error::{check, Error, Result};
+use crate::error::{check, Error, ErrorKind, Result};
 use crate::patch::{Patch, PatchRef};
 use crate::sys;
 
@@ -32,8 +32,10 @@ pub(crate) fn new_patch(f: impl FnOnce(*mut *mut sys::bs_patch) -> sys::bs_statu
     Ok(unsafe { Patch::from_raw(out) })
 }
 
-fn size_error() -> Error {
-    Error::from_code(sys::BS_ERR_SIZE)
+/// A `Size` error for the slice `name` of `len` values where `want` are needed.
+fn length_error(name: &'static str, len: usize, want: usize, exact: bool) -> Error {
+    let rule = if exact { "exactly" } else { "at least" };
+    Error::argument_error(sys::BS_ERR_SIZE, name, format!("has {len} values, {rule} {want} are needed"))
 }
 
 impl PatchRef {
@@ -97,10 +99,21 @@ impl PatchRef {
         weights: Option<&mut [f64]>,
     ) -> Result<()> {
         let (wp, wc) = weights.map_or((ptr::null_mut(), 0), |w| (w.as_mut_ptr(), w.len()));
+        let cc = ctrl.len();
         // SAFETY: each pointer is NULL or a slice of the capacity passed with it.
-        check(unsafe {
-            sys::bs_patch_isocurve(self.as_ptr(), dir.raw(), t, ctrl.as_mut_ptr(), ctrl.len(), wp, wc)
-        })
+        check(unsafe { sys::bs_patch_isocurve(self.as_ptr(), dir.raw(), t, ctrl.as_mut_ptr(), cc, wp, wc) })
+            .map_err(|e| {
+                let (np, dim) = (self.isocurve_len(dir), self.dim());
+                if e.kind() != ErrorKind::Size {
+                    e
+                } else if cc < np * dim {
+                    length_error("ctrl", cc, np * dim, false)
+                } else if !wp.is_null() && wc < np {
+                    length_error("weights", wc, np, false)
+                } else {
+                    e
+                }
+            })
     }
 
     /// The iso-curve's control points and weights as new vectors (see
@@ -116,8 +129,11 @@ impl PatchRef {
     /// values each in `lo` and `hi` (`Size` if either is shorter).
     pub fn bounds_into(&self, lo: &mut [f64], hi: &mut [f64]) -> Result<()> {
         // The C function writes dim values with no capacity argument.
-        if lo.len() < self.dim() || hi.len() < self.dim() {
-            return Err(size_error());
+        if lo.len() < self.dim() {
+            return Err(length_error("lo", lo.len(), self.dim(), false));
+        }
+        if hi.len() < self.dim() {
+            return Err(length_error("hi", hi.len(), self.dim(), false));
         }
         // SAFETY: lo and hi hold at least dim values.
         check(unsafe { sys::bs_patch_bounds(self.as_ptr(), lo.as_mut_ptr(), hi.as_mut_ptr()) })
@@ -136,7 +152,7 @@ impl PatchRef {
         let dim = self.dim();
         // The C function reads dim*(dim+1) values with no capacity argument.
         if affine.len() != dim * (dim + 1) {
-            return Err(size_error());
+            return Err(length_error("affine", affine.len(), dim * (dim + 1), true));
         }
         // SAFETY: affine holds the dim*(dim+1) values read.
         new_patch(|out| unsafe { sys::bs_patch_transform(self.as_ptr(), affine.as_ptr(), out) })
@@ -182,15 +198,14 @@ impl<'a> Curve<'a> {
     }
 
     fn make(degree: usize, dim: usize, ctrl: &'a [f64], weights: Option<&'a [f64]>) -> Result<Curve<'a>> {
-        if degree > sys::BS_MAX_DEGREE {
-            return Err(Error::from_code(sys::BS_ERR_DEGREE));
-        }
-        if dim == 0 || dim > sys::BS_MAX_DIM {
-            return Err(Error::from_code(sys::BS_ERR_DIMENSION));
-        }
+        crate::patch::check_degree("degree", degree)?;
+        crate::patch::check_dim(dim)?;
         // The C side reads exactly these lengths, with no capacity argument.
-        if ctrl.len() != (degree + 1) * dim || weights.is_some_and(|w| w.len() != degree + 1) {
-            return Err(size_error());
+        if ctrl.len() != (degree + 1) * dim {
+            return Err(length_error("ctrl", ctrl.len(), (degree + 1) * dim, true));
+        }
+        if let Some(w) = weights.filter(|w| w.len() != degree + 1) {
+            return Err(length_error("weights", w.len(), degree + 1, true));
         }
         Ok(Curve { degree, dim, ctrl, weights })
     }

@@ -39,15 +39,35 @@ fn net_points(deg_u: usize, deg_v: usize) -> usize {
     (deg_u + 1) * (deg_v + 1)
 }
 
-/// Checks the shape as `bs_patch_create` does, so the slice lengths can be checked after it.
-fn check_shape(deg_u: usize, deg_v: usize, dim: usize) -> Result<()> {
-    if deg_u > sys::BS_MAX_DEGREE || deg_v > sys::BS_MAX_DEGREE {
-        return Err(Error::from_code(sys::BS_ERR_DEGREE));
-    }
-    if dim == 0 || dim > sys::BS_MAX_DIM {
-        return Err(Error::from_code(sys::BS_ERR_DIMENSION));
+/// `Degree` naming `name` if `degree` is above `BS_MAX_DEGREE`.
+pub(crate) fn check_degree(name: &'static str, degree: usize) -> Result<()> {
+    if degree > sys::BS_MAX_DEGREE {
+        return Err(Error::argument_error(
+            sys::BS_ERR_DEGREE,
+            name,
+            format!("is {degree}, at most {} is possible", sys::BS_MAX_DEGREE),
+        ));
     }
     Ok(())
+}
+
+/// `Dimension` naming `dim` if it is 0 or above `BS_MAX_DIM`.
+pub(crate) fn check_dim(dim: usize) -> Result<()> {
+    if dim == 0 || dim > sys::BS_MAX_DIM {
+        return Err(Error::argument_error(
+            sys::BS_ERR_DIMENSION,
+            "dim",
+            format!("is {dim}, 1 to {} are possible", sys::BS_MAX_DIM),
+        ));
+    }
+    Ok(())
+}
+
+/// Checks the shape as `bs_patch_create` does, so the slice lengths can be checked after it.
+fn check_shape(deg_u: usize, deg_v: usize, dim: usize) -> Result<()> {
+    check_degree("deg_u", deg_u)?;
+    check_degree("deg_v", deg_v)?;
+    check_dim(dim)
 }
 
 impl Patch {
@@ -84,8 +104,23 @@ impl Patch {
         check_shape(deg_u, deg_v, dim)?;
         // The C function reads exactly these many values; shorter slices must never reach it.
         let npts = net_points(deg_u, deg_v);
-        if ctrl.len() != npts * dim || weights.is_some_and(|w| w.len() != npts) {
-            return Err(Error::from_code(sys::BS_ERR_SIZE));
+        if ctrl.len() != npts * dim {
+            return Err(Error::argument_error(
+                sys::BS_ERR_SIZE,
+                "ctrl",
+                format!(
+                    "has {} values; a degree ({deg_u}, {deg_v}) net of dimension {dim} needs exactly {}",
+                    ctrl.len(),
+                    npts * dim
+                ),
+            ));
+        }
+        if let Some(w) = weights.filter(|w| w.len() != npts) {
+            return Err(Error::argument_error(
+                sys::BS_ERR_SIZE,
+                "weights",
+                format!("has {} values; a degree ({deg_u}, {deg_v}) net needs exactly {npts}", w.len()),
+            ));
         }
         let wptr = weights.map_or(ptr::null(), <[f64]>::as_ptr);
         let mut out = ptr::null_mut();
@@ -224,7 +259,21 @@ impl PatchRef {
         let (cp, cc) = ctrl.map_or((ptr::null_mut(), 0), |c| (c.as_mut_ptr(), c.len()));
         let (wp, wc) = weights.map_or((ptr::null_mut(), 0), |w| (w.as_mut_ptr(), w.len()));
         // SAFETY: each pointer is NULL or a slice of the capacity passed with it.
-        check(unsafe { sys::bs_patch_get_ctrl(self.as_ptr(), cp, cc, wp, wc) })
+        check(unsafe { sys::bs_patch_get_ctrl(self.as_ptr(), cp, cc, wp, wc) }).map_err(|e| {
+            let (np, dim) = (self.num_ctrl(), self.dim());
+            let short = |name, len: usize, want: usize| {
+                e.clone().with_argument(name, format!("has {len} values, at least {want} are needed"))
+            };
+            if e.kind() != crate::ErrorKind::Size {
+                e
+            } else if !cp.is_null() && cc < np * dim {
+                short("ctrl", cc, np * dim)
+            } else if !wp.is_null() && wc < np {
+                short("weights", wc, np)
+            } else {
+                e
+            }
+        })
     }
 
     /// The packed control net as a new vector.
