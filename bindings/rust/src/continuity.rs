@@ -36,6 +36,32 @@ impl Side {
     }
 }
 
+impl From<Side> for i32 {
+    /// The C constant (`BS_SIDE_*`).
+    fn from(side: Side) -> i32 {
+        match side {
+            Side::V0 => sys::BS_SIDE_V0,
+            Side::U1 => sys::BS_SIDE_U1,
+            Side::V1 => sys::BS_SIDE_V1,
+            Side::U0 => sys::BS_SIDE_U0,
+        }
+    }
+}
+
+impl TryFrom<i32> for Side {
+    type Error = crate::Error;
+    /// The side for a `BS_SIDE_*` value; any other value is `InvalidArg`.
+    fn try_from(raw: i32) -> Result<Side> {
+        Side::from_raw(raw).ok_or_else(|| {
+            crate::Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "raw",
+                format!("is {raw}, not a BS_SIDE_ value"),
+            )
+        })
+    }
+}
+
 /// How two patches meet along one shared edge (`bs_edge_continuity`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EdgeContinuity {

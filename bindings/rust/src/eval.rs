@@ -31,6 +31,27 @@ impl NormalKind {
     }
 }
 
+impl From<NormalKind> for u8 {
+    /// The byte the library writes for this kind (`BS_NORMAL_*`).
+    fn from(k: NormalKind) -> u8 {
+        match k {
+            NormalKind::Regular => sys::BS_NORMAL_REGULAR,
+            NormalKind::Limit => sys::BS_NORMAL_LIMIT,
+            NormalKind::Undefined => sys::BS_NORMAL_UNDEFINED,
+        }
+    }
+}
+
+impl TryFrom<u8> for NormalKind {
+    type Error = Error;
+    /// The kind for a byte written by the library; any other value is `InvalidArg`.
+    fn try_from(b: u8) -> Result<NormalKind> {
+        NormalKind::from_byte(b).ok_or_else(|| {
+            Error::argument_error(sys::BS_ERR_INVALID_ARG, "byte", format!("is {b}, not a BS_NORMAL_ value"))
+        })
+    }
+}
+
 /// The outputs wanted from an evaluation; anything not set is not computed.
 ///
 /// ```

@@ -50,7 +50,7 @@ pub use mesh::{Mesh, MeshFormat, TessFlags, TESS_MAX_RATE};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
 pub use strided::{PointsMut, Strided, StridedMut};
-pub use surface::Surface;
+pub use surface::{Iter, Surface};
 
 use std::ffi::CStr;
 

@@ -4,6 +4,7 @@ use std::ffi::c_void;
 use std::ops::BitOr;
 use std::path::Path;
 use std::ptr::{self, NonNull};
+use std::sync::Arc;
 
 use crate::error::{check, Error, ErrorKind, Result};
 use crate::io::c_path;
@@ -30,6 +31,19 @@ impl TessFlags {
     }
 }
 
+impl From<TessFlags> for i32 {
+    /// The C flag bits, as [`TessFlags::bits`].
+    fn from(f: TessFlags) -> i32 {
+        f.0
+    }
+}
+
+impl std::ops::BitOrAssign for TessFlags {
+    fn bitor_assign(&mut self, rhs: TessFlags) {
+        self.0 |= rhs.0;
+    }
+}
+
 impl BitOr for TessFlags {
     type Output = TessFlags;
     fn bitor(self, rhs: TessFlags) -> TessFlags {
@@ -53,6 +67,13 @@ pub enum MeshFormat {
     Stl,
 }
 
+impl From<MeshFormat> for i32 {
+    /// The C constant (`BS_MESH_*`).
+    fn from(f: MeshFormat) -> i32 {
+        f.raw()
+    }
+}
+
 impl MeshFormat {
     fn raw(self) -> i32 {
         match self {
@@ -64,20 +85,44 @@ impl MeshFormat {
     }
 }
 
-/// An owned, immutable triangle mesh (`bs_mesh *`), released with `bs_mesh_destroy` on drop.
-/// It is independent of the surface it was made from.
+/// An immutable triangle mesh (`bs_mesh *`), released with `bs_mesh_destroy` when its last
+/// clone is dropped. It is independent of the surface it was made from.
+///
+/// A mesh never changes after it is made, so `Clone` shares it (a reference count, no copy):
+/// a clone is indistinguishable from a copy.
+///
+/// ```
+/// use bezsurf::{Surface, TessFlags};
+///
+/// let cup = Surface::builtin("teacup")?;
+/// let mesh = cup.tessellate_uniform(4, 4, TessFlags::NONE)?;
+/// assert_eq!(mesh.triangle_count(), cup.len() * 4 * 4 * 2);
+/// let tris = mesh.triangles();
+/// assert!(tris.iter().all(|&i| (i as usize) < mesh.vertex_count()));
+/// let shared = mesh.clone();
+/// assert_eq!(shared.positions(), mesh.positions());
+/// # Ok::<(), bezsurf::Error>(())
+/// ```
+#[derive(Clone)]
 pub struct Mesh {
+    handle: Arc<MeshHandle>,
+}
+
+/// The owned C handle behind every clone of a [`Mesh`].
+struct MeshHandle {
     ptr: NonNull<sys::bs_mesh>,
 }
 
 // SAFETY: a mesh never changes after it is made (every accessor takes `const bs_mesh *`) and the
-// library has no mutable global state, so it may be read from any number of threads at once.
-unsafe impl Send for Mesh {}
-unsafe impl Sync for Mesh {}
+// library has no mutable global state, so the handle may be used and destroyed from any thread.
+unsafe impl Send for MeshHandle {}
+// SAFETY: as for Send: every use through a shared reference only reads the mesh, which any
+// number of threads may do at once.
+unsafe impl Sync for MeshHandle {}
 
-impl Drop for Mesh {
+impl Drop for MeshHandle {
     fn drop(&mut self) {
-        // SAFETY: we own the mesh.
+        // SAFETY: the handle owns the mesh and is dropped once, after the last Mesh sharing it.
         unsafe { sys::bs_mesh_destroy(self.ptr.as_ptr()) }
     }
 }
@@ -96,7 +141,7 @@ fn new_mesh(f: impl FnOnce(*mut *mut sys::bs_mesh) -> sys::bs_status) -> Result<
     let mut out = ptr::null_mut();
     check(f(&mut out))?;
     let ptr = NonNull::new(out).expect("bezsurf returned a NULL mesh on success");
-    Ok(Mesh { ptr })
+    Ok(Mesh { handle: Arc::new(MeshHandle { ptr }) })
 }
 
 impl Surface {
@@ -122,7 +167,7 @@ impl Surface {
 impl Mesh {
     /// The C handle, valid while `self` is borrowed.
     pub fn as_ptr(&self) -> *const sys::bs_mesh {
-        self.ptr.as_ptr()
+        self.handle.ptr.as_ptr()
     }
 
     /// Number of vertices.

@@ -15,6 +15,29 @@ pub enum Dir {
     V,
 }
 
+impl From<Dir> for i32 {
+    /// The C constant (`BS_DIR_U`, `BS_DIR_V`).
+    fn from(d: Dir) -> i32 {
+        d.raw()
+    }
+}
+
+impl TryFrom<i32> for Dir {
+    type Error = Error;
+    /// The direction for a `BS_DIR_*` value; any other value is `InvalidArg`.
+    fn try_from(raw: i32) -> Result<Dir> {
+        match raw {
+            sys::BS_DIR_U => Ok(Dir::U),
+            sys::BS_DIR_V => Ok(Dir::V),
+            _ => Err(Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "raw",
+                format!("is {raw}, not a BS_DIR_ value"),
+            )),
+        }
+    }
+}
+
 impl Dir {
     pub(crate) fn raw(self) -> std::os::raw::c_int {
         match self {

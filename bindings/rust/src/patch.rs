@@ -182,6 +182,79 @@ impl AsRef<PatchRef> for Patch {
     }
 }
 
+impl AsRef<PatchRef> for PatchRef {
+    fn as_ref(&self) -> &PatchRef {
+        self
+    }
+}
+
+impl std::borrow::Borrow<PatchRef> for Patch {
+    fn borrow(&self) -> &PatchRef {
+        self
+    }
+}
+
+impl ToOwned for PatchRef {
+    type Owned = Patch;
+    /// An owned copy, as [`PatchRef::to_patch`].
+    ///
+    /// # Panics
+    /// If the library runs out of memory.
+    fn to_owned(&self) -> Patch {
+        self.to_patch().unwrap_or_else(|e| panic!("bs_patch_clone failed: {e}"))
+    }
+}
+
+impl PartialEq for PatchRef {
+    /// Equal if the patches have the same degrees, dimension and rationality and equal control
+    /// points and weights (compared as numbers, so 0.0 equals -0.0).
+    ///
+    /// ```
+    /// use bezsurf::{Dir, Patch};
+    ///
+    /// let p = Patch::new(1, 1, 1, &[0.0, 1.0, 2.0, 3.0])?;
+    /// assert_eq!(p.reverse(Dir::U)?.reverse(Dir::U)?, p);
+    /// assert_ne!(p.reverse(Dir::U)?, p);
+    /// assert_ne!(p.elevate(1, 0)?, p); // the same surface, but another net
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    fn eq(&self, other: &PatchRef) -> bool {
+        std::ptr::eq(self, other)
+            || (self.degree_u() == other.degree_u()
+                && self.degree_v() == other.degree_v()
+                && self.dim() == other.dim()
+                && self.is_rational() == other.is_rational()
+                && self.ctrl() == other.ctrl()
+                && self.weights() == other.weights())
+    }
+}
+
+impl PartialEq for Patch {
+    fn eq(&self, other: &Patch) -> bool {
+        **self == **other
+    }
+}
+
+impl PartialEq<PatchRef> for Patch {
+    fn eq(&self, other: &PatchRef) -> bool {
+        **self == *other
+    }
+}
+
+impl PartialEq<Patch> for PatchRef {
+    fn eq(&self, other: &Patch) -> bool {
+        *self == **other
+    }
+}
+
+impl TryFrom<&PatchRef> for Patch {
+    type Error = Error;
+    /// An owned copy, as [`PatchRef::to_patch`].
+    fn try_from(p: &PatchRef) -> Result<Patch> {
+        p.to_patch()
+    }
+}
+
 impl std::fmt::Debug for PatchRef {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Patch")
@@ -206,7 +279,9 @@ impl PatchRef {
     /// `ptr` must be a live, non-NULL patch for all of `'a`.
     pub unsafe fn from_ptr<'a>(ptr: *const sys::bs_patch) -> &'a PatchRef {
         debug_assert!(!ptr.is_null());
-        &*(ptr as *const PatchRef)
+        // SAFETY: the caller guarantees a live patch for 'a; PatchRef is a zero-sized stand-in
+        // for the opaque struct, so the reference only carries the address.
+        unsafe { &*(ptr as *const PatchRef) }
     }
 
     /// The C handle, valid while `self` is borrowed.
