@@ -118,6 +118,7 @@ pub fn builtin_names() -> Vec<&'static str> {
         // SAFETY: any index is allowed; the result is NULL or a static NUL-terminated string.
         .map(|i| unsafe { sys::bs_builtin_name(i) })
         .take_while(|p| !p.is_null())
+        // SAFETY: p is a non-NULL (checked above) static NUL-terminated string.
         .map(|p| unsafe { CStr::from_ptr(p) }.to_str().unwrap_or(""))
         .collect()
 }

@@ -29,6 +29,10 @@
 //! of threads at once (only `Surface::add` needs `&mut`). Lifetimes: a patch borrowed from a surface is a
 //! `&PatchRef` that cannot outlive the surface.
 
+#![deny(missing_docs)]
+#![deny(unsafe_op_in_unsafe_fn)]
+#![deny(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
+
 pub mod sys;
 
 mod continuity;

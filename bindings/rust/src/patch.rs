@@ -20,6 +20,7 @@ pub struct PatchRef {
 // after bs_patch_create) and the library has no mutable global state and no lazy caches, so any
 // number of threads may read the same patch at once, and a patch may be read from any thread.
 unsafe impl Send for PatchRef {}
+// SAFETY: as for Send: every method takes `&self` and only reads the immutable patch.
 unsafe impl Sync for PatchRef {}
 
 /// An owned Bezier patch (`bs_patch *`), released with `bs_patch_destroy` on drop.
@@ -32,6 +33,7 @@ pub struct Patch {
 // SAFETY: as for PatchRef: nothing takes `&mut self` on a Patch except Drop, which owns it, and
 // the library lets any thread use or destroy a patch.
 unsafe impl Send for Patch {}
+// SAFETY: a shared `&Patch` only reaches `&PatchRef`, which is Sync (see above).
 unsafe impl Sync for Patch {}
 
 /// Number of control points of a (deg_u, deg_v) net, when the degrees are in range.

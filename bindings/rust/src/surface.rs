@@ -48,6 +48,8 @@ pub struct Surface {
 // `const bs_surface *` and the library documents them as safe from any number of threads; the
 // library has no mutable global state.
 unsafe impl Send for Surface {}
+// SAFETY: through `&Surface` only the reading functions are reachable, which the library allows
+// from any number of threads at once; `add` needs `&mut Surface`.
 unsafe impl Sync for Surface {}
 
 impl Surface {

@@ -89,7 +89,8 @@ fn patches_compare_by_shape_and_net() {
     let heavier = Patch::new_rational(1, 0, 1, &[0.0, 1.0], &[1.0, 2.0]).unwrap();
     assert_ne!(rational, heavier);
     let s: Surface = [p.clone()].into_iter().collect();
-    assert!(s[0] == p && p == s[0]);
+    assert!(s[0] == p);
+    assert!(p == s[0]);
     let owned: Patch = s[0].to_owned();
     assert_eq!(owned, p);
     assert_ne!(owned.as_ptr(), s[0].as_ptr());
