@@ -114,6 +114,14 @@ impl Surface {
     /// shared edge (`bs_surface_continuity`). `tol` (finite, >= 0) is the absolute tolerance for
     /// matching sides and for C1; `samples` (1..=4096) normal samples per edge measure G1.
     /// Errors: `Dimension` (not 3-D), `Domain` (tol or samples out of range).
+    ///
+    /// ```
+    /// let cup = bezsurf::Surface::builtin("teacup")?;
+    /// let report = cup.continuity(1e-6, 16)?;
+    /// assert!(!report.edges.is_empty());
+    /// assert!(report.edges.iter().all(|e| e.c0_gap <= 1e-6 && e.patch_a <= e.patch_b));
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn continuity(&self, tol: f64, samples: usize) -> Result<Continuity> {
         let (mut n_edges, mut n_open) = (0usize, 0usize);
         // SAFETY: NULL arrays ask for the counts only.

@@ -279,6 +279,18 @@ impl PatchRef {
     /// Positions, unit normals and normal kinds at n scattered points of a 3-D patch
     /// (`bs_patch_eval_normal`): the outputs set among `pos`, `normal`, `kind`. Asking for `du` or
     /// `dv` here is `InvalidArg`; a patch that is not 3-D is `Dimension`.
+    ///
+    /// ```
+    /// use bezsurf::{NormalKind, Outputs, Patch};
+    ///
+    /// let p = Patch::new(1, 1, 3, &[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 1.])?;
+    /// let (mut n, mut kind) = ([0.0; 3], [0u8; 1]);
+    /// p.eval_normal(&[1.0], &[0.0], Outputs::new().normal(&mut n).kind(&mut kind))?;
+    /// let s = 0.5f64.sqrt(); // (-v, -u, 1) = (0, -1, 1), normalised
+    /// assert!((n[1] + s).abs() < 1e-15 && (n[2] - s).abs() < 1e-15 && n[0] == 0.0);
+    /// assert_eq!(NormalKind::try_from(kind[0])?, NormalKind::Regular);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn eval_normal<'u, 'v>(
         &self,
         u: impl Into<Strided<'u>>,
@@ -305,6 +317,22 @@ impl PatchRef {
     /// Every `u[a]` with every `v[b]` (`bs_patch_eval_grid`), point (a, b) written at index
     /// a·nv + b, nu = `u.len()`, nv = `v.len()`. Any of the outputs may be set; `normal` and
     /// `kind` need a 3-D patch (else `Dimension`).
+    ///
+    /// ```
+    /// use bezsurf::{Outputs, Patch};
+    ///
+    /// // The bilinear patch S(u, v) = (u, v, u v).
+    /// let p = Patch::new(1, 1, 3, &[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 1.])?;
+    /// let (u, v) = ([0.0, 0.5, 1.0], [0.0, 1.0]);
+    /// let mut pos = vec![0.0; 3 * u.len() * v.len()];
+    /// let mut normal = vec![0.0; pos.len()];
+    /// p.eval_grid(&u, &v, Outputs::new().pos(&mut pos).normal(&mut normal))?;
+    /// // Point (a, b) = (2, 1) is S(1, 1), at index 2 * 2 + 1.
+    /// assert_eq!(pos[3 * 5..3 * 6], [1.0, 1.0, 1.0]);
+    /// // The normal at (0, 0) is (-v, -u, 1) normalised = (0, 0, 1).
+    /// assert_eq!(normal[..3], [0.0, 0.0, 1.0]);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn eval_grid<'u, 'v>(
         &self,
         u: impl Into<Strided<'u>>,

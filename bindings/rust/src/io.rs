@@ -56,6 +56,20 @@ fn read_with(
 impl Surface {
     /// Parses .bpt text (`bs_surface_read_bpt`) into a surface of 3-D patches. `Parse` errors
     /// carry the line, column and reason.
+    ///
+    /// ```
+    /// use bezsurf::Surface;
+    ///
+    /// let pot = Surface::builtin("teapot")?;
+    /// let text = pot.write_bpt()?;
+    /// let back = Surface::read_bpt(&text)?;
+    /// assert_eq!(back, pot); // every control point survives bit for bit
+    ///
+    /// let err = Surface::read_bpt("1\n3 3\n0 0 x\n").unwrap_err();
+    /// assert_eq!(err.kind(), bezsurf::ErrorKind::Parse);
+    /// assert_eq!(err.position().map(|(line, _)| line), Some(3));
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn read_bpt(text: impl AsRef<[u8]>) -> Result<Surface> {
         let text = text.as_ref();
         // SAFETY: text holds len bytes; err and out are valid.
@@ -113,6 +127,10 @@ impl Surface {
 }
 
 /// The names of the built-in surfaces (`bs_builtin_name`).
+///
+/// ```
+/// assert_eq!(bezsurf::builtin_names(), ["teapot", "teacup", "teaspoon"]);
+/// ```
 pub fn builtin_names() -> Vec<&'static str> {
     (0..)
         // SAFETY: any index is allowed; the result is NULL or a static NUL-terminated string.

@@ -72,6 +72,12 @@ pub fn version_number() -> u32 {
 }
 
 /// Run-time library version as "MAJOR.MINOR.PATCH" (`bs_version_string`).
+///
+/// ```
+/// let (major, minor, patch) = bezsurf::version();
+/// assert_eq!(major, bezsurf::ABI_MAJOR);
+/// assert_eq!(bezsurf::version_string(), format!("{major}.{minor}.{patch}"));
+/// ```
 pub fn version_string() -> &'static str {
     // SAFETY: returns a static NUL-terminated ASCII string, never NULL.
     unsafe { CStr::from_ptr(sys::bs_version_string()) }.to_str().unwrap_or("")

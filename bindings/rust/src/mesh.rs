@@ -158,6 +158,18 @@ impl Surface {
     /// (`bs_surface_tessellate_adaptive`); with [`TessFlags::RELATIVE`] the tolerance is a
     /// fraction of the control-net bounding-box diagonal. `Domain` if the tolerance is not finite
     /// and positive.
+    ///
+    /// ```
+    /// use bezsurf::{MeshFormat, Surface, TessFlags};
+    ///
+    /// let spoon = Surface::builtin("teaspoon")?;
+    /// let coarse = spoon.tessellate_adaptive(0.01, TessFlags::RELATIVE)?;
+    /// let fine = spoon.tessellate_adaptive(0.001, TessFlags::RELATIVE)?;
+    /// assert!(fine.triangle_count() > coarse.triangle_count());
+    /// let stl = fine.to_bytes(MeshFormat::Stl)?;
+    /// assert_eq!(stl.len(), 84 + 50 * fine.triangle_count());
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn tessellate_adaptive(&self, tolerance: f64, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_adaptive(self.as_ptr(), tolerance, flags.0, out) })

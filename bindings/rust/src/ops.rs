@@ -64,6 +64,18 @@ fn length_error(name: &'static str, len: usize, want: usize, exact: bool) -> Err
 impl PatchRef {
     /// Splits at `t` along `dir`, 0 < t < 1 (else `Domain`), into the parts over [0, t] and
     /// [t, 1] (`bs_patch_split`).
+    ///
+    /// ```
+    /// use bezsurf::{Dir, Patch};
+    ///
+    /// let p = Patch::new(2, 1, 1, &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0])?;
+    /// let (lo, hi) = p.split(Dir::U, 0.25)?;
+    /// // lo(1, v) and hi(0, v) are both p(0.25, v).
+    /// assert_eq!(lo.eval_point(1.0, 0.5)?, p.eval_point(0.25, 0.5)?);
+    /// assert_eq!(hi.eval_point(0.0, 0.5)?, p.eval_point(0.25, 0.5)?);
+    /// assert_eq!(p.split(Dir::U, 1.0).unwrap_err().kind(), bezsurf::ErrorKind::Domain);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn split(&self, dir: Dir, t: f64) -> Result<(Patch, Patch)> {
         let (mut lo, mut hi) = (ptr::null_mut(), ptr::null_mut());
         // SAFETY: self is live; lo and hi are valid.
@@ -256,6 +268,17 @@ impl<'a> Curve<'a> {
 impl Patch {
     /// The ruled patch S(u, 0) = c0(u), S(u, 1) = c1(u), straight in v, degree (d, 1) with d the
     /// larger curve degree (`bs_patch_ruled`). `Incompatible` if the dimensions differ.
+    ///
+    /// ```
+    /// use bezsurf::{Curve, Patch};
+    ///
+    /// let bottom = [0.0, 0.0, 1.0, 0.0]; // a line in 2-D, degree 1
+    /// let top = [0.0, 1.0, 0.5, 2.0, 1.0, 1.0]; // a parabola, degree 2
+    /// let p = Patch::ruled(&Curve::new(1, 2, &bottom)?, &Curve::new(2, 2, &top)?)?;
+    /// assert_eq!((p.degree_u(), p.degree_v()), (2, 1));
+    /// assert_eq!(p.eval_point(0.5, 1.0)?, [0.5, 1.5]);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn ruled(c0: &Curve<'_>, c1: &Curve<'_>) -> Result<Patch> {
         let (a, b) = (c0.raw(), c1.raw());
         // SAFETY: both curves point into slices of the lengths their shapes need.

@@ -54,6 +54,18 @@ unsafe impl Sync for Surface {}
 
 impl Surface {
     /// An empty surface; its dimension is fixed by the first patch added.
+    ///
+    /// ```
+    /// use bezsurf::{ErrorKind, Patch, Surface};
+    ///
+    /// let mut s = Surface::new()?;
+    /// let square = Patch::new(1, 1, 2, &[0., 0., 0., 1., 1., 0., 1., 1.])?;
+    /// assert_eq!(s.add(&square)?, 0);
+    /// assert_eq!(s.dim(), 2);
+    /// let other = Patch::new(0, 0, 3, &[0., 0., 0.])?;
+    /// assert_eq!(s.add(&other).unwrap_err().kind(), ErrorKind::Incompatible);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn new() -> Result<Surface> {
         let mut out = ptr::null_mut();
         // SAFETY: out is valid.
