@@ -400,8 +400,8 @@ impl<'a> PointsMut<'a> {
             Repr::Interleaved(data) => {
                 let len = data.len() / dim;
                 let base = data.as_mut_ptr();
-                // A view of fewer than two points never steps; keep its stride small.
-                let stride = if len < 2 { F64_BYTES } else { dim as isize * F64_BYTES };
+                // dim <= BS_MAX_DIM, so this cannot overflow.
+                let stride = dim as isize * F64_BYTES;
                 for (c, view) in out.iter_mut().take(dim).enumerate() {
                     let data = if len == 0 {
                         // No point fits: the library reads no pointer of a zero-count view,
