@@ -183,6 +183,15 @@ impl From<Error> for std::io::Error {
     }
 }
 
+/// "1 value", "2 values": a count of `f64`s for an error's detail.
+pub(crate) fn values(n: usize) -> String {
+    if n == 1 {
+        "1 value".to_owned()
+    } else {
+        format!("{n} values")
+    }
+}
+
 /// `Result` with this crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;
 

@@ -2,7 +2,7 @@
 
 use std::ptr;
 
-use crate::error::{check, Error, ErrorKind, Result};
+use crate::error::{check, values, Error, ErrorKind, Result};
 use crate::patch::PatchRef;
 use crate::strided::{PointsMut, Strided};
 use crate::sys;
@@ -165,14 +165,6 @@ pub(crate) fn kind_ptr(kind: Option<&mut [u8]>, n: usize) -> Result<*mut u8> {
     }
 }
 
-fn values(n: usize) -> &'static str {
-    if n == 1 {
-        "value"
-    } else {
-        "values"
-    }
-}
-
 /// Parameters for scattered evaluation: u and v must have the same length n.
 pub(crate) fn scattered<'u, 'v>(
     u: impl Into<Strided<'u>>,
@@ -183,12 +175,7 @@ pub(crate) fn scattered<'u, 'v>(
         return Err(Error::argument_error(
             sys::BS_ERR_SIZE,
             "v",
-            format!(
-                "has {} {} but `u` has {}; they must have the same length",
-                v.len(),
-                values(v.len()),
-                u.len()
-            ),
+            format!("has {} but `u` has {}; they must have the same length", values(v.len()), u.len()),
         ));
     }
     Ok((u.len(), u.as_cview(), v.as_cview()))
@@ -200,11 +187,7 @@ pub(crate) fn check_ids(ids: &[u32], n: usize) -> Result<()> {
         return Err(Error::argument_error(
             sys::BS_ERR_SIZE,
             "ids",
-            format!(
-                "has {} {} but `u` and `v` have {n}; they must have the same length",
-                ids.len(),
-                values(ids.len())
-            ),
+            format!("has {} but `u` and `v` have {n}; they must have the same length", values(ids.len())),
         ));
     }
     Ok(())

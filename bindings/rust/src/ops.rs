@@ -2,7 +2,7 @@
 
 use std::ptr;
 
-use crate::error::{check, Error, ErrorKind, Result};
+use crate::error::{check, values, Error, ErrorKind, Result};
 use crate::patch::{Patch, PatchRef};
 use crate::sys;
 
@@ -58,7 +58,7 @@ pub(crate) fn new_patch(f: impl FnOnce(*mut *mut sys::bs_patch) -> sys::bs_statu
 /// A `Size` error for the slice `name` of `len` values where `want` are needed.
 fn length_error(name: &'static str, len: usize, want: usize, exact: bool) -> Error {
     let rule = if exact { "exactly" } else { "at least" };
-    Error::argument_error(sys::BS_ERR_SIZE, name, format!("has {len} values, {rule} {want} are needed"))
+    Error::argument_error(sys::BS_ERR_SIZE, name, format!("has {}, {rule} {want} are needed", values(len)))
 }
 
 impl PatchRef {

@@ -4,7 +4,7 @@ use std::marker::PhantomData;
 use std::ops::Deref;
 use std::ptr::{self, NonNull};
 
-use crate::error::{check, Error, Result};
+use crate::error::{check, values, Error, Result};
 use crate::sys;
 
 /// A patch borrowed from its owner: a [`Patch`] (through `Deref`) or a
@@ -111,8 +111,8 @@ impl Patch {
                 sys::BS_ERR_SIZE,
                 "ctrl",
                 format!(
-                    "has {} values; a degree ({deg_u}, {deg_v}) net of dimension {dim} needs exactly {}",
-                    ctrl.len(),
+                    "has {}; a degree ({deg_u}, {deg_v}) net of dimension {dim} needs exactly {}",
+                    values(ctrl.len()),
                     npts * dim
                 ),
             ));
@@ -121,7 +121,7 @@ impl Patch {
             return Err(Error::argument_error(
                 sys::BS_ERR_SIZE,
                 "weights",
-                format!("has {} values; a degree ({deg_u}, {deg_v}) net needs exactly {npts}", w.len()),
+                format!("has {}; a degree ({deg_u}, {deg_v}) net needs exactly {npts}", values(w.len())),
             ));
         }
         let wptr = weights.map_or(ptr::null(), <[f64]>::as_ptr);
@@ -339,7 +339,7 @@ impl PatchRef {
         check(unsafe { sys::bs_patch_get_ctrl(self.as_ptr(), cp, cc, wp, wc) }).map_err(|e| {
             let (np, dim) = (self.num_ctrl(), self.dim());
             let short = |name, len: usize, want: usize| {
-                e.clone().with_argument(name, format!("has {len} values, at least {want} are needed"))
+                e.clone().with_argument(name, format!("has {}, at least {want} are needed", values(len)))
             };
             if e.kind() != crate::ErrorKind::Size {
                 e

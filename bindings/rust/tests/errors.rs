@@ -103,7 +103,7 @@ fn construction_errors_name_the_argument() {
     let e = Curve::new(1, 2, &[0.0; 3]).unwrap_err();
     assert_names(&e, ErrorKind::Size, "ctrl", "has 3 values, exactly 4 are needed");
     let e = Curve::new_rational(1, 2, &[0.0; 4], &[1.0]).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "weights", "has 1 values, exactly 2 are needed");
+    assert_names(&e, ErrorKind::Size, "weights", "has 1 value, exactly 2 are needed");
     let e = Curve::new(99, 2, &[]).unwrap_err();
     assert_names(&e, ErrorKind::Degree, "degree", "is 99");
 }
@@ -131,7 +131,7 @@ fn slice_arguments_of_patch_methods_are_named() {
     let mut iso = [0.0; 6];
     let mut w = [0.0; 1];
     let e = p.isocurve_into(Dir::U, 0.5, &mut iso, Some(&mut w)).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "weights", "has 1 values, at least 2 are needed");
+    assert_names(&e, ErrorKind::Size, "weights", "has 1 value, at least 2 are needed");
 }
 
 #[test]
