@@ -357,7 +357,7 @@ extern "C" {
     /// Borrows patch `i` (NULL if out of range); valid until the surface is destroyed.
     pub fn bs_surface_get(s: *const bs_surface, i: usize) -> *const bs_patch;
 
-    /// Positions and first partials at `n` scattered points, point k on patch `ids[k]` at (u[k], v[k]).
+    /// Positions and first partials at `n` scattered points, point k on patch `ids[k]` at (`u[k]`, `v[k]`).
     pub fn bs_surface_eval(
         s: *const bs_surface,
         n: usize,
