@@ -185,11 +185,21 @@ impl From<Error> for std::io::Error {
 
 /// "1 value", "2 values": a count of `f64`s for an error's detail.
 pub(crate) fn values(n: usize) -> String {
+    count(n, "value")
+}
+
+/// "1 point", "0 points", ...: `n` things for an error's detail.
+pub(crate) fn count(n: usize, thing: &str) -> String {
     if n == 1 {
-        "1 value".to_owned()
+        format!("1 {thing}")
     } else {
-        format!("{n} values")
+        format!("{n} {thing}s")
     }
+}
+
+/// The detail of an output with room for `cap` things where `need` are written.
+pub(crate) fn no_room(cap: usize, need: usize, thing: &str) -> String {
+    format!("has room for {}, but {} must be written", count(cap, thing), count(need, thing))
 }
 
 /// `Result` with this crate's [`Error`].

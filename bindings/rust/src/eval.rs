@@ -2,7 +2,7 @@
 
 use std::ptr;
 
-use crate::error::{check, values, Error, ErrorKind, Result};
+use crate::error::{check, no_room, values, Error, ErrorKind, Result};
 use crate::patch::PatchRef;
 use crate::strided::{PointsMut, Strided};
 use crate::sys;
@@ -137,7 +137,7 @@ pub(crate) fn name_short_output(e: Error, n: usize, outs: &[&CPoints]) -> Error 
     }
     let short = outs.iter().find_map(|o| o.capacity().filter(|&cap| cap < n).map(|cap| (o.name, cap)));
     match short {
-        Some((name, cap)) => e.with_argument(name, format!("has room for {cap} points, {n} are needed")),
+        Some((name, cap)) => e.with_argument(name, no_room(cap, n, "point")),
         None => e,
     }
 }
@@ -157,11 +157,7 @@ pub(crate) fn kind_ptr(kind: Option<&mut [u8]>, n: usize) -> Result<*mut u8> {
     match kind {
         None => Ok(ptr::null_mut()),
         Some(k) if k.len() >= n => Ok(k.as_mut_ptr()),
-        Some(k) => Err(Error::argument_error(
-            sys::BS_ERR_SIZE,
-            "kind",
-            format!("has room for {} bytes, {n} are needed", k.len()),
-        )),
+        Some(k) => Err(Error::argument_error(sys::BS_ERR_SIZE, "kind", no_room(k.len(), n, "byte"))),
     }
 }
 

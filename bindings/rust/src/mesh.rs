@@ -219,7 +219,7 @@ impl Mesh {
         check(unsafe { f(self.as_ptr(), views.as_ptr()) }).map_err(|e| {
             let cap = out.capacity(dim);
             if e.kind() == ErrorKind::Size && cap < needed {
-                e.with_argument("out", format!("has room for {cap} points, {needed} are needed"))
+                e.with_argument("out", crate::error::no_room(cap, needed, "point"))
             } else {
                 e
             }

@@ -46,23 +46,23 @@ fn short_outputs_are_named() {
     let u = [0.0, 0.5, 1.0];
     let (mut pos, mut du, mut dv) = ([0.0; 9], [0.0; 9], [-1.0; 6]);
     let e = p.eval_with(&u, &u, Outputs::new().pos(&mut pos).du(&mut du).dv(&mut dv)).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "dv", "has room for 2 points, 3 are needed");
+    assert_names(&e, ErrorKind::Size, "dv", "has room for 2 points, but 3 points must be written");
     assert_eq!(dv, [-1.0; 6]);
     let mut x = [0.0; 3];
     let mut y = [0.0; 3];
     let mut z = [0.0; 1];
     let views = [StridedMut::from(&mut x), StridedMut::from(&mut y), StridedMut::from(&mut z)];
     let e = p.eval_normal(&u, &u, Outputs::new().normal(views)).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "normal", "has room for 1 points, 3 are needed");
+    assert_names(&e, ErrorKind::Size, "normal", "has room for 1 point, but 3 points must be written");
     let mut kind = [0u8; 2];
     let e = p.eval_normal(&u, &u, Outputs::new().kind(&mut kind)).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "kind", "has room for 2 bytes, 3 are needed");
+    assert_names(&e, ErrorKind::Size, "kind", "has room for 2 bytes, but 3 bytes must be written");
     let mut grid = [0.0; 3 * 8];
     let e = p.eval_grid(&u, &u, Outputs::new().pos(&mut grid)).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "pos", "has room for 8 points, 9 are needed");
+    assert_names(&e, ErrorKind::Size, "pos", "has room for 8 points, but 9 points must be written");
     let mut d = [0.0; 3];
     let e = p.eval_deriv(0, 1, &u, &u, &mut d).unwrap_err();
-    assert_names(&e, ErrorKind::Size, "out", "has room for 1 points, 3 are needed");
+    assert_names(&e, ErrorKind::Size, "out", "has room for 1 point, but 3 points must be written");
 }
 
 #[test]
@@ -152,9 +152,19 @@ fn mesh_outputs_too_small_are_named() {
     let mesh = s.tessellate_uniform(2, 2, bezsurf::TessFlags::NONE).unwrap();
     assert_eq!(mesh.vertex_count(), 9);
     let mut xyz = vec![0.0; 3 * 8];
-    assert_names(&mesh.copy_positions(&mut xyz).unwrap_err(), ErrorKind::Size, "out", "room for 8 points, 9");
+    assert_names(
+        &mesh.copy_positions(&mut xyz).unwrap_err(),
+        ErrorKind::Size,
+        "out",
+        "has room for 8 points, but 9 points must be written",
+    );
     let mut uv = vec![0.0; 6 * mesh.triangle_count() - 1];
-    assert_names(&mesh.copy_corner_uv(&mut uv).unwrap_err(), ErrorKind::Size, "out", "24 are needed");
+    assert_names(
+        &mesh.copy_corner_uv(&mut uv).unwrap_err(),
+        ErrorKind::Size,
+        "out",
+        "but 24 points must be written",
+    );
 }
 
 #[test]
@@ -193,3 +203,22 @@ fn io_error_conversion_keeps_the_message() {
 }
 
 use bezsurf::PointsMut;
+
+#[test]
+fn zero_points_need_no_room_and_short_buffers_are_named() {
+    let p = plane();
+    let none: [f64; 0] = [];
+    let mut empty: [f64; 0] = [];
+    p.eval(&none, &none, &mut empty).unwrap();
+    let mut short = [5.0; 2]; // room for no 3-D point
+    p.eval(&none, &none, &mut short).unwrap();
+    let [x, y, z] = StridedMut::split_interleaved::<3>(&mut short);
+    p.eval_grid(&none, &[0.5], Outputs::new().pos([x, y, z])).unwrap();
+    assert_eq!(short, [5.0; 2]);
+    let e = p.eval(&[0.5], &[0.5], &mut short).unwrap_err();
+    assert_names(&e, ErrorKind::Size, "pos", "has room for 0 points, but 1 point must be written");
+    assert_eq!(short, [5.0; 2]);
+    let mut s = Surface::new().unwrap();
+    s.add(&p).unwrap();
+    s.eval(&[], &none, &none, Outputs::new().pos(&mut empty)).unwrap();
+}
