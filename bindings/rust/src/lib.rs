@@ -53,7 +53,7 @@ pub use io::builtin_names;
 pub use mesh::{Mesh, MeshFormat, TessFlags, TESS_MAX_RATE};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
-pub use strided::{PointsMut, Strided, StridedMut};
+pub use strided::{PointsMut, Strided, StridedIter, StridedMut};
 pub use surface::{Iter, Surface};
 
 use std::ffi::CStr;

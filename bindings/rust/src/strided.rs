@@ -123,15 +123,57 @@ impl<'a> Strided<'a> {
         (i < self.len).then(|| unsafe { *self.elem(i) })
     }
 
-    /// The elements in order.
-    pub fn iter(&self) -> impl Iterator<Item = f64> + 'a {
-        let view = *self;
-        (0..view.len).map(move |i| view[i])
+    /// The elements in order (also `for x in view`).
+    pub fn iter(&self) -> StridedIter<'a> {
+        StridedIter { view: *self, front: 0, back: self.len }
     }
 
     pub(crate) fn as_cview(&self) -> sys::bs_cview {
         // Cannot overflow: layout() checked |stride| * 8 against isize.
         sys::bs_cview { data: self.ptr, count: self.len, stride: self.stride * F64_BYTES }
+    }
+}
+
+/// Iterator over the values of a [`Strided`] view, front to back ([`Strided::iter`]).
+#[derive(Debug, Clone)]
+pub struct StridedIter<'a> {
+    view: Strided<'a>,
+    front: usize,
+    back: usize,
+}
+
+impl Iterator for StridedIter<'_> {
+    type Item = f64;
+    fn next(&mut self) -> Option<f64> {
+        if self.front == self.back {
+            return None;
+        }
+        self.front += 1;
+        self.view.get(self.front - 1)
+    }
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        (self.back - self.front, Some(self.back - self.front))
+    }
+}
+
+impl DoubleEndedIterator for StridedIter<'_> {
+    fn next_back(&mut self) -> Option<f64> {
+        if self.front == self.back {
+            return None;
+        }
+        self.back -= 1;
+        self.view.get(self.back)
+    }
+}
+
+impl ExactSizeIterator for StridedIter<'_> {}
+impl std::iter::FusedIterator for StridedIter<'_> {}
+
+impl<'a> IntoIterator for Strided<'a> {
+    type Item = f64;
+    type IntoIter = StridedIter<'a>;
+    fn into_iter(self) -> StridedIter<'a> {
+        self.iter()
     }
 }
 
@@ -501,6 +543,12 @@ mod tests {
         assert_eq!(s.iter().collect::<Vec<_>>(), [1., 4.]);
         assert_eq!(s.get(2), None);
         assert_eq!(s.rev().iter().collect::<Vec<_>>(), [4., 1.]);
+        assert_eq!(s.iter().rev().collect::<Vec<_>>(), [4., 1.]);
+        let mut it = s.into_iter();
+        assert_eq!(
+            (it.len(), it.next(), it.len(), it.next_back(), it.next()),
+            (2, Some(1.), 1, Some(4.), None)
+        );
         let c = s.rev().as_cview();
         assert_eq!((c.count, c.stride), (2, -24));
         assert_eq!(Strided::new(&data, 1).len(), 7);
