@@ -36,6 +36,32 @@ impl Side {
     }
 }
 
+impl From<Side> for i32 {
+    /// The C constant (`BS_SIDE_*`).
+    fn from(side: Side) -> i32 {
+        match side {
+            Side::V0 => sys::BS_SIDE_V0,
+            Side::U1 => sys::BS_SIDE_U1,
+            Side::V1 => sys::BS_SIDE_V1,
+            Side::U0 => sys::BS_SIDE_U0,
+        }
+    }
+}
+
+impl TryFrom<i32> for Side {
+    type Error = crate::Error;
+    /// The side for a `BS_SIDE_*` value; any other value is `InvalidArg`.
+    fn try_from(raw: i32) -> Result<Side> {
+        Side::from_raw(raw).ok_or_else(|| {
+            crate::Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "raw",
+                format!("is {raw}, not a BS_SIDE_ value"),
+            )
+        })
+    }
+}
+
 /// How two patches meet along one shared edge (`bs_edge_continuity`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EdgeContinuity {
@@ -88,6 +114,14 @@ impl Surface {
     /// shared edge (`bs_surface_continuity`). `tol` (finite, >= 0) is the absolute tolerance for
     /// matching sides and for C1; `samples` (1..=4096) normal samples per edge measure G1.
     /// Errors: `Dimension` (not 3-D), `Domain` (tol or samples out of range).
+    ///
+    /// ```
+    /// let cup = bezsurf::Surface::builtin("teacup")?;
+    /// let report = cup.continuity(1e-6, 16)?;
+    /// assert!(!report.edges.is_empty());
+    /// assert!(report.edges.iter().all(|e| e.c0_gap <= 1e-6 && e.patch_a <= e.patch_b));
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn continuity(&self, tol: f64, samples: usize) -> Result<Continuity> {
         let (mut n_edges, mut n_open) = (0usize, 0usize);
         // SAFETY: NULL arrays ask for the counts only.

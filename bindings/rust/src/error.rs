@@ -38,12 +38,30 @@ pub enum ErrorKind {
     Unknown,
 }
 
-/// A failed call: the C status code and the library's description of it, plus, for the readers,
-/// where and why the input was rejected.
+/// A failed call: the C status code and the library's description of it, plus, where known, the
+/// argument that was rejected ([`argument`](Error::argument)), where a reader stopped
+/// ([`position`](Error::position)) and why ([`detail`](Error::detail)).
+///
+/// ```
+/// use bezsurf::{ErrorKind, Patch};
+///
+/// let plane = Patch::new(1, 1, 3, &[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 0.])?;
+/// let mut pos = [0.0; 6];
+/// let err = plane.eval(&[0.0, 1.0], &[0.5], &mut pos).unwrap_err();
+/// assert_eq!(err.kind(), ErrorKind::Size);
+/// assert_eq!(err.argument(), Some("v"));
+/// assert_eq!(
+///     err.to_string(),
+///     "buffer or view too small: argument `v` has 1 value but `u` has 2; \
+///      they must have the same length (bezsurf status -5)"
+/// );
+/// # Ok::<(), bezsurf::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Error {
     code: sys::bs_status,
     message: &'static str,
+    argument: Option<&'static str>,
     position: Option<(usize, usize)>,
     detail: Option<String>,
 }
@@ -51,7 +69,19 @@ pub struct Error {
 impl Error {
     /// The error for a status code, with its text from `bs_status_string`.
     pub fn from_code(code: i32) -> Error {
-        Error { code, message: status_string(code), position: None, detail: None }
+        Error { code, message: status_string(code), argument: None, position: None, detail: None }
+    }
+
+    /// The error for a status code caused by the argument `name`, with an explanation.
+    pub(crate) fn argument_error(code: i32, name: &'static str, detail: impl Into<String>) -> Error {
+        Error::from_code(code).with_argument(name, detail)
+    }
+
+    /// This error, attributed to the argument `name` with an explanation.
+    pub(crate) fn with_argument(mut self, name: &'static str, detail: impl Into<String>) -> Error {
+        self.argument = Some(name);
+        self.detail = Some(detail.into());
+        self
     }
 
     /// The error for a status code with what a reader reported in its `bs_parse_error`.
@@ -72,7 +102,14 @@ impl Error {
         self.position
     }
 
-    /// For parse and I/O errors of the readers: the library's account of what is wrong.
+    /// The name of the argument that was rejected, as it is spelled in the method's signature
+    /// (`"u"`, `"v"`, `"pos"`, `"ctrl"`, `"stride"`, ...), when the crate knows it.
+    pub fn argument(&self) -> Option<&'static str> {
+        self.argument
+    }
+
+    /// What is wrong, in words: for the readers' parse and I/O errors the library's account,
+    /// for an [`argument`](Error::argument) error the crate's (e.g. which lengths differ).
     pub fn detail(&self) -> Option<&str> {
         self.detail.as_deref()
     }
@@ -109,6 +146,13 @@ impl Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.message)?;
+        if let Some(name) = self.argument {
+            write!(f, ": argument `{name}`")?;
+            if let Some(detail) = &self.detail {
+                write!(f, " {detail}")?;
+            }
+            return write!(f, " (bezsurf status {})", self.code);
+        }
         if let Some((line, column)) = self.position {
             write!(f, " at line {line}, column {column}")?;
         }
@@ -120,6 +164,43 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+impl From<Error> for std::io::Error {
+    /// Wraps the error for code that reports `std::io::Error`: `Io` becomes
+    /// [`Other`](std::io::ErrorKind::Other), argument, size, domain and parse errors
+    /// [`InvalidInput`](std::io::ErrorKind::InvalidInput) or
+    /// [`InvalidData`](std::io::ErrorKind::InvalidData), `NoMemory`
+    /// [`OutOfMemory`](std::io::ErrorKind::OutOfMemory); the original is the source.
+    fn from(e: Error) -> std::io::Error {
+        use std::io::ErrorKind as Io;
+        let kind = match e.kind() {
+            ErrorKind::Parse => Io::InvalidData,
+            ErrorKind::NoMemory => Io::OutOfMemory,
+            ErrorKind::Io | ErrorKind::Unknown => Io::Other,
+            _ => Io::InvalidInput,
+        };
+        std::io::Error::new(kind, e)
+    }
+}
+
+/// "1 value", "2 values": a count of `f64`s for an error's detail.
+pub(crate) fn values(n: usize) -> String {
+    count(n, "value")
+}
+
+/// "1 point", "0 points", ...: `n` things for an error's detail.
+pub(crate) fn count(n: usize, thing: &str) -> String {
+    if n == 1 {
+        format!("1 {thing}")
+    } else {
+        format!("{n} {thing}s")
+    }
+}
+
+/// The detail of an output with room for `cap` things where `need` are written.
+pub(crate) fn no_room(cap: usize, need: usize, thing: &str) -> String {
+    format!("has room for {}, but {} must be written", count(cap, thing), count(need, thing))
+}
 
 /// `Result` with this crate's [`Error`].
 pub type Result<T> = std::result::Result<T, Error>;

@@ -21,8 +21,18 @@ pub(crate) fn c_path(path: &Path) -> Result<CString> {
         path.as_os_str().as_bytes().to_vec()
     };
     #[cfg(not(unix))]
-    let bytes = path.to_str().ok_or_else(|| Error::from_code(sys::BS_ERR_INVALID_ARG))?.as_bytes().to_vec();
-    CString::new(bytes).map_err(|_| Error::from_code(sys::BS_ERR_INVALID_ARG))
+    let bytes = path
+        .to_str()
+        .ok_or_else(|| Error::argument_error(sys::BS_ERR_INVALID_ARG, "path", "is not valid Unicode"))?
+        .as_bytes()
+        .to_vec();
+    CString::new(bytes).map_err(|e| {
+        Error::argument_error(
+            sys::BS_ERR_INVALID_ARG,
+            "path",
+            format!("has a NUL byte at {}", e.nul_position()),
+        )
+    })
 }
 
 /// Runs a reader and turns its status and parse error into a surface or an [`Error`] with
@@ -46,6 +56,20 @@ fn read_with(
 impl Surface {
     /// Parses .bpt text (`bs_surface_read_bpt`) into a surface of 3-D patches. `Parse` errors
     /// carry the line, column and reason.
+    ///
+    /// ```
+    /// use bezsurf::Surface;
+    ///
+    /// let pot = Surface::builtin("teapot")?;
+    /// let text = pot.write_bpt()?;
+    /// let back = Surface::read_bpt(&text)?;
+    /// assert_eq!(back, pot); // every control point survives bit for bit
+    ///
+    /// let err = Surface::read_bpt("1\n3 3\n0 0 x\n").unwrap_err();
+    /// assert_eq!(err.kind(), bezsurf::ErrorKind::Parse);
+    /// assert_eq!(err.position().map(|(line, _)| line), Some(3));
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn read_bpt(text: impl AsRef<[u8]>) -> Result<Surface> {
         let text = text.as_ref();
         // SAFETY: text holds len bytes; err and out are valid.
@@ -87,7 +111,13 @@ impl Surface {
     /// One of the built-in surfaces (`bs_surface_create_builtin`): "teapot", "teacup" or
     /// "teaspoon" (see [`builtin_names`]). An unknown name is `InvalidArg`.
     pub fn builtin(name: &str) -> Result<Surface> {
-        let name = CString::new(name).map_err(|_| Error::from_code(sys::BS_ERR_INVALID_ARG))?;
+        let name = CString::new(name).map_err(|e| {
+            Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "name",
+                format!("has a NUL byte at {}", e.nul_position()),
+            )
+        })?;
         let mut out = ptr::null_mut();
         // SAFETY: name is NUL-terminated; out is valid.
         check(unsafe { sys::bs_surface_create_builtin(name.as_ptr(), &mut out) })?;
@@ -97,11 +127,16 @@ impl Surface {
 }
 
 /// The names of the built-in surfaces (`bs_builtin_name`).
+///
+/// ```
+/// assert_eq!(bezsurf::builtin_names(), ["teapot", "teacup", "teaspoon"]);
+/// ```
 pub fn builtin_names() -> Vec<&'static str> {
     (0..)
         // SAFETY: any index is allowed; the result is NULL or a static NUL-terminated string.
         .map(|i| unsafe { sys::bs_builtin_name(i) })
         .take_while(|p| !p.is_null())
+        // SAFETY: p is a non-NULL (checked above) static NUL-terminated string.
         .map(|p| unsafe { CStr::from_ptr(p) }.to_str().unwrap_or(""))
         .collect()
 }

@@ -29,6 +29,10 @@
 //! of threads at once (only `Surface::add` needs `&mut`). Lifetimes: a patch borrowed from a surface is a
 //! `&PatchRef` that cannot outlive the surface.
 
+#![deny(missing_docs)]
+#![deny(unsafe_op_in_unsafe_fn)]
+#![deny(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
+
 pub mod sys;
 
 mod continuity;
@@ -49,8 +53,8 @@ pub use io::builtin_names;
 pub use mesh::{Mesh, MeshFormat, TessFlags, TESS_MAX_RATE};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
-pub use strided::{PointsMut, Strided, StridedMut};
-pub use surface::Surface;
+pub use strided::{PointsMut, Strided, StridedIter, StridedMut};
+pub use surface::{Iter, Surface};
 
 use std::ffi::CStr;
 
@@ -68,6 +72,12 @@ pub fn version_number() -> u32 {
 }
 
 /// Run-time library version as "MAJOR.MINOR.PATCH" (`bs_version_string`).
+///
+/// ```
+/// let (major, minor, patch) = bezsurf::version();
+/// assert_eq!(major, bezsurf::ABI_MAJOR);
+/// assert_eq!(bezsurf::version_string(), format!("{major}.{minor}.{patch}"));
+/// ```
 pub fn version_string() -> &'static str {
     // SAFETY: returns a static NUL-terminated ASCII string, never NULL.
     unsafe { CStr::from_ptr(sys::bs_version_string()) }.to_str().unwrap_or("")

@@ -4,8 +4,9 @@ use std::ffi::c_void;
 use std::ops::BitOr;
 use std::path::Path;
 use std::ptr::{self, NonNull};
+use std::sync::Arc;
 
-use crate::error::{check, Error, Result};
+use crate::error::{check, Error, ErrorKind, Result};
 use crate::io::c_path;
 use crate::strided::PointsMut;
 use crate::surface::Surface;
@@ -27,6 +28,19 @@ impl TessFlags {
     /// The C flag bits.
     pub fn bits(self) -> i32 {
         self.0
+    }
+}
+
+impl From<TessFlags> for i32 {
+    /// The C flag bits, as [`TessFlags::bits`].
+    fn from(f: TessFlags) -> i32 {
+        f.0
+    }
+}
+
+impl std::ops::BitOrAssign for TessFlags {
+    fn bitor_assign(&mut self, rhs: TessFlags) {
+        self.0 |= rhs.0;
     }
 }
 
@@ -53,6 +67,13 @@ pub enum MeshFormat {
     Stl,
 }
 
+impl From<MeshFormat> for i32 {
+    /// The C constant (`BS_MESH_*`).
+    fn from(f: MeshFormat) -> i32 {
+        f.raw()
+    }
+}
+
 impl MeshFormat {
     fn raw(self) -> i32 {
         match self {
@@ -64,20 +85,44 @@ impl MeshFormat {
     }
 }
 
-/// An owned, immutable triangle mesh (`bs_mesh *`), released with `bs_mesh_destroy` on drop.
-/// It is independent of the surface it was made from.
+/// An immutable triangle mesh (`bs_mesh *`), released with `bs_mesh_destroy` when its last
+/// clone is dropped. It is independent of the surface it was made from.
+///
+/// A mesh never changes after it is made, so `Clone` shares it (a reference count, no copy):
+/// a clone is indistinguishable from a copy.
+///
+/// ```
+/// use bezsurf::{Surface, TessFlags};
+///
+/// let cup = Surface::builtin("teacup")?;
+/// let mesh = cup.tessellate_uniform(4, 4, TessFlags::NONE)?;
+/// assert_eq!(mesh.triangle_count(), cup.len() * 4 * 4 * 2);
+/// let tris = mesh.triangles();
+/// assert!(tris.iter().all(|&i| (i as usize) < mesh.vertex_count()));
+/// let shared = mesh.clone();
+/// assert_eq!(shared.positions(), mesh.positions());
+/// # Ok::<(), bezsurf::Error>(())
+/// ```
+#[derive(Clone)]
 pub struct Mesh {
+    handle: Arc<MeshHandle>,
+}
+
+/// The owned C handle behind every clone of a [`Mesh`].
+struct MeshHandle {
     ptr: NonNull<sys::bs_mesh>,
 }
 
 // SAFETY: a mesh never changes after it is made (every accessor takes `const bs_mesh *`) and the
-// library has no mutable global state, so it may be read from any number of threads at once.
-unsafe impl Send for Mesh {}
-unsafe impl Sync for Mesh {}
+// library has no mutable global state, so the handle may be used and destroyed from any thread.
+unsafe impl Send for MeshHandle {}
+// SAFETY: as for Send: every use through a shared reference only reads the mesh, which any
+// number of threads may do at once.
+unsafe impl Sync for MeshHandle {}
 
-impl Drop for Mesh {
+impl Drop for MeshHandle {
     fn drop(&mut self) {
-        // SAFETY: we own the mesh.
+        // SAFETY: the handle owns the mesh and is dropped once, after the last Mesh sharing it.
         unsafe { sys::bs_mesh_destroy(self.ptr.as_ptr()) }
     }
 }
@@ -96,7 +141,7 @@ fn new_mesh(f: impl FnOnce(*mut *mut sys::bs_mesh) -> sys::bs_status) -> Result<
     let mut out = ptr::null_mut();
     check(f(&mut out))?;
     let ptr = NonNull::new(out).expect("bezsurf returned a NULL mesh on success");
-    Ok(Mesh { ptr })
+    Ok(Mesh { handle: Arc::new(MeshHandle { ptr }) })
 }
 
 impl Surface {
@@ -113,6 +158,18 @@ impl Surface {
     /// (`bs_surface_tessellate_adaptive`); with [`TessFlags::RELATIVE`] the tolerance is a
     /// fraction of the control-net bounding-box diagonal. `Domain` if the tolerance is not finite
     /// and positive.
+    ///
+    /// ```
+    /// use bezsurf::{MeshFormat, Surface, TessFlags};
+    ///
+    /// let spoon = Surface::builtin("teaspoon")?;
+    /// let coarse = spoon.tessellate_adaptive(0.01, TessFlags::RELATIVE)?;
+    /// let fine = spoon.tessellate_adaptive(0.001, TessFlags::RELATIVE)?;
+    /// assert!(fine.triangle_count() > coarse.triangle_count());
+    /// let stl = fine.to_bytes(MeshFormat::Stl)?;
+    /// assert_eq!(stl.len(), 84 + 50 * fine.triangle_count());
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn tessellate_adaptive(&self, tolerance: f64, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_adaptive(self.as_ptr(), tolerance, flags.0, out) })
@@ -122,7 +179,7 @@ impl Surface {
 impl Mesh {
     /// The C handle, valid while `self` is borrowed.
     pub fn as_ptr(&self) -> *const sys::bs_mesh {
-        self.ptr.as_ptr()
+        self.handle.ptr.as_ptr()
     }
 
     /// Number of vertices.
@@ -153,33 +210,41 @@ impl Mesh {
         &self,
         out: PointsMut<'_>,
         dim: usize,
+        needed: usize,
         f: unsafe extern "C" fn(*const sys::bs_mesh, *const sys::bs_view) -> sys::bs_status,
     ) -> Result<()> {
         let mut out = out;
-        let views = out.c_views(dim)?;
+        let views = out.c_views(dim, "out")?;
         // SAFETY: the views stay inside the slices they were built from and do not overlap.
-        check(unsafe { f(self.as_ptr(), views.as_ptr()) })
+        check(unsafe { f(self.as_ptr(), views.as_ptr()) }).map_err(|e| {
+            let cap = out.capacity(dim);
+            if e.kind() == ErrorKind::Size && cap < needed {
+                e.with_argument("out", crate::error::no_room(cap, needed, "point"))
+            } else {
+                e
+            }
+        })
     }
 
     /// Copies the vertex positions (3 coordinates per vertex) (`bs_mesh_copy_positions`).
     pub fn copy_positions<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 3, sys::bs_mesh_copy_positions)
+        self.copy_views(out.into(), 3, self.vertex_count(), sys::bs_mesh_copy_positions)
     }
 
     /// Copies the unit vertex normals (3 per vertex) (`bs_mesh_copy_normals`).
     pub fn copy_normals<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 3, sys::bs_mesh_copy_normals)
+        self.copy_views(out.into(), 3, self.vertex_count(), sys::bs_mesh_copy_normals)
     }
 
     /// Copies the vertex (u, v) parameters (2 per vertex) (`bs_mesh_copy_uv`).
     pub fn copy_uv<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 2, sys::bs_mesh_copy_uv)
+        self.copy_views(out.into(), 2, self.vertex_count(), sys::bs_mesh_copy_uv)
     }
 
     /// Copies the (u, v) of every triangle corner on the triangle's own patch (2 per corner, 3
     /// corners per triangle) (`bs_mesh_copy_corner_uv`).
     pub fn copy_corner_uv<'a>(&self, out: impl Into<PointsMut<'a>>) -> Result<()> {
-        self.copy_views(out.into(), 2, sys::bs_mesh_copy_corner_uv)
+        self.copy_views(out.into(), 2, 3 * self.triangle_count(), sys::bs_mesh_copy_corner_uv)
     }
 
     /// Positions as a new interleaved vector, x y z per vertex.

@@ -2,7 +2,7 @@
 
 use std::ptr;
 
-use crate::error::{check, Error, Result};
+use crate::error::{check, values, Error, ErrorKind, Result};
 use crate::patch::{Patch, PatchRef};
 use crate::sys;
 
@@ -13,6 +13,29 @@ pub enum Dir {
     U,
     /// Along v (the second index of the net).
     V,
+}
+
+impl From<Dir> for i32 {
+    /// The C constant (`BS_DIR_U`, `BS_DIR_V`).
+    fn from(d: Dir) -> i32 {
+        d.raw()
+    }
+}
+
+impl TryFrom<i32> for Dir {
+    type Error = Error;
+    /// The direction for a `BS_DIR_*` value; any other value is `InvalidArg`.
+    fn try_from(raw: i32) -> Result<Dir> {
+        match raw {
+            sys::BS_DIR_U => Ok(Dir::U),
+            sys::BS_DIR_V => Ok(Dir::V),
+            _ => Err(Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "raw",
+                format!("is {raw}, not a BS_DIR_ value"),
+            )),
+        }
+    }
 }
 
 impl Dir {
@@ -32,13 +55,27 @@ pub(crate) fn new_patch(f: impl FnOnce(*mut *mut sys::bs_patch) -> sys::bs_statu
     Ok(unsafe { Patch::from_raw(out) })
 }
 
-fn size_error() -> Error {
-    Error::from_code(sys::BS_ERR_SIZE)
+/// A `Size` error for the slice `name` of `len` values where `want` are needed.
+fn length_error(name: &'static str, len: usize, want: usize, exact: bool) -> Error {
+    let rule = if exact { "exactly" } else { "at least" };
+    Error::argument_error(sys::BS_ERR_SIZE, name, format!("has {}, {rule} {want} are needed", values(len)))
 }
 
 impl PatchRef {
     /// Splits at `t` along `dir`, 0 < t < 1 (else `Domain`), into the parts over [0, t] and
     /// [t, 1] (`bs_patch_split`).
+    ///
+    /// ```
+    /// use bezsurf::{Dir, Patch};
+    ///
+    /// let p = Patch::new(2, 1, 1, &[0.0, 1.0, 2.0, 3.0, 4.0, 5.0])?;
+    /// let (lo, hi) = p.split(Dir::U, 0.25)?;
+    /// // lo(1, v) and hi(0, v) are both p(0.25, v).
+    /// assert_eq!(lo.eval_point(1.0, 0.5)?, p.eval_point(0.25, 0.5)?);
+    /// assert_eq!(hi.eval_point(0.0, 0.5)?, p.eval_point(0.25, 0.5)?);
+    /// assert_eq!(p.split(Dir::U, 1.0).unwrap_err().kind(), bezsurf::ErrorKind::Domain);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn split(&self, dir: Dir, t: f64) -> Result<(Patch, Patch)> {
         let (mut lo, mut hi) = (ptr::null_mut(), ptr::null_mut());
         // SAFETY: self is live; lo and hi are valid.
@@ -97,10 +134,21 @@ impl PatchRef {
         weights: Option<&mut [f64]>,
     ) -> Result<()> {
         let (wp, wc) = weights.map_or((ptr::null_mut(), 0), |w| (w.as_mut_ptr(), w.len()));
+        let cc = ctrl.len();
         // SAFETY: each pointer is NULL or a slice of the capacity passed with it.
-        check(unsafe {
-            sys::bs_patch_isocurve(self.as_ptr(), dir.raw(), t, ctrl.as_mut_ptr(), ctrl.len(), wp, wc)
-        })
+        check(unsafe { sys::bs_patch_isocurve(self.as_ptr(), dir.raw(), t, ctrl.as_mut_ptr(), cc, wp, wc) })
+            .map_err(|e| {
+                let (np, dim) = (self.isocurve_len(dir), self.dim());
+                if e.kind() != ErrorKind::Size {
+                    e
+                } else if cc < np * dim {
+                    length_error("ctrl", cc, np * dim, false)
+                } else if !wp.is_null() && wc < np {
+                    length_error("weights", wc, np, false)
+                } else {
+                    e
+                }
+            })
     }
 
     /// The iso-curve's control points and weights as new vectors (see
@@ -116,8 +164,11 @@ impl PatchRef {
     /// values each in `lo` and `hi` (`Size` if either is shorter).
     pub fn bounds_into(&self, lo: &mut [f64], hi: &mut [f64]) -> Result<()> {
         // The C function writes dim values with no capacity argument.
-        if lo.len() < self.dim() || hi.len() < self.dim() {
-            return Err(size_error());
+        if lo.len() < self.dim() {
+            return Err(length_error("lo", lo.len(), self.dim(), false));
+        }
+        if hi.len() < self.dim() {
+            return Err(length_error("hi", hi.len(), self.dim(), false));
         }
         // SAFETY: lo and hi hold at least dim values.
         check(unsafe { sys::bs_patch_bounds(self.as_ptr(), lo.as_mut_ptr(), hi.as_mut_ptr()) })
@@ -136,7 +187,7 @@ impl PatchRef {
         let dim = self.dim();
         // The C function reads dim*(dim+1) values with no capacity argument.
         if affine.len() != dim * (dim + 1) {
-            return Err(size_error());
+            return Err(length_error("affine", affine.len(), dim * (dim + 1), true));
         }
         // SAFETY: affine holds the dim*(dim+1) values read.
         new_patch(|out| unsafe { sys::bs_patch_transform(self.as_ptr(), affine.as_ptr(), out) })
@@ -182,15 +233,14 @@ impl<'a> Curve<'a> {
     }
 
     fn make(degree: usize, dim: usize, ctrl: &'a [f64], weights: Option<&'a [f64]>) -> Result<Curve<'a>> {
-        if degree > sys::BS_MAX_DEGREE {
-            return Err(Error::from_code(sys::BS_ERR_DEGREE));
-        }
-        if dim == 0 || dim > sys::BS_MAX_DIM {
-            return Err(Error::from_code(sys::BS_ERR_DIMENSION));
-        }
+        crate::patch::check_degree("degree", degree)?;
+        crate::patch::check_dim(dim)?;
         // The C side reads exactly these lengths, with no capacity argument.
-        if ctrl.len() != (degree + 1) * dim || weights.is_some_and(|w| w.len() != degree + 1) {
-            return Err(size_error());
+        if ctrl.len() != (degree + 1) * dim {
+            return Err(length_error("ctrl", ctrl.len(), (degree + 1) * dim, true));
+        }
+        if let Some(w) = weights.filter(|w| w.len() != degree + 1) {
+            return Err(length_error("weights", w.len(), degree + 1, true));
         }
         Ok(Curve { degree, dim, ctrl, weights })
     }
@@ -218,6 +268,17 @@ impl<'a> Curve<'a> {
 impl Patch {
     /// The ruled patch S(u, 0) = c0(u), S(u, 1) = c1(u), straight in v, degree (d, 1) with d the
     /// larger curve degree (`bs_patch_ruled`). `Incompatible` if the dimensions differ.
+    ///
+    /// ```
+    /// use bezsurf::{Curve, Patch};
+    ///
+    /// let bottom = [0.0, 0.0, 1.0, 0.0]; // a line in 2-D, degree 1
+    /// let top = [0.0, 1.0, 0.5, 2.0, 1.0, 1.0]; // a parabola, degree 2
+    /// let p = Patch::ruled(&Curve::new(1, 2, &bottom)?, &Curve::new(2, 2, &top)?)?;
+    /// assert_eq!((p.degree_u(), p.degree_v()), (2, 1));
+    /// assert_eq!(p.eval_point(0.5, 1.0)?, [0.5, 1.5]);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn ruled(c0: &Curve<'_>, c1: &Curve<'_>) -> Result<Patch> {
         let (a, b) = (c0.raw(), c1.raw());
         // SAFETY: both curves point into slices of the lengths their shapes need.

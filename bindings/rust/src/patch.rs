@@ -4,7 +4,7 @@ use std::marker::PhantomData;
 use std::ops::Deref;
 use std::ptr::{self, NonNull};
 
-use crate::error::{check, Error, Result};
+use crate::error::{check, values, Error, Result};
 use crate::sys;
 
 /// A patch borrowed from its owner: a [`Patch`] (through `Deref`) or a
@@ -20,6 +20,7 @@ pub struct PatchRef {
 // after bs_patch_create) and the library has no mutable global state and no lazy caches, so any
 // number of threads may read the same patch at once, and a patch may be read from any thread.
 unsafe impl Send for PatchRef {}
+// SAFETY: as for Send: every method takes `&self` and only reads the immutable patch.
 unsafe impl Sync for PatchRef {}
 
 /// An owned Bezier patch (`bs_patch *`), released with `bs_patch_destroy` on drop.
@@ -32,6 +33,7 @@ pub struct Patch {
 // SAFETY: as for PatchRef: nothing takes `&mut self` on a Patch except Drop, which owns it, and
 // the library lets any thread use or destroy a patch.
 unsafe impl Send for Patch {}
+// SAFETY: a shared `&Patch` only reaches `&PatchRef`, which is Sync (see above).
 unsafe impl Sync for Patch {}
 
 /// Number of control points of a (deg_u, deg_v) net, when the degrees are in range.
@@ -39,15 +41,35 @@ fn net_points(deg_u: usize, deg_v: usize) -> usize {
     (deg_u + 1) * (deg_v + 1)
 }
 
-/// Checks the shape as `bs_patch_create` does, so the slice lengths can be checked after it.
-fn check_shape(deg_u: usize, deg_v: usize, dim: usize) -> Result<()> {
-    if deg_u > sys::BS_MAX_DEGREE || deg_v > sys::BS_MAX_DEGREE {
-        return Err(Error::from_code(sys::BS_ERR_DEGREE));
-    }
-    if dim == 0 || dim > sys::BS_MAX_DIM {
-        return Err(Error::from_code(sys::BS_ERR_DIMENSION));
+/// `Degree` naming `name` if `degree` is above `BS_MAX_DEGREE`.
+pub(crate) fn check_degree(name: &'static str, degree: usize) -> Result<()> {
+    if degree > sys::BS_MAX_DEGREE {
+        return Err(Error::argument_error(
+            sys::BS_ERR_DEGREE,
+            name,
+            format!("is {degree}, at most {} is possible", sys::BS_MAX_DEGREE),
+        ));
     }
     Ok(())
+}
+
+/// `Dimension` naming `dim` if it is 0 or above `BS_MAX_DIM`.
+pub(crate) fn check_dim(dim: usize) -> Result<()> {
+    if dim == 0 || dim > sys::BS_MAX_DIM {
+        return Err(Error::argument_error(
+            sys::BS_ERR_DIMENSION,
+            "dim",
+            format!("is {dim}, 1 to {} are possible", sys::BS_MAX_DIM),
+        ));
+    }
+    Ok(())
+}
+
+/// Checks the shape as `bs_patch_create` does, so the slice lengths can be checked after it.
+fn check_shape(deg_u: usize, deg_v: usize, dim: usize) -> Result<()> {
+    check_degree("deg_u", deg_u)?;
+    check_degree("deg_v", deg_v)?;
+    check_dim(dim)
 }
 
 impl Patch {
@@ -84,8 +106,23 @@ impl Patch {
         check_shape(deg_u, deg_v, dim)?;
         // The C function reads exactly these many values; shorter slices must never reach it.
         let npts = net_points(deg_u, deg_v);
-        if ctrl.len() != npts * dim || weights.is_some_and(|w| w.len() != npts) {
-            return Err(Error::from_code(sys::BS_ERR_SIZE));
+        if ctrl.len() != npts * dim {
+            return Err(Error::argument_error(
+                sys::BS_ERR_SIZE,
+                "ctrl",
+                format!(
+                    "has {}; a degree ({deg_u}, {deg_v}) net of dimension {dim} needs exactly {}",
+                    values(ctrl.len()),
+                    npts * dim
+                ),
+            ));
+        }
+        if let Some(w) = weights.filter(|w| w.len() != npts) {
+            return Err(Error::argument_error(
+                sys::BS_ERR_SIZE,
+                "weights",
+                format!("has {}; a degree ({deg_u}, {deg_v}) net needs exactly {npts}", values(w.len())),
+            ));
         }
         let wptr = weights.map_or(ptr::null(), <[f64]>::as_ptr);
         let mut out = ptr::null_mut();
@@ -147,6 +184,79 @@ impl AsRef<PatchRef> for Patch {
     }
 }
 
+impl AsRef<PatchRef> for PatchRef {
+    fn as_ref(&self) -> &PatchRef {
+        self
+    }
+}
+
+impl std::borrow::Borrow<PatchRef> for Patch {
+    fn borrow(&self) -> &PatchRef {
+        self
+    }
+}
+
+impl ToOwned for PatchRef {
+    type Owned = Patch;
+    /// An owned copy, as [`PatchRef::to_patch`].
+    ///
+    /// # Panics
+    /// If the library runs out of memory.
+    fn to_owned(&self) -> Patch {
+        self.to_patch().unwrap_or_else(|e| panic!("bs_patch_clone failed: {e}"))
+    }
+}
+
+impl PartialEq for PatchRef {
+    /// Equal if the patches have the same degrees, dimension and rationality and equal control
+    /// points and weights (compared as numbers, so 0.0 equals -0.0).
+    ///
+    /// ```
+    /// use bezsurf::{Dir, Patch};
+    ///
+    /// let p = Patch::new(1, 1, 1, &[0.0, 1.0, 2.0, 3.0])?;
+    /// assert_eq!(p.reverse(Dir::U)?.reverse(Dir::U)?, p);
+    /// assert_ne!(p.reverse(Dir::U)?, p);
+    /// assert_ne!(p.elevate(1, 0)?, p); // the same surface, but another net
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    fn eq(&self, other: &PatchRef) -> bool {
+        std::ptr::eq(self, other)
+            || (self.degree_u() == other.degree_u()
+                && self.degree_v() == other.degree_v()
+                && self.dim() == other.dim()
+                && self.is_rational() == other.is_rational()
+                && self.ctrl() == other.ctrl()
+                && self.weights() == other.weights())
+    }
+}
+
+impl PartialEq for Patch {
+    fn eq(&self, other: &Patch) -> bool {
+        **self == **other
+    }
+}
+
+impl PartialEq<PatchRef> for Patch {
+    fn eq(&self, other: &PatchRef) -> bool {
+        **self == *other
+    }
+}
+
+impl PartialEq<Patch> for PatchRef {
+    fn eq(&self, other: &Patch) -> bool {
+        *self == **other
+    }
+}
+
+impl TryFrom<&PatchRef> for Patch {
+    type Error = Error;
+    /// An owned copy, as [`PatchRef::to_patch`].
+    fn try_from(p: &PatchRef) -> Result<Patch> {
+        p.to_patch()
+    }
+}
+
 impl std::fmt::Debug for PatchRef {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Patch")
@@ -171,7 +281,9 @@ impl PatchRef {
     /// `ptr` must be a live, non-NULL patch for all of `'a`.
     pub unsafe fn from_ptr<'a>(ptr: *const sys::bs_patch) -> &'a PatchRef {
         debug_assert!(!ptr.is_null());
-        &*(ptr as *const PatchRef)
+        // SAFETY: the caller guarantees a live patch for 'a; PatchRef is a zero-sized stand-in
+        // for the opaque struct, so the reference only carries the address.
+        unsafe { &*(ptr as *const PatchRef) }
     }
 
     /// The C handle, valid while `self` is borrowed.
@@ -224,7 +336,21 @@ impl PatchRef {
         let (cp, cc) = ctrl.map_or((ptr::null_mut(), 0), |c| (c.as_mut_ptr(), c.len()));
         let (wp, wc) = weights.map_or((ptr::null_mut(), 0), |w| (w.as_mut_ptr(), w.len()));
         // SAFETY: each pointer is NULL or a slice of the capacity passed with it.
-        check(unsafe { sys::bs_patch_get_ctrl(self.as_ptr(), cp, cc, wp, wc) })
+        check(unsafe { sys::bs_patch_get_ctrl(self.as_ptr(), cp, cc, wp, wc) }).map_err(|e| {
+            let (np, dim) = (self.num_ctrl(), self.dim());
+            let short = |name, len: usize, want: usize| {
+                e.clone().with_argument(name, format!("has {}, at least {want} are needed", values(len)))
+            };
+            if e.kind() != crate::ErrorKind::Size {
+                e
+            } else if !cp.is_null() && cc < np * dim {
+                short("ctrl", cc, np * dim)
+            } else if !wp.is_null() && wc < np {
+                short("weights", wc, np)
+            } else {
+                e
+            }
+        })
     }
 
     /// The packed control net as a new vector.

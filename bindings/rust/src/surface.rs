@@ -48,10 +48,24 @@ pub struct Surface {
 // `const bs_surface *` and the library documents them as safe from any number of threads; the
 // library has no mutable global state.
 unsafe impl Send for Surface {}
+// SAFETY: through `&Surface` only the reading functions are reachable, which the library allows
+// from any number of threads at once; `add` needs `&mut Surface`.
 unsafe impl Sync for Surface {}
 
 impl Surface {
     /// An empty surface; its dimension is fixed by the first patch added.
+    ///
+    /// ```
+    /// use bezsurf::{ErrorKind, Patch, Surface};
+    ///
+    /// let mut s = Surface::new()?;
+    /// let square = Patch::new(1, 1, 2, &[0., 0., 0., 1., 1., 0., 1., 1.])?;
+    /// assert_eq!(s.add(&square)?, 0);
+    /// assert_eq!(s.dim(), 2);
+    /// let other = Patch::new(0, 0, 3, &[0., 0., 0.])?;
+    /// assert_eq!(s.add(&other).unwrap_err().kind(), ErrorKind::Incompatible);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
     pub fn new() -> Result<Surface> {
         let mut out = ptr::null_mut();
         // SAFETY: out is valid.
@@ -123,12 +137,156 @@ impl Surface {
         // SAFETY: self is live; the returned pointer stays valid until the surface is destroyed,
         // and the borrow of self keeps it alive and unchanged.
         let p = unsafe { sys::bs_surface_get(self.as_ptr(), i) };
+        // SAFETY: p is NULL (checked) or a live patch owned by the surface, which the returned
+        // borrow of self keeps alive and unchanged.
         (!p.is_null()).then(|| unsafe { PatchRef::from_ptr(p) })
     }
 
-    /// The patches in order.
-    pub fn iter(&self) -> impl Iterator<Item = &PatchRef> + '_ {
-        (0..self.len()).filter_map(move |i| self.get(i))
+    /// The patches in order; `for patch in &surface` does the same.
+    ///
+    /// ```
+    /// let cup = bezsurf::Surface::builtin("teacup")?;
+    /// let bicubic = cup.iter().filter(|p| p.degree_u() == 3 && p.degree_v() == 3).count();
+    /// assert_eq!(bicubic, cup.len());
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn iter(&self) -> Iter<'_> {
+        Iter { surface: self, front: 0, back: self.len() }
+    }
+
+    /// Appends a copy of every patch, stopping at the first error (patches appended before it
+    /// stay). The fallible form of [`Extend`].
+    pub fn try_extend<P: AsRef<PatchRef>>(&mut self, patches: impl IntoIterator<Item = P>) -> Result<()> {
+        for p in patches {
+            self.add(p.as_ref())?;
+        }
+        Ok(())
+    }
+
+    /// A new surface holding copies of the patches; the fallible form of [`FromIterator`].
+    ///
+    /// ```
+    /// use bezsurf::{Dir, Surface};
+    ///
+    /// let pot = Surface::builtin("teapot")?;
+    /// let (lo, hi) = pot[0].split(Dir::U, 0.5)?;
+    /// let halves = Surface::try_from_patches([lo, hi])?;
+    /// assert_eq!(halves.len(), 2);
+    /// let (a, b) = (halves[1].eval_point(0.0, 0.25)?, pot[0].eval_point(0.5, 0.25)?);
+    /// assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-12));
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn try_from_patches<P: AsRef<PatchRef>>(patches: impl IntoIterator<Item = P>) -> Result<Surface> {
+        let mut s = Surface::new()?;
+        s.try_extend(patches)?;
+        Ok(s)
+    }
+}
+
+/// Iterator over the patches of a [`Surface`] in order ([`Surface::iter`]).
+#[derive(Debug, Clone)]
+pub struct Iter<'a> {
+    surface: &'a Surface,
+    front: usize,
+    back: usize,
+}
+
+impl<'a> Iterator for Iter<'a> {
+    type Item = &'a PatchRef;
+    fn next(&mut self) -> Option<&'a PatchRef> {
+        if self.front == self.back {
+            return None;
+        }
+        self.front += 1;
+        self.surface.get(self.front - 1)
+    }
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        (self.back - self.front, Some(self.back - self.front))
+    }
+}
+
+impl<'a> DoubleEndedIterator for Iter<'a> {
+    fn next_back(&mut self) -> Option<&'a PatchRef> {
+        if self.front == self.back {
+            return None;
+        }
+        self.back -= 1;
+        self.surface.get(self.back)
+    }
+}
+
+impl ExactSizeIterator for Iter<'_> {}
+impl std::iter::FusedIterator for Iter<'_> {}
+
+impl<'a> IntoIterator for &'a Surface {
+    type Item = &'a PatchRef;
+    type IntoIter = Iter<'a>;
+    fn into_iter(self) -> Iter<'a> {
+        self.iter()
+    }
+}
+
+impl std::ops::Index<usize> for Surface {
+    type Output = PatchRef;
+    /// Patch `i`, borrowed (see [`Surface::get`] for the non-panicking form).
+    ///
+    /// # Panics
+    /// If `i >= len()`.
+    fn index(&self, i: usize) -> &PatchRef {
+        self.get(i).unwrap_or_else(|| panic!("patch index {i} out of range for a surface of {}", self.len()))
+    }
+}
+
+impl Default for Surface {
+    /// An empty surface, as [`Surface::new`].
+    ///
+    /// # Panics
+    /// If the library runs out of memory.
+    fn default() -> Surface {
+        Surface::new().unwrap_or_else(|e| panic!("bs_surface_create failed: {e}"))
+    }
+}
+
+impl<P: AsRef<PatchRef>> Extend<P> for Surface {
+    /// Appends a copy of every patch, as [`Surface::add`].
+    ///
+    /// # Panics
+    /// If a patch's dimension differs from the surface's, or the library runs out of memory;
+    /// [`Surface::try_extend`] returns the error instead.
+    fn extend<I: IntoIterator<Item = P>>(&mut self, patches: I) {
+        if let Err(e) = self.try_extend(patches) {
+            panic!("Surface::extend: {e}");
+        }
+    }
+}
+
+impl<P: AsRef<PatchRef>> FromIterator<P> for Surface {
+    /// A surface of copies of the patches (owned [`Patch`](crate::Patch)es or `&PatchRef`s).
+    ///
+    /// ```
+    /// use bezsurf::{Dir, Surface};
+    ///
+    /// let pot = Surface::builtin("teapot")?;
+    /// let reversed: Surface = pot.iter().map(|p| p.reverse(Dir::V)).collect::<Result<_, _>>()?;
+    /// assert_eq!(reversed.len(), pot.len());
+    /// let copy: Surface = pot.iter().collect();
+    /// assert_eq!(copy, pot);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    ///
+    /// # Panics
+    /// As [`Extend`]; [`Surface::try_from_patches`] returns the error instead.
+    fn from_iter<I: IntoIterator<Item = P>>(patches: I) -> Surface {
+        let mut s = Surface::default();
+        s.extend(patches);
+        s
+    }
+}
+
+impl PartialEq for Surface {
+    /// Equal if both hold equal patches in the same order (see `PartialEq for PatchRef`).
+    fn eq(&self, other: &Surface) -> bool {
+        self.len() == other.len() && self.iter().eq(other.iter())
     }
 }
 

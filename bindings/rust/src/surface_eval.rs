@@ -1,7 +1,7 @@
 //! Evaluation of scattered points across a surface: point k on patch `ids[k]` at (u[k], v[k]).
 
 use crate::error::{check, Result};
-use crate::eval::{invalid, kind_ptr, scattered, size_error, CPoints, Outputs};
+use crate::eval::{check_ids, kind_ptr, name_short_output, not_computed, scattered, CPoints, Outputs};
 use crate::strided::Strided;
 use crate::surface::Surface;
 
@@ -19,14 +19,15 @@ impl Surface {
         v: impl Into<Strided<'v>>,
         mut out: Outputs<'_>,
     ) -> Result<()> {
-        if out.nrm.is_some() || out.kind.is_some() {
-            return Err(invalid());
+        if out.nrm.is_some() {
+            return Err(not_computed("normal", "Surface::eval", "Surface::eval_normal"));
+        }
+        if out.kind.is_some() {
+            return Err(not_computed("kind", "Surface::eval", "Surface::eval_normal"));
         }
         let (n, u, v) = scattered(u, v)?;
         // The C function reads n ids with no capacity argument.
-        if ids.len() != n {
-            return Err(size_error());
-        }
+        check_ids(ids, n)?;
         // An empty surface has no coordinates to write: its outputs are zero views (the ids are
         // then all out of range, or n is 0).
         let dim = self.dim();
@@ -34,9 +35,9 @@ impl Surface {
             (CPoints::none(), CPoints::none(), CPoints::none())
         } else {
             (
-                CPoints::new(out.pos.as_mut(), dim)?,
-                CPoints::new(out.du.as_mut(), dim)?,
-                CPoints::new(out.dv.as_mut(), dim)?,
+                CPoints::new(out.pos.as_mut(), dim, "pos")?,
+                CPoints::new(out.du.as_mut(), dim, "du")?,
+                CPoints::new(out.dv.as_mut(), dim, "dv")?,
             )
         };
         // SAFETY: ids holds n values; every view stays inside the slice it was built from; the
@@ -53,6 +54,7 @@ impl Surface {
                 dv.as_ptr(),
             )
         })
+        .map_err(|e| name_short_output(e, n, &[&pos, &du, &dv]))
     }
 
     /// Positions, unit normals and normal kinds at n scattered points of a 3-D surface
@@ -65,15 +67,16 @@ impl Surface {
         v: impl Into<Strided<'v>>,
         mut out: Outputs<'_>,
     ) -> Result<()> {
-        if out.du.is_some() || out.dv.is_some() {
-            return Err(invalid());
+        if out.du.is_some() {
+            return Err(not_computed("du", "Surface::eval_normal", "Surface::eval"));
+        }
+        if out.dv.is_some() {
+            return Err(not_computed("dv", "Surface::eval_normal", "Surface::eval"));
         }
         let (n, u, v) = scattered(u, v)?;
-        if ids.len() != n {
-            return Err(size_error());
-        }
-        let pos = CPoints::new(out.pos.as_mut(), 3)?;
-        let nrm = CPoints::new(out.nrm.as_mut(), 3)?;
+        check_ids(ids, n)?;
+        let pos = CPoints::new(out.pos.as_mut(), 3, "pos")?;
+        let nrm = CPoints::new(out.nrm.as_mut(), 3, "normal")?;
         let kind = kind_ptr(out.kind.take(), n)?;
         // SAFETY: as in eval; kind holds at least n bytes.
         check(unsafe {
@@ -88,5 +91,6 @@ impl Surface {
                 kind,
             )
         })
+        .map_err(|e| name_short_output(e, n, &[&pos, &nrm]))
     }
 }

@@ -4,6 +4,13 @@
 //! against the header by `tests/layout.rs`), the constants have the header's values and every
 //! function has the C signature (`size_t` is `usize`, `ptrdiff_t` is `isize`, `int` is `c_int`,
 //! `unsigned` is `c_uint`). Calling these is `unsafe`; the safe layer is the rest of the crate.
+//!
+//! Each declaration carries a one-line summary; the C header's documentation of the function is
+//! the contract (NULL rules, units, every status). The common rules: the caller passes live
+//! handles and buffers valid for the counts and capacities given; new handles come back through
+//! the last argument and belong to the caller, who releases them with the matching `_destroy`;
+//! on failure outputs are untouched and new-handle outputs are NULL; nothing is kept after a
+//! call returns. Every function may be called from any thread.
 
 #![allow(non_camel_case_types)]
 
@@ -12,49 +19,82 @@ use std::os::raw::{c_char, c_int, c_uchar, c_uint, c_void};
 /// `bs_status`: 0 is success, failures are negative.
 pub type bs_status = c_int;
 
+/// Success.
 pub const BS_OK: bs_status = 0;
+/// A NULL or misaligned pointer, an unknown flag or direction, an id out of range.
 pub const BS_ERR_INVALID_ARG: bs_status = -1;
+/// An allocation failed.
 pub const BS_ERR_NO_MEMORY: bs_status = -2;
+/// A degree above `BS_MAX_DEGREE` or a derivative order out of range.
 pub const BS_ERR_DEGREE: bs_status = -3;
+/// A dimension of 0 or above `BS_MAX_DIM`, or normals asked of a patch that is not 3-D.
 pub const BS_ERR_DIMENSION: bs_status = -4;
+/// An output buffer or view too small for the result.
 pub const BS_ERR_SIZE: bs_status = -5;
+/// A parameter outside its allowed range.
 pub const BS_ERR_DOMAIN: bs_status = -6;
+/// NaN or infinity in control points, or a weight that is not positive.
 pub const BS_ERR_NONFINITE: bs_status = -7;
+/// Malformed input text (details in `bs_parse_error`).
 pub const BS_ERR_PARSE: bs_status = -8;
+/// A file could not be opened, read or written.
 pub const BS_ERR_IO: bs_status = -9;
+/// Objects that cannot be combined (different dimensions, corners that do not meet).
 pub const BS_ERR_INCOMPATIBLE: bs_status = -10;
+/// An operation not defined for this input (e.g. the hodograph of a rational patch).
 pub const BS_ERR_UNSUPPORTED: bs_status = -11;
 
+/// Largest degree per direction.
 pub const BS_MAX_DEGREE: usize = 64;
+/// Largest dimension of a control point.
 pub const BS_MAX_DIM: usize = 8;
 
+/// Normal kind: from S_u x S_v.
 pub const BS_NORMAL_REGULAR: c_uchar = 0;
+/// Normal kind: S_u x S_v vanishes; the limit normal along the surface.
 pub const BS_NORMAL_LIMIT: c_uchar = 1;
+/// Normal kind: no normal exists; (0, 0, 0) was written (NaN for a NaN parameter).
 pub const BS_NORMAL_UNDEFINED: c_uchar = 2;
 
+/// The u direction (first index of the control net).
 pub const BS_DIR_U: c_int = 0;
+/// The v direction (second index of the control net).
 pub const BS_DIR_V: c_int = 1;
 
+/// Side v = 0 of the unit square; its edge parameter runs along u.
 pub const BS_SIDE_V0: c_int = 0;
+/// Side u = 1; its edge parameter runs along v.
 pub const BS_SIDE_U1: c_int = 1;
+/// Side v = 1; its edge parameter runs along u.
 pub const BS_SIDE_V1: c_int = 2;
+/// Side u = 0; its edge parameter runs along v.
 pub const BS_SIDE_U0: c_int = 3;
 
+/// Tessellation flag: the adaptive tolerance is a fraction of the control-net bounding-box diagonal.
 pub const BS_TESS_RELATIVE: c_int = 1;
+/// Tessellation flag: also build triangle strips.
 pub const BS_TESS_STRIPS: c_int = 2;
+/// Largest number of segments per patch and direction of a uniform tessellation.
 pub const BS_TESS_MAX_RATE: usize = 1024;
 
+/// Mesh format: Wavefront OBJ with positions, parameters and normals.
 pub const BS_MESH_OBJ: c_int = 0;
+/// Mesh format: binary little-endian PLY.
 pub const BS_MESH_PLY: c_int = 1;
+/// Mesh format: ASCII PLY.
 pub const BS_MESH_PLY_ASCII: c_int = 2;
+/// Mesh format: binary STL.
 pub const BS_MESH_STL: c_int = 3;
 
 /// A strided output buffer of doubles (`bs_view`).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct bs_view {
+    /// Element 0 (written).
     pub data: *mut f64,
+    /// Number of elements.
     pub count: usize,
+    /// Bytes from one element to the next; may be negative, a multiple of 8.
     pub stride: isize,
 }
 
@@ -62,8 +102,11 @@ pub struct bs_view {
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct bs_cview {
+    /// Element 0 (read).
     pub data: *const f64,
+    /// Number of elements.
     pub count: usize,
+    /// Bytes from one element to the next; may be negative, a multiple of 8.
     pub stride: isize,
 }
 
@@ -71,9 +114,13 @@ pub struct bs_cview {
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct bs_curve {
+    /// Degree.
     pub degree: usize,
+    /// Dimension of a control point.
     pub dim: usize,
+    /// (degree + 1)·dim packed coordinates.
     pub ctrl: *const f64,
+    /// degree + 1 weights, or NULL for a polynomial curve.
     pub weights: *const f64,
 }
 
@@ -81,8 +128,11 @@ pub struct bs_curve {
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct bs_parse_error {
+    /// 1-based line of the first error; 0 if none was recorded.
     pub line: usize,
+    /// 1-based byte column of the first error.
     pub column: usize,
+    /// The reason, NUL-terminated.
     pub message: [c_char; 96],
 }
 
@@ -90,16 +140,27 @@ pub struct bs_parse_error {
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct bs_edge_continuity {
+    /// The patch with the lower id.
     pub patch_a: u32,
+    /// The neighbour.
     pub patch_b: u32,
+    /// Shared side of `patch_a` (`BS_SIDE_*`).
     pub side_a: c_int,
+    /// Shared side of `patch_b` (`BS_SIDE_*`).
     pub side_b: c_int,
+    /// 1 if the edge parameters run opposite ways.
     pub reversed: c_int,
+    /// 1 if C1 within the tolerance (0 for rational patches).
     pub c1: c_int,
+    /// 1 if the normals point to opposite sides.
     pub flipped: c_int,
+    /// Number of samples at which both normals exist.
     pub samples: c_int,
+    /// Largest distance between corresponding boundary control points.
     pub c0_gap: f64,
+    /// Largest angle in radians between the tangent planes, sampled.
     pub g1_angle: f64,
+    /// Largest |D_a + D_b| over the cross-boundary derivative nets; NaN for rational patches.
     pub c1_defect: f64,
 }
 
@@ -107,7 +168,9 @@ pub struct bs_edge_continuity {
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct bs_open_edge {
+    /// The patch id.
     pub patch: u32,
+    /// Its unshared side (`BS_SIDE_*`).
     pub side: c_int,
 }
 
@@ -131,11 +194,15 @@ pub struct bs_surface {
 
 extern "C" {
     // ---- core.h: status and version ----
+    /// Run-time version, major*10000 + minor*100 + patch.
     pub fn bs_version_number() -> c_uint;
+    /// Run-time version as a static NUL-terminated "MAJOR.MINOR.PATCH".
     pub fn bs_version_string() -> *const c_char;
+    /// Static NUL-terminated text for any status value, never NULL.
     pub fn bs_status_string(s: bs_status) -> *const c_char;
 
     // ---- core.h: patches ----
+    /// Creates a patch of degree (`deg_u`, `deg_v`) from (deg_u+1)(deg_v+1)·`dim` packed coordinates and, if `weights` is not NULL, (deg_u+1)(deg_v+1) weights; `*out` is set to the new patch (NULL on failure).
     pub fn bs_patch_create(
         deg_u: usize,
         deg_v: usize,
@@ -144,12 +211,19 @@ extern "C" {
         weights: *const f64,
         out: *mut *mut bs_patch,
     ) -> bs_status;
+    /// Releases a patch; NULL does nothing.
     pub fn bs_patch_destroy(p: *mut bs_patch);
+    /// Makes an independent copy of a patch in `*out`.
     pub fn bs_patch_clone(p: *const bs_patch, out: *mut *mut bs_patch) -> bs_status;
+    /// Degree along u; 0 for NULL.
     pub fn bs_patch_degree_u(p: *const bs_patch) -> usize;
+    /// Degree along v; 0 for NULL.
     pub fn bs_patch_degree_v(p: *const bs_patch) -> usize;
+    /// Dimension of a control point; 0 for NULL.
     pub fn bs_patch_dim(p: *const bs_patch) -> usize;
+    /// 1 if the patch has weights, else 0 (also for NULL).
     pub fn bs_patch_is_rational(p: *const bs_patch) -> c_int;
+    /// Copies the packed control net and/or the weights into caller buffers of the given capacities (in doubles); either pointer may be NULL.
     pub fn bs_patch_get_ctrl(
         p: *const bs_patch,
         ctrl: *mut f64,
@@ -159,6 +233,7 @@ extern "C" {
     ) -> bs_status;
 
     // ---- core.h: evaluation ----
+    /// Positions and first partials at `n` scattered (u, v) pairs into `dim` views each; `pos`, `du`, `dv` point to arrays of `dim` views or are NULL.
     pub fn bs_patch_eval(
         p: *const bs_patch,
         n: usize,
@@ -168,6 +243,7 @@ extern "C" {
         du: *const bs_view,
         dv: *const bs_view,
     ) -> bs_status;
+    /// The mixed partial derivative of orders (`ku`, `kv`) at `n` scattered points into `dim` views.
     pub fn bs_patch_eval_deriv(
         p: *const bs_patch,
         ku: c_uint,
@@ -177,6 +253,7 @@ extern "C" {
         v: *const bs_cview,
         out: *const bs_view,
     ) -> bs_status;
+    /// Positions, unit normals (3 views) and normal kinds (`n` bytes, `BS_NORMAL_*`) at `n` scattered points of a 3-D patch; any output may be NULL.
     pub fn bs_patch_eval_normal(
         p: *const bs_patch,
         n: usize,
@@ -186,6 +263,7 @@ extern "C" {
         nrm: *const bs_view,
         kind: *mut c_uchar,
     ) -> bs_status;
+    /// Every `u[a]` with every `v[b]`, written at index a·nv + b: positions, partials, normals and kinds, any of them NULL.
     pub fn bs_patch_eval_grid(
         p: *const bs_patch,
         nu: usize,
@@ -200,6 +278,7 @@ extern "C" {
     ) -> bs_status;
 
     // ---- ops.h ----
+    /// Splits at `t` (0 < t < 1) along `dir` into new patches over [0, t] and [t, 1].
     pub fn bs_patch_split(
         p: *const bs_patch,
         dir: c_int,
@@ -207,7 +286,9 @@ extern "C" {
         lo: *mut *mut bs_patch,
         hi: *mut *mut bs_patch,
     ) -> bs_status;
+    /// Splits at (`u`, `v`) into four new patches written to `out[0..4]`.
     pub fn bs_patch_split4(p: *const bs_patch, u: f64, v: f64, out: *mut *mut bs_patch) -> bs_status;
+    /// The patch over [u0, u1] x [v0, v1], reparametrised over the unit square.
     pub fn bs_patch_subpatch(
         p: *const bs_patch,
         u0: f64,
@@ -216,18 +297,21 @@ extern "C" {
         v1: f64,
         out: *mut *mut bs_patch,
     ) -> bs_status;
+    /// The same surface with its degrees raised by `raise_u` and `raise_v`.
     pub fn bs_patch_elevate(
         p: *const bs_patch,
         raise_u: usize,
         raise_v: usize,
         out: *mut *mut bs_patch,
     ) -> bs_status;
+    /// The hodograph patch of the (`ku`, `kv`) derivative of a polynomial patch.
     pub fn bs_patch_derivative(
         p: *const bs_patch,
         ku: c_uint,
         kv: c_uint,
         out: *mut *mut bs_patch,
     ) -> bs_status;
+    /// Control points (and weights, if `weights` is not NULL) of the iso-curve u = t (`BS_DIR_U`) or v = t (`BS_DIR_V`), into buffers of the given capacities.
     pub fn bs_patch_isocurve(
         p: *const bs_patch,
         dir: c_int,
@@ -237,12 +321,18 @@ extern "C" {
         weights: *mut f64,
         weights_cap: usize,
     ) -> bs_status;
+    /// Bounding box of the control net: `dim` values each into `lo` and `hi` (no capacity argument).
     pub fn bs_patch_bounds(p: *const bs_patch, lo: *mut f64, hi: *mut f64) -> bs_status;
+    /// The patch with x -> A x + b applied to its net; `affine` holds dim·(dim+1) values, row-major, last column b.
     pub fn bs_patch_transform(p: *const bs_patch, affine: *const f64, out: *mut *mut bs_patch) -> bs_status;
 
+    /// The same surface with u and v exchanged.
     pub fn bs_patch_swap_uv(p: *const bs_patch, out: *mut *mut bs_patch) -> bs_status;
+    /// The same surface with direction `dir` reversed.
     pub fn bs_patch_reverse(p: *const bs_patch, dir: c_int, out: *mut *mut bs_patch) -> bs_status;
+    /// The ruled patch between two curves, straight in v.
     pub fn bs_patch_ruled(c0: *const bs_curve, c1: *const bs_curve, out: *mut *mut bs_patch) -> bs_status;
+    /// The bilinearly blended Coons patch of four polynomial boundary curves whose corners meet.
     pub fn bs_patch_coons(
         v0: *const bs_curve,
         v1: *const bs_curve,
@@ -252,14 +342,22 @@ extern "C" {
     ) -> bs_status;
 
     // ---- surface.h ----
+    /// Creates an empty surface in `*out`.
     pub fn bs_surface_create(out: *mut *mut bs_surface) -> bs_status;
+    /// Releases a surface and its patches; NULL does nothing.
     pub fn bs_surface_destroy(s: *mut bs_surface);
+    /// Makes an independent copy of a surface in `*out`.
     pub fn bs_surface_clone(s: *const bs_surface, out: *mut *mut bs_surface) -> bs_status;
+    /// Appends a copy of `p`; its index goes to `*index` if that is not NULL.
     pub fn bs_surface_add(s: *mut bs_surface, p: *const bs_patch, index: *mut usize) -> bs_status;
+    /// Number of patches; 0 for NULL.
     pub fn bs_surface_count(s: *const bs_surface) -> usize;
+    /// Dimension of the patches; 0 for an empty or NULL surface.
     pub fn bs_surface_dim(s: *const bs_surface) -> usize;
+    /// Borrows patch `i` (NULL if out of range); valid until the surface is destroyed.
     pub fn bs_surface_get(s: *const bs_surface, i: usize) -> *const bs_patch;
 
+    /// Positions and first partials at `n` scattered points, point k on patch `ids[k]` at (`u[k]`, `v[k]`).
     pub fn bs_surface_eval(
         s: *const bs_surface,
         n: usize,
@@ -270,6 +368,7 @@ extern "C" {
         du: *const bs_view,
         dv: *const bs_view,
     ) -> bs_status;
+    /// Positions, unit normals and kinds at `n` scattered points of a 3-D surface, point k on patch `ids[k]`.
     pub fn bs_surface_eval_normal(
         s: *const bs_surface,
         n: usize,
@@ -282,6 +381,7 @@ extern "C" {
     ) -> bs_status;
 
     // ---- continuity.h ----
+    /// Shared and open edges of a 3-D surface with the continuity across each shared edge; NULL arrays ask for the counts only.
     pub fn bs_surface_continuity(
         s: *const bs_surface,
         tol: f64,
@@ -295,6 +395,7 @@ extern "C" {
     ) -> bs_status;
 
     // ---- mesh.h ----
+    /// Tessellates a 3-D surface with `nu` x `nv` segments per patch into a new mesh.
     pub fn bs_surface_tessellate_uniform(
         s: *const bs_surface,
         nu: usize,
@@ -302,24 +403,38 @@ extern "C" {
         flags: c_int,
         out: *mut *mut bs_mesh,
     ) -> bs_status;
+    /// Tessellates a 3-D surface within a chordal `tolerance` into a new mesh.
     pub fn bs_surface_tessellate_adaptive(
         s: *const bs_surface,
         tolerance: f64,
         flags: c_int,
         out: *mut *mut bs_mesh,
     ) -> bs_status;
+    /// Releases a mesh; NULL does nothing.
     pub fn bs_mesh_destroy(m: *mut bs_mesh);
+    /// Number of vertices; 0 for NULL.
     pub fn bs_mesh_vertex_count(m: *const bs_mesh) -> usize;
+    /// Number of triangles; 0 for NULL.
     pub fn bs_mesh_triangle_count(m: *const bs_mesh) -> usize;
+    /// Number of triangle strips (0 unless made with `BS_TESS_STRIPS`).
     pub fn bs_mesh_strip_count(m: *const bs_mesh) -> usize;
+    /// Total number of indices in all strips.
     pub fn bs_mesh_strip_index_count(m: *const bs_mesh) -> usize;
+    /// Copies the vertex positions into 3 views (x, y, z).
     pub fn bs_mesh_copy_positions(m: *const bs_mesh, xyz: *const bs_view) -> bs_status;
+    /// Copies the unit vertex normals into 3 views.
     pub fn bs_mesh_copy_normals(m: *const bs_mesh, nrm: *const bs_view) -> bs_status;
+    /// Copies the vertex (u, v) parameters into 2 views.
     pub fn bs_mesh_copy_uv(m: *const bs_mesh, uv: *const bs_view) -> bs_status;
+    /// Copies the per-vertex patch ids into a buffer of `cap` values.
     pub fn bs_mesh_copy_patch_ids(m: *const bs_mesh, ids: *mut u32, cap: usize) -> bs_status;
+    /// Copies 3 vertex indices per triangle into a buffer of `cap` values.
     pub fn bs_mesh_copy_triangles(m: *const bs_mesh, idx: *mut u32, cap: usize) -> bs_status;
+    /// Copies the per-triangle patch ids into a buffer of `cap` values.
     pub fn bs_mesh_copy_triangle_patch_ids(m: *const bs_mesh, ids: *mut u32, cap: usize) -> bs_status;
+    /// Copies the (u, v) of every triangle corner on its own patch into 2 views (3 corners per triangle).
     pub fn bs_mesh_copy_corner_uv(m: *const bs_mesh, uv: *const bs_view) -> bs_status;
+    /// Copies the strip indices and the strip starts (strip count + 1 values) into buffers of the given capacities.
     pub fn bs_mesh_copy_strips(
         m: *const bs_mesh,
         idx: *mut u32,
@@ -327,7 +442,9 @@ extern "C" {
         start: *mut u32,
         start_cap: usize,
     ) -> bs_status;
+    /// Writes the mesh to the file `path` in `format` (`BS_MESH_*`).
     pub fn bs_mesh_write(m: *const bs_mesh, format: c_int, path: *const c_char) -> bs_status;
+    /// Writes the mesh into `buf` of `cap` bytes (NULL asks for the size), the size going to `*size`.
     pub fn bs_mesh_write_memory(
         m: *const bs_mesh,
         format: c_int,
@@ -337,24 +454,30 @@ extern "C" {
     ) -> bs_status;
 
     // ---- io.h ----
+    /// Parses `len` bytes of .bpt text into a new surface; on a parse error `err` (if not NULL) gets the line, column and reason.
     pub fn bs_surface_read_bpt(
         text: *const c_char,
         len: usize,
         err: *mut bs_parse_error,
         out: *mut *mut bs_surface,
     ) -> bs_status;
+    /// Reads a .bpt file into a new surface; `err` as for `bs_surface_read_bpt`.
     pub fn bs_surface_read_bpt_file(
         path: *const c_char,
         err: *mut bs_parse_error,
         out: *mut *mut bs_surface,
     ) -> bs_status;
+    /// Writes the surface as NUL-terminated .bpt text into `buf` of `cap` bytes (NULL asks for the size, NUL included).
     pub fn bs_surface_write_bpt(
         s: *const bs_surface,
         buf: *mut c_char,
         cap: usize,
         size: *mut usize,
     ) -> bs_status;
+    /// Writes the surface as a .bpt file.
     pub fn bs_surface_write_bpt_file(s: *const bs_surface, path: *const c_char) -> bs_status;
+    /// Creates the built-in surface `name` ("teapot", "teacup", "teaspoon").
     pub fn bs_surface_create_builtin(name: *const c_char, out: *mut *mut bs_surface) -> bs_status;
+    /// Name of built-in surface `i`, or NULL past the last.
     pub fn bs_builtin_name(i: usize) -> *const c_char;
 }

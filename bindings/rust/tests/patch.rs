@@ -87,6 +87,13 @@ fn errors_carry_code_and_library_text() {
     let e = Patch::new(0, 0, 0, &[]).unwrap_err();
     assert_eq!(e.code(), -4);
     assert_eq!(e.message(), "dimension out of range");
+    assert_eq!(e.argument(), Some("dim"));
+    assert_eq!(
+        e.to_string(),
+        "dimension out of range: argument `dim` is 0, 1 to 8 are possible (bezsurf status -4)"
+    );
+    let e = bezsurf::Error::from_code(-4);
+    assert_eq!((e.argument(), e.detail()), (None, None));
     assert_eq!(e.to_string(), "dimension out of range (bezsurf status -4)");
     let boxed: Box<dyn std::error::Error> = Box::new(e);
     assert!(boxed.to_string().contains("dimension"));
