@@ -35,6 +35,7 @@
 
 pub mod sys;
 
+mod bspline;
 mod continuity;
 mod error;
 mod eval;
@@ -46,6 +47,7 @@ mod strided;
 mod surface;
 mod surface_eval;
 
+pub use bspline::BSpline;
 pub use continuity::{Continuity, EdgeContinuity, OpenEdge, Side};
 pub use error::{status_string, Error, ErrorKind, Result};
 pub use eval::{NormalKind, Outputs};

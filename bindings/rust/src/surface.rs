@@ -97,6 +97,11 @@ impl Surface {
         self.ptr.as_ptr()
     }
 
+    /// The raw handle for a call that changes the surface; `&mut self` keeps it exclusive.
+    pub(crate) fn as_mut_ptr(&mut self) -> *mut sys::bs_surface {
+        self.ptr.as_ptr()
+    }
+
     /// An independent copy (`bs_surface_clone`).
     pub fn try_clone(&self) -> Result<Surface> {
         let mut out = ptr::null_mut();

@@ -124,6 +124,30 @@ pub struct bs_curve {
     pub weights: *const f64,
 }
 
+/// A B-spline or NURBS surface as the caller holds it (`bs_bspline`, bspline.h, since 1.1).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_bspline {
+    /// Degree along u, 1..=`BS_MAX_DEGREE`.
+    pub deg_u: usize,
+    /// Degree along v, 1..=`BS_MAX_DEGREE`.
+    pub deg_v: usize,
+    /// Control points along u, at least `deg_u + 1`.
+    pub count_u: usize,
+    /// Control points along v, at least `deg_v + 1`.
+    pub count_v: usize,
+    /// Dimension of a control point.
+    pub dim: usize,
+    /// `count_u + deg_u + 1` finite, non-decreasing knots.
+    pub knots_u: *const f64,
+    /// `count_v + deg_v + 1` finite, non-decreasing knots.
+    pub knots_v: *const f64,
+    /// Point (i, j), coordinate c at `ctrl[(i * count_v + j) * dim + c]`.
+    pub ctrl: *const f64,
+    /// NULL, or `count_u * count_v` finite positive weights.
+    pub weights: *const f64,
+}
+
 /// Where and why parsing failed (`bs_parse_error`, io.h).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
@@ -480,4 +504,25 @@ extern "C" {
     pub fn bs_surface_create_builtin(name: *const c_char, out: *mut *mut bs_surface) -> bs_status;
     /// Name of built-in surface `i`, or NULL past the last.
     pub fn bs_builtin_name(i: usize) -> *const c_char;
+
+    /// Knot spans along u and v of a B-spline (`bs_bspline_span_count`, since 1.1).
+    pub fn bs_bspline_span_count(b: *const bs_bspline, spans_u: *mut usize, spans_v: *mut usize)
+        -> bs_status;
+    /// Appends one Bezier patch per knot span (`bs_surface_add_bspline`, since 1.1).
+    pub fn bs_surface_add_bspline(
+        s: *mut bs_surface,
+        b: *const bs_bspline,
+        spans: *mut f64,
+        spans_cap: usize,
+        count: *mut usize,
+    ) -> bs_status;
+    /// The patch index and local (u, v) of a B-spline parameter (`bs_bspline_locate`, since 1.1).
+    pub fn bs_bspline_locate(
+        b: *const bs_bspline,
+        u: f64,
+        v: f64,
+        index: *mut usize,
+        local_u: *mut f64,
+        local_v: *mut f64,
+    ) -> bs_status;
 }

@@ -18,6 +18,7 @@ const PROBE: &str = r#"
 #include "bezsurf/io.h"
 #include "bezsurf/continuity.h"
 #include "bezsurf/mesh.h"
+#include "bezsurf/bspline.h"
 
 #define ALIGNOF(T) offsetof(struct { char c; T t; }, t)
 #define SIZE(T) printf("size " #T " %zu\n", sizeof(T)); printf("align " #T " %zu\n", ALIGNOF(T))
@@ -38,6 +39,9 @@ int main(void)
     OFF(bs_edge_continuity, samples); OFF(bs_edge_continuity, c0_gap);
     OFF(bs_edge_continuity, g1_angle); OFF(bs_edge_continuity, c1_defect);
     SIZE(bs_open_edge); OFF(bs_open_edge, patch); OFF(bs_open_edge, side);
+    SIZE(bs_bspline); OFF(bs_bspline, deg_u); OFF(bs_bspline, deg_v); OFF(bs_bspline, count_u);
+    OFF(bs_bspline, count_v); OFF(bs_bspline, dim); OFF(bs_bspline, knots_u);
+    OFF(bs_bspline, knots_v); OFF(bs_bspline, ctrl); OFF(bs_bspline, weights);
     SIZE(bs_status); SIZE(size_t); SIZE(ptrdiff_t);
     CONST(BS_OK); CONST(BS_ERR_INVALID_ARG); CONST(BS_ERR_NO_MEMORY); CONST(BS_ERR_DEGREE);
     CONST(BS_ERR_DIMENSION); CONST(BS_ERR_SIZE); CONST(BS_ERR_DOMAIN); CONST(BS_ERR_NONFINITE);
@@ -131,6 +135,17 @@ fn sys_matches_the_c_header() {
         ("align bs_open_edge", align_of::<sys::bs_open_edge>() as i64),
         ("offset bs_open_edge.patch", offset_of!(sys::bs_open_edge, patch) as i64),
         ("offset bs_open_edge.side", offset_of!(sys::bs_open_edge, side) as i64),
+        ("size bs_bspline", size_of::<sys::bs_bspline>() as i64),
+        ("align bs_bspline", align_of::<sys::bs_bspline>() as i64),
+        ("offset bs_bspline.deg_u", offset_of!(sys::bs_bspline, deg_u) as i64),
+        ("offset bs_bspline.deg_v", offset_of!(sys::bs_bspline, deg_v) as i64),
+        ("offset bs_bspline.count_u", offset_of!(sys::bs_bspline, count_u) as i64),
+        ("offset bs_bspline.count_v", offset_of!(sys::bs_bspline, count_v) as i64),
+        ("offset bs_bspline.dim", offset_of!(sys::bs_bspline, dim) as i64),
+        ("offset bs_bspline.knots_u", offset_of!(sys::bs_bspline, knots_u) as i64),
+        ("offset bs_bspline.knots_v", offset_of!(sys::bs_bspline, knots_v) as i64),
+        ("offset bs_bspline.ctrl", offset_of!(sys::bs_bspline, ctrl) as i64),
+        ("offset bs_bspline.weights", offset_of!(sys::bs_bspline, weights) as i64),
         ("size bs_status", size_of::<sys::bs_status>() as i64),
         ("size size_t", size_of::<usize>() as i64),
         ("size ptrdiff_t", size_of::<isize>() as i64),
