@@ -103,6 +103,36 @@ class LoaderTest(unittest.TestCase):
         self.assertIn("ImportError", r.stderr)
         self.assertIn("libbezsurf.so.1", r.stderr)
 
+    def test_package_directory_before_search_path(self):
+        with tempfile.TemporaryDirectory() as d:
+            shutil.copytree(os.path.join(PACKAGE_DIR, "bezsurf"), os.path.join(d, "bezsurf"))
+            bundled = os.path.join(d, "bezsurf", "libbezsurf.so.1")
+            shutil.copy(LIBRARY, bundled)
+            r = run_import({"PYTHONPATH": d, "LD_LIBRARY_PATH": os.path.dirname(LIBRARY)},
+                           "import bezsurf; print(bezsurf.library_path())")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stdout.strip(), bundled)
+
+    def test_search_order(self):
+        saved = os.environ.pop("BEZSURF_LIBRARY", None), sys.prefix
+        try:
+            sys.prefix = "/opt/venv"
+            paths = _lib.search_path()
+            os.environ["BEZSURF_LIBRARY"] = "/x/libother.so"
+            self.assertEqual(_lib.search_path(), ["/x/libother.so"])
+        finally:
+            os.environ.pop("BEZSURF_LIBRARY", None)
+            if saved[0] is not None:
+                os.environ["BEZSURF_LIBRARY"] = saved[0]
+            sys.prefix = saved[1]
+        package = os.path.dirname(os.path.abspath(bezsurf.__file__))
+        self.assertEqual(paths[0], os.path.join(package, "libbezsurf.so.1"))
+        self.assertEqual(paths[1], "/opt/venv/lib/libbezsurf.so.1")
+        self.assertLess(paths.index("/opt/venv/lib/libbezsurf.so.1"),
+                        paths.index("/usr/local/lib/libbezsurf.so.1"))
+        self.assertEqual(paths[-1], "libbezsurf.so.1")
+        self.assertTrue(all(p.endswith("libbezsurf.so.1") for p in paths), paths)
+
     def test_missing_library(self):
         r = run_import({"BEZSURF_LIBRARY": "/nonexistent/libbezsurf.so.1"})
         self.assertNotEqual(r.returncode, 0)
