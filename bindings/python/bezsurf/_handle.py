@@ -35,7 +35,8 @@ class Handle:
             raise ValueError(f"operation on a closed {type(self).__name__}")
         return ctypes.c_void_p(self._handle)
 
-    # Lets the object itself be passed to a C function (errors then come as ctypes.ArgumentError).
+    # Lets the object itself be passed to a C function. The public methods check their
+    # arguments first, so that a wrong type is a TypeError naming the argument.
     _as_parameter_ = _ptr
 
     def close(self) -> None:

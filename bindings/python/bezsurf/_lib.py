@@ -15,7 +15,9 @@ from ctypes import (POINTER, c_char_p, c_double, c_int, c_size_t, c_ssize_t, c_u
                     c_uint32, c_void_p)
 from typing import Any, Callable, Dict, List, Sequence, Tuple
 
-from ._errors import ERROR_CLASSES, BezsurfError
+from ._errors import ERROR_CLASSES, BezsurfError, BezsurfIOError, io_error
+
+BS_ERR_IO = -9
 
 #: Major version of the C ABI this binding speaks.
 ABI_MAJOR = 1
@@ -167,8 +169,10 @@ def status_text(dll: ctypes.CDLL, code: int) -> str:
     return dll.bs_status_string(code).decode("utf-8", "replace")
 
 
-def error_for(dll: ctypes.CDLL, code: int, function: str = "") -> BezsurfError:
+def error_for(dll: ctypes.CDLL, code: int, function: str = "", errno: int = 0) -> BezsurfError:
     cls = ERROR_CLASSES.get(code, BezsurfError)
+    if issubclass(cls, BezsurfIOError):
+        return io_error(code, status_text(dll, code), function or None, None, errno, None)
     return cls(code, status_text(dll, code), function or None)
 
 
@@ -200,7 +204,10 @@ class Library:
 
     def _check(self, result: int, func: Any, args: Any) -> int:
         if result < 0:
-            raise error_for(self.dll, result, getattr(func, "__name__", ""))
+            # errno as the failed call left it (the library is loaded with use_errno; callers
+            # of I/O functions clear it first), read before anything else can change it
+            errno = ctypes.get_errno() if result == BS_ERR_IO else 0
+            raise error_for(self.dll, result, getattr(func, "__name__", ""), errno)
         return result
 
     def __getattr__(self, name: str) -> Callable[..., Any]:
