@@ -38,6 +38,10 @@ Points = Union["FloatArray", List[Tuple[float, ...]]]
 Point = Union["FloatArray", Tuple[float, ...]]
 #: Normal kinds: a uint8 array with numpy, else a list of NormalKind.
 Kinds = Union["UInt8Array", List[NormalKind]]
+#: A result of n points or, for scalar parameters, of one point.
+PointOrPoints = Union["FloatArray", List[Tuple[float, ...]], Tuple[float, ...]]
+#: Normal kinds of n points or, for scalar parameters, of one point.
+KindOrKinds = Union["UInt8Array", List[NormalKind], NormalKind, "np.uint8"]
 #: uint32 results (ids, indices): an array with numpy, else a list of ints or of int tuples.
 Ids = Union["UInt32Array", List[int]]
 IdRows = Union["UInt32Array", List[Tuple[int, ...]]]

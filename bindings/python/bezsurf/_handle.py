@@ -1,7 +1,9 @@
 """Ownership of C handles: deterministic release and parents kept alive by their children."""
 
 import ctypes
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, TypeVar
+
+_H = TypeVar("_H", bound="Handle")
 
 
 class Handle:
@@ -46,7 +48,7 @@ class Handle:
         if h is not None and self._parent is None and self._destroy is not None:
             type(self)._destroy(h)  # type: ignore[misc]
 
-    def __enter__(self) -> Any:
+    def __enter__(self: _H) -> _H:
         return self
 
     def __exit__(self, *exc: Any) -> None:

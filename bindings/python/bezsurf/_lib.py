@@ -166,7 +166,8 @@ NOT_BOUND: Dict[str, str] = {}
 
 
 def status_text(dll: ctypes.CDLL, code: int) -> str:
-    return dll.bs_status_string(code).decode("utf-8", "replace")
+    text: bytes = dll.bs_status_string(code)
+    return text.decode("utf-8", "replace")
 
 
 def error_for(dll: ctypes.CDLL, code: int, function: str = "", errno: int = 0) -> BezsurfError:

@@ -40,6 +40,7 @@ class Mesh(Handle):
     """
 
     _destroy = LIB.bs_mesh_destroy
+    _recipe: Tuple["Surface", str, Tuple[Any, ...]]
 
     def __init__(self) -> None:
         raise TypeError("meshes are made by Surface.tessellate() and Surface.tessellate_adaptive()")

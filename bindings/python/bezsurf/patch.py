@@ -7,7 +7,7 @@ from typing import (TYPE_CHECKING, Any, Dict, List, Literal, NamedTuple, Optiona
 
 from . import _args as A
 from . import _buffers as B
-from ._buffers import Kinds, Point, Points
+from ._buffers import KindOrKinds, Point, PointOrPoints, Points
 from ._enums import Direction, NormalKind
 from ._handle import Handle
 from ._lib import LIB, CCurve
@@ -28,7 +28,8 @@ NORMAL_UNDEFINED = NormalKind.UNDEFINED
 DirectionArg = Union[Direction, int, str]
 #: Evaluation parameters: a real number, a sequence of them, array.array('d'), memoryview or
 #: numpy array (any real dtype, any stride).
-Params = Union[float, Sequence[float], "array.array[float]", memoryview, "npt.NDArray[Any]"]
+ParamSeq = Union[Sequence[float], "array.array[float]", memoryview, "npt.NDArray[Any]"]
+Params = Union[float, ParamSeq]
 #: A control net (deg_u+1, deg_v+1, dim), a weight grid, a curve's points or a matrix: nested
 #: sequences of real numbers or a numpy array.
 Nested = Union[Sequence[Any], "npt.NDArray[Any]", memoryview]
@@ -56,11 +57,11 @@ class Evaluation(NamedTuple):
     (``kind``: a list of :class:`NormalKind`). For scalar u and v the leading n axis is dropped.
     """
 
-    position: Any
-    du: Any = None
-    dv: Any = None
-    normal: Any = None
-    kind: Any = None
+    position: PointOrPoints
+    du: Optional[PointOrPoints] = None
+    dv: Optional[PointOrPoints] = None
+    normal: Optional[PointOrPoints] = None
+    kind: Optional[KindOrKinds] = None
 
 
 def _check_requested(derivatives: bool, normals: bool, du_out: Any, dv_out: Any,
@@ -157,7 +158,8 @@ class Patch(Handle):
         shape = self.shape
         buf = array.array("d", bytes(8 * shape[0] * shape[1] * shape[2]))
         LIB.bs_patch_get_ctrl(self._ptr, buf.buffer_info()[0], len(buf), None, 0)
-        return B.nested(buf, shape)
+        net: List[List[Tuple[float, ...]]] = B.nested(buf, shape)
+        return net
 
     @property
     def weights(self) -> Optional[List[List[float]]]:
@@ -173,7 +175,7 @@ class Patch(Handle):
         """The control net as a numpy array of shape (deg_u+1, deg_v+1, dim), written by the
         library into ``out`` (a C-contiguous float64 array of that shape) or a new array."""
         np = B.need_numpy()
-        arr = out if out is not None else np.empty(self.shape)
+        arr: "npt.NDArray[Any]" = out if out is not None else np.empty(self.shape)
         _check_packed(arr, self.shape, "out")
         LIB.bs_patch_get_ctrl(self._ptr, arr.ctypes.data, arr.size, None, 0)
         return arr
@@ -182,7 +184,7 @@ class Patch(Handle):
         """The weights as a numpy array of shape (deg_u+1, deg_v+1); all ones when polynomial."""
         np = B.need_numpy()
         shape = self.shape[:2]
-        arr = out if out is not None else np.empty(shape)
+        arr: "npt.NDArray[Any]" = out if out is not None else np.empty(shape)
         _check_packed(arr, shape, "out")
         LIB.bs_patch_get_ctrl(self._ptr, None, 0, arr.ctypes.data, arr.size)
         return arr
@@ -214,13 +216,28 @@ class Patch(Handle):
              normals: Literal[False] = ..., out: OutArray = ...) -> Point: ...
 
     @overload
-    def eval(self, u: Params, v: Params, *, derivatives: Literal[False] = ...,
+    def eval(self, u: ParamSeq, v: Params, *, derivatives: Literal[False] = ...,
              normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, u: Params, v: ParamSeq, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, u: Params, v: Params, *, derivatives: Literal[True], normals: bool = ...,
+             out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+             normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, u: Params, v: Params, *, derivatives: bool = ..., normals: Literal[True],
+             out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+             normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
 
     @overload
     def eval(self, u: Params, v: Params, *, derivatives: bool = ..., normals: bool = ...,
              out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
-             normal_out: OutArray = ..., kind_out: OutArray = ...) -> "Evaluation": ...
+             normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Union[PointOrPoints, Evaluation]: ...
 
     def eval(self, u: Params, v: Params, *, derivatives: bool = False, normals: bool = False,
              out: OutArray = None, du_out: OutArray = None, dv_out: OutArray = None,
@@ -265,7 +282,11 @@ class Patch(Handle):
                    out: OutArray = ...) -> Point: ...
 
     @overload
-    def eval_deriv(self, ku: int, kv: int, u: Params, v: Params, *,
+    def eval_deriv(self, ku: int, kv: int, u: ParamSeq, v: Params, *,
+                   out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval_deriv(self, ku: int, kv: int, u: Params, v: ParamSeq, *,
                    out: OutArray = ...) -> Points: ...
 
     def eval_deriv(self, ku: int, kv: int, u: Params, v: Params, *,
@@ -306,9 +327,20 @@ class Patch(Handle):
                   normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
 
     @overload
-    def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: bool = ...,
+    def eval_grid(self, u: Params, v: Params, *, derivatives: Literal[True], normals: bool = ...,
                   out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
                   normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: Literal[True],
+                  out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+                  normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: bool = ...,
+                  out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+                  normal_out: OutArray = ...,
+                  kind_out: OutArray = ...) -> Union[Points, Evaluation]: ...
 
     def eval_grid(self, u: Params, v: Params, *, derivatives: bool = False,
                   normals: bool = False, out: OutArray = None, du_out: OutArray = None,

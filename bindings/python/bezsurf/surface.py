@@ -3,18 +3,18 @@
 import ctypes
 import numbers
 import os
-from typing import (Any, Dict, Iterable, Iterator, List, NamedTuple, Optional, Tuple, Union,
-                    overload)
+from typing import (Any, Dict, Iterable, Iterator, List, Literal, NamedTuple, Optional, Tuple,
+                    Union, overload)
 
 from . import _args as A
 from . import _buffers as B
-from ._buffers import Points
+from ._buffers import Point, PointOrPoints, Points
 from ._enums import SIDES, Side
 from ._errors import BezsurfError, BezsurfIOError, ParseError, io_error
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .mesh import Mesh
-from .patch import Evaluation, OutArray, Params, Patch, _Call, _check_requested
+from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
 
 #: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
 SIDE_V0 = Side.V0
@@ -225,6 +225,36 @@ class Surface(Handle):
             yield self[i]
 
     # ---- evaluation --------------------------------------------------------------------------
+    @overload
+    def eval(self, ids: int, u: float, v: float, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Point: ...
+
+    @overload
+    def eval(self, ids: Ids, u: ParamSeq, v: Params, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: ParamSeq, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: Literal[True],
+             normals: bool = ..., out: OutArray = ..., du_out: OutArray = ...,
+             dv_out: OutArray = ..., normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = ...,
+             normals: Literal[True], out: OutArray = ..., du_out: OutArray = ...,
+             dv_out: OutArray = ..., normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = ...,
+             normals: bool = ..., out: OutArray = ..., du_out: OutArray = ...,
+             dv_out: OutArray = ..., normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Union[PointOrPoints, Evaluation]: ...
+
     def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = False,
              normals: bool = False, out: OutArray = None, du_out: OutArray = None,
              dv_out: OutArray = None, normal_out: OutArray = None,
@@ -270,9 +300,8 @@ class Surface(Handle):
                     normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
         """Positions, unit normals and kinds at scattered points of a 3-D surface
         (``eval(ids, u, v, normals=True)``)."""
-        res: Evaluation = self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
-                                    kind_out=kind_out)
-        return res
+        return self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
+                         kind_out=kind_out)
 
     def continuity(self, tol: float = 1e-9, samples: int = 32) -> Continuity:
         """Shared and open edges of a 3-D surface and the continuity across each shared edge.
