@@ -92,10 +92,16 @@ class Surface(Handle):
     _destroy = LIB.bs_surface_destroy
 
     def __init__(self, patches: Iterable[Patch] = ()) -> None:
+        if not isinstance(patches, Iterable):
+            raise TypeError(f"patches must be an iterable of bezsurf.Patch, not "
+                            f"{type(patches).__name__}")
+        items = list(patches)
+        for i, p in enumerate(items):
+            A.instance(p, Patch, f"patches[{i}]")
         handle = ctypes.c_void_p()
         LIB.bs_surface_create(ctypes.byref(handle))
         self._adopt(handle.value)  # type: ignore[arg-type]
-        for p in patches:
+        for p in items:
             self.add(p)
 
     @classmethod

@@ -154,6 +154,8 @@ class ArgumentErrorTest(unittest.TestCase):
             ("u", lambda: p.eval_grid({"a": 1}, [0.5])), ("ids", lambda: s.eval("0", 0.5, 0.5)),
             ("ids", lambda: s.eval([0.5], [0.5], [0.5])), ("code", lambda: bezsurf.status_string("x")),
             ("surface indices", lambda: s["0"]), ("surface indices", lambda: s[0.0]),
+            ("patches", lambda: bezsurf.Surface(3)),
+            ("patches[1]", lambda: bezsurf.Surface([p, NET])),
         ]
         for name, call in cases:
             with self.subTest(name=name):
