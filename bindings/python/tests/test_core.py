@@ -153,6 +153,48 @@ class LoaderTest(unittest.TestCase):
         self.assertIn("major version 2", r.stderr)
 
 
+class BackendTest(unittest.TestCase):
+    """The in-tree build backend takes the metadata from pyproject.toml."""
+
+    @classmethod
+    def setUpClass(cls):
+        import importlib.util
+        spec = importlib.util.spec_from_file_location(
+            "bezsurf_build_under_test", os.path.join(PACKAGE_DIR, "_build", "bezsurf_build.py"))
+        cls.backend = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(cls.backend)
+        with open(os.path.join(PACKAGE_DIR, "pyproject.toml"), encoding="utf-8") as f:
+            cls.pyproject = f.read()
+
+    def test_fallback_toml_parser_agrees_with_tomllib(self):
+        try:
+            import tomllib
+        except ImportError:
+            self.skipTest("tomllib needs Python 3.11")
+        self.assertEqual(self.backend.parse_toml(self.pyproject), tomllib.loads(self.pyproject))
+
+    def test_metadata_from_pyproject(self):
+        project = self.backend.parse_toml(self.pyproject)["project"]
+        meta = self.backend.metadata_text()
+        head, _, body = meta.partition("\n\n")
+        lines = head.splitlines()
+        self.assertIn(f"Version: {bezsurf.__version__}", lines)
+        self.assertIn(f"Summary: {project['description']}", lines)
+        self.assertIn(f"Requires-Python: {project['requires-python']}", lines)
+        self.assertIn(f"License: {project['license']['text']}", lines)
+        self.assertEqual([ln[len("Classifier: "):] for ln in lines if ln.startswith("Classifier: ")],
+                         project["classifiers"])
+        self.assertIn('Requires-Dist: numpy; extra == "numpy"', lines)
+        with open(os.path.join(PACKAGE_DIR, project["readme"]), encoding="utf-8") as f:
+            self.assertEqual(body, f.read())
+
+    def test_bundle_setting(self):
+        self.assertEqual(self.backend._bundle_mode({"bundle": "no"}), "no")
+        with self.assertRaises(ValueError):
+            self.backend._bundle_mode({"bundle": "maybe"})
+        self.assertIsNone(self.backend.build_library("no"))
+
+
 class InstallTest(unittest.TestCase):
     """The package installs offline with the interpreter's own pip (in-tree stdlib backend)."""
 

@@ -1,7 +1,8 @@
 """Install the package as a new user would and run the README's Python example.
 
 ``python3 venv_check.py [SOURCE_DIR]``: makes a fresh virtual environment, installs
-``bindings/python`` with ``pip install`` (offline, build isolation on, as the docs say), then runs
+``bindings/python`` with a plain ``pip install`` (build isolation on, as the docs say; nothing is
+downloaded), then runs
 the Python example of README.md with that environment's interpreter from an unrelated directory,
 with BEZSURF_LIBRARY, LD_LIBRARY_PATH and PYTHONPATH removed from the environment. Then it checks
 that the library came from the installed package, that the wheel's metadata came from
@@ -61,10 +62,11 @@ def main() -> int:
         if run([py, "-m", "pip", "--version"]).returncode != 0:
             print("SKIP: the virtual environment has no pip")
             return SKIP
-        pip = [py, "-m", "pip", "install", "--no-index", "--no-cache-dir"]
+        pip = [py, "-m", "pip", "install", "--no-cache-dir"]
         elsewhere = Path(tmp) / "elsewhere"
         elsewhere.mkdir()
 
+        # exactly as the README says (no index needed: nothing to download)
         r = run(pip + [str(PACKAGE_DIR)], cwd=elsewhere)
         if r.returncode != 0:
             return fail("pip install", r)
@@ -87,7 +89,7 @@ def main() -> int:
             if field not in meta:
                 return fail(f"metadata lacks {field!r}", r)
 
-        r = run(pip + ["--no-build-isolation", "--force-reinstall", str(PACKAGE_DIR)],
+        r = run(pip + ["--no-index", "--no-build-isolation", "--force-reinstall", str(PACKAGE_DIR)],
                 cwd=elsewhere)
         if r.returncode != 0:
             return fail("pip install --no-build-isolation", r)
