@@ -7,14 +7,20 @@ the system library search path, and must be of major version 1.
 Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hodographs, ...),
 :class:`Surface` (an ordered set of patches: evaluation, .bpt files, the built-in tea set,
 continuity, tessellation) and :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export).
-Errors are :class:`BezsurfError` subclasses. numpy is optional: numpy inputs give numpy results
-written in place by the library, other inputs give lists of tuples.
+Errors are :class:`BezsurfError` subclasses; wrong argument types raise TypeError and bad
+values ValueError, naming the argument. numpy is optional: whenever it is importable, results
+are numpy arrays written in place by the library (float arrays in Fortran order, the library's
+fastest layout), otherwise lists of tuples. Every object can be copied and pickled.
 """
 
-from ._errors import (BezsurfError, BezsurfIOError, DegreeError, DimensionError, DomainError,
-                      IncompatibleError, InvalidArgumentError, NoMemoryError, NonFiniteError,
-                      ParseError, SizeError, UnsupportedError)
+from ._errors import (BezsurfError, BezsurfFileNotFoundError, BezsurfIOError,
+                      BezsurfIsADirectoryError, BezsurfNotADirectoryError, BezsurfPermissionError,
+                      DegreeError, DimensionError, DomainError, IncompatibleError,
+                      InvalidArgumentError, NoMemoryError, NonFiniteError, ParseError, SizeError,
+                      UnsupportedError)
+from ._enums import Direction, Format, NormalKind, Side
 from ._lib import LIB as _LIB
+from ._buffers import have_numpy
 from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
                     Evaluation, Patch)
 from .mesh import Mesh
@@ -30,7 +36,8 @@ MAX_DIM = 8
 
 def version() -> str:
     """Version string of the loaded C library, "MAJOR.MINOR.PATCH"."""
-    return _LIB.bs_version_string().decode("ascii")
+    text: bytes = _LIB.bs_version_string()
+    return text.decode("ascii")
 
 
 def version_number() -> int:
@@ -40,20 +47,27 @@ def version_number() -> int:
 
 def status_string(code: int) -> str:
     """The library's text for a status code (any integer; "unknown status" for non-codes)."""
-    return _LIB.bs_status_string(code).decode("utf-8", "replace")
+    from ._args import integer
+    code = integer(code, "code", -2 ** 31, 2 ** 31 - 1)
+    text: bytes = _LIB.bs_status_string(code)
+    return text.decode("utf-8", "replace")
 
 
 def library_path() -> str:
     """The name or path the C library was loaded from."""
-    return _LIB.path
+    path: str = _LIB.path
+    return path
 
 
 __all__ = [
     "Patch", "Surface", "Mesh", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
+    "Direction", "NormalKind", "Format", "Side",
     "SIDE_V0", "SIDE_U1", "SIDE_V1", "SIDE_U0",
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",
     "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",
-    "IncompatibleError", "UnsupportedError",
+    "BezsurfFileNotFoundError", "BezsurfPermissionError", "BezsurfIsADirectoryError",
+    "BezsurfNotADirectoryError", "IncompatibleError", "UnsupportedError",
     "DIR_U", "DIR_V", "NORMAL_REGULAR", "NORMAL_LIMIT", "NORMAL_UNDEFINED", "MAX_DEGREE",
     "MAX_DIM", "builtin_names", "version", "version_number", "status_string", "library_path",
+    "have_numpy",
 ]

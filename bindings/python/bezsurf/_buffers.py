@@ -4,18 +4,20 @@ Inputs: numpy arrays pass as they are (any stride, including negative ones; othe
 converted to float64 once); ``array.array('d')`` and writable contiguous memoryviews of doubles pass
 by address; lists, tuples and other buffers are copied once into an ``array.array('d')``.
 
-Outputs: with numpy, one array of shape (n, k) is allocated (or the caller's ``out=`` array used)
-and its k columns are handed to the library as k strided views, so the library writes the final
-array directly. Without numpy, the library writes one interleaved ``array.array('d')`` (k views
-of stride k doubles) that is grouped into a list of n tuples.
+Outputs follow one rule: numpy arrays whenever numpy is importable, plain lists otherwise. With
+numpy, one array of shape (n, k) in Fortran order (each column contiguous, the library's packed
+fast path) is allocated, or the caller's ``out=`` array used, and its k columns are handed to the
+library as k views, so the library writes the final array directly. Without numpy, the library
+writes k packed ``array.array('d')`` columns that are zipped into a list of n tuples.
 """
 
 import array
 import ctypes
 import numbers
 import sys
-from typing import Any, List, Optional, Sequence, Tuple
+from typing import (TYPE_CHECKING, Any, Iterable, List, Optional, Sequence, Tuple, Union)
 
+from ._enums import NORMAL_KINDS, NormalKind
 from ._lib import CView, View
 
 try:  # numpy is optional
@@ -23,8 +25,36 @@ try:  # numpy is optional
 except ImportError:  # pragma: no cover - depends on the interpreter
     np = None  # type: ignore[assignment]
 
+if TYPE_CHECKING:
+    import numpy.typing as npt
+
+    FloatArray = npt.NDArray[np.float64]
+    UInt8Array = npt.NDArray[np.uint8]
+    UInt32Array = npt.NDArray[np.uint32]
+
+#: Results of n points: a float64 array of shape (n, k) with numpy, else a list of n tuples.
+Points = Union["FloatArray", List[Tuple[float, ...]]]
+#: One point: a float64 array of shape (k,) with numpy, else a tuple.
+Point = Union["FloatArray", Tuple[float, ...]]
+#: Normal kinds: a uint8 array with numpy, else a list of NormalKind.
+Kinds = Union["UInt8Array", List[NormalKind]]
+#: A result of n points or, for scalar parameters, of one point.
+PointOrPoints = Union["FloatArray", List[Tuple[float, ...]], Tuple[float, ...]]
+#: Normal kinds of n points or, for scalar parameters, of one point.
+KindOrKinds = Union["UInt8Array", List[NormalKind], NormalKind, "np.uint8"]
+#: uint32 results (ids, indices): an array with numpy, else a list of ints or of int tuples.
+Ids = Union["UInt32Array", List[int]]
+IdRows = Union["UInt32Array", List[Tuple[int, ...]]]
+
+# numpy >= 1.25 keeps its exceptions in numpy.exceptions
+_TOO_HARD: Any = getattr(getattr(np, "exceptions", np), "TooHardError", Exception)
 _DOUBLE = ctypes.sizeof(ctypes.c_double)
 _DOUBLE_FORMATS = {"d", "@d", "=d", "<d" if sys.byteorder == "little" else ">d"}
+
+
+def have_numpy() -> bool:
+    """True when results are numpy arrays (numpy importable), False when they are lists."""
+    return np is not None
 
 
 def is_ndarray(x: Any) -> bool:
@@ -35,7 +65,7 @@ def is_scalar(x: Any) -> bool:
     """A single real number (Python or numpy scalar, or a 0-d array)."""
     if isinstance(x, numbers.Real):
         return True
-    return is_ndarray(x) and x.ndim == 0
+    return is_ndarray(x) and bool(x.ndim == 0)
 
 
 def need_numpy() -> Any:
@@ -44,27 +74,33 @@ def need_numpy() -> Any:
     return np
 
 
+def type_name(x: Any) -> str:
+    return type(x).__name__
+
+
 class Doubles:
     """A 1-D run of doubles the library may read (or write): address, count, byte stride.
 
     ``keep`` holds the Python object owning the memory for as long as the view is in use.
     """
 
-    __slots__ = ("address", "count", "stride", "keep", "numpy")
+    __slots__ = ("address", "count", "stride", "keep")
 
-    def __init__(self, address: int, count: int, stride: int, keep: Any, numpy: bool) -> None:
+    def __init__(self, address: int, count: int, stride: int, keep: Any) -> None:
         self.address = address
         self.count = count
         self.stride = stride
         self.keep = keep
-        self.numpy = numpy
 
     def cview(self) -> CView:
         return CView(self.address, self.count, self.stride)
 
 
-def _ndarray_1d(a: Any, what: str) -> Doubles:
-    a = np.asarray(a, dtype=np.float64)          # converts other dtypes once, never float64
+def _ndarray_1d(x: Any, what: str) -> Doubles:
+    try:
+        a = np.asarray(x, dtype=np.float64)      # converts other dtypes once, never float64
+    except (TypeError, ValueError) as exc:
+        raise TypeError(f"{what} must hold real numbers, not {x.dtype}") from exc
     if a.ndim == 0:
         a = a.reshape(1)
     if a.ndim != 1:
@@ -73,16 +109,20 @@ def _ndarray_1d(a: Any, what: str) -> Doubles:
     # data (views into byte buffers) is copied since the library requires aligned doubles.
     if (a.strides[0] == 0 and a.shape[0] > 1) or not a.flags.aligned:
         a = np.array(a, dtype=np.float64, copy=True)
-    return Doubles(a.ctypes.data, a.shape[0], a.strides[0], a, True)
+    return Doubles(int(a.ctypes.data), int(a.shape[0]), int(a.strides[0]), a)
 
 
 def _packed(values: Any, what: str) -> Doubles:
+    if isinstance(values, (str, bytes)):
+        raise TypeError(f"{what} must be a real number or a sequence of them, not "
+                        f"{type_name(values)}")
     try:
         arr = array.array("d", values)
     except TypeError as exc:
-        raise TypeError(f"{what} must be a sequence of real numbers") from exc
+        raise TypeError(f"{what} must be a real number or a sequence of real numbers "
+                        f"({exc})") from None
     address, count = arr.buffer_info()
-    return Doubles(address, count, _DOUBLE, arr, False)
+    return Doubles(address, count, _DOUBLE, arr)
 
 
 def doubles(x: Any, what: str) -> Doubles:
@@ -93,13 +133,13 @@ def doubles(x: Any, what: str) -> Doubles:
         return _packed((float(x),), what)
     if isinstance(x, array.array) and x.typecode == "d":
         address, count = x.buffer_info()
-        return Doubles(address, count, _DOUBLE, x, False)
-    if isinstance(x, (memoryview, bytes, bytearray)) or hasattr(x, "__buffer__"):
+        return Doubles(address, count, _DOUBLE, x)
+    if isinstance(x, (memoryview, bytearray)) or hasattr(x, "__buffer__"):
         mv = memoryview(x)
         if mv.format in _DOUBLE_FORMATS and mv.ndim == 1:
             if mv.c_contiguous and not mv.readonly and mv.nbytes:
                 raw = (ctypes.c_double * len(mv)).from_buffer(mv)
-                return Doubles(ctypes.addressof(raw), len(mv), _DOUBLE, (mv, raw), False)
+                return Doubles(ctypes.addressof(raw), len(mv), _DOUBLE, (mv, raw))
             return _packed(mv.tolist(), what)
         if mv.format not in _DOUBLE_FORMATS:
             raise TypeError(f"{what}: a buffer of doubles is needed, got format {mv.format!r}")
@@ -108,42 +148,43 @@ def doubles(x: Any, what: str) -> Doubles:
 
 
 class Output:
-    """An (n, k) double result the library writes through k strided views."""
+    """An (n, k) double result the library writes through k views."""
 
-    __slots__ = ("n", "k", "array", "columns", "views")
+    __slots__ = ("n", "k", "array", "columns", "views", "given")
 
-    def __init__(self, n: int, k: int, use_numpy: bool, out: Any = None, what: str = "out") -> None:
+    def __init__(self, n: int, k: int, out: Any = None, what: str = "out") -> None:
         self.n = n
         self.k = k
-        self.array = None
-        self.columns: List[array.array] = []
+        self.array: Any = None
+        self.columns: List["array.array[float]"] = []
+        self.given = out is not None
         views = (View * k)()
-        if out is not None or use_numpy:
+        if out is not None or np is not None:
             arr = _check_out(out, (n, k), what) if out is not None else \
-                need_numpy().empty((n, k), dtype=np.float64)
-            base = arr.ctypes.data
+                np.empty((n, k), dtype=np.float64, order="F")
+            base = int(arr.ctypes.data)
             for c in range(k):
                 views[c] = View(base + c * arr.strides[1], n, arr.strides[0])
             self.array = arr
         else:
-            # One interleaved buffer (point-major, stride k doubles), read back as n tuples.
-            buf = array.array("d", bytes(_DOUBLE * max(n * k, 1)))
-            base = buf.buffer_info()[0]
+            # k packed columns (the library's fast path), zipped into n tuples at C speed.
             for c in range(k):
-                views[c] = View(base + c * _DOUBLE, n, k * _DOUBLE)
-            self.columns.append(buf)
+                col = array.array("d", bytes(_DOUBLE * max(n, 1)))
+                views[c] = View(col.buffer_info()[0], n, _DOUBLE)
+                self.columns.append(col)
         self.views = views
 
     def result(self) -> Any:
         if self.array is not None:
             return self.array
-        values = iter(self.columns[0][: self.n * self.k])
-        return list(zip(*[values] * self.k))
+        if self.n == 0:
+            return []
+        return list(zip(*(col[: self.n] for col in self.columns)))
 
 
 def _check_out(out: Any, shape: Tuple[int, ...], what: str) -> Any:
     if not is_ndarray(out):
-        raise TypeError(f"{what} must be a numpy array")
+        raise TypeError(f"{what} must be a numpy array, not {type_name(out)}")
     if out.dtype != np.float64:
         raise TypeError(f"{what} must have dtype float64, not {out.dtype}")
     if out.shape != shape:
@@ -160,23 +201,27 @@ def _check_out(out: Any, shape: Tuple[int, ...], what: str) -> Any:
 
 
 class KindOutput:
-    """n bytes of normal kinds (uint8 numpy array, or a list of ints)."""
+    """n bytes of normal kinds (uint8 numpy array, or a list of NormalKind)."""
 
-    __slots__ = ("n", "array", "buffer", "address")
+    __slots__ = ("n", "array", "buffer", "address", "given")
 
-    def __init__(self, n: int, use_numpy: bool, out: Any = None) -> None:
+    def __init__(self, n: int, out: Any = None) -> None:
         self.n = n
-        self.array = None
+        self.array: Any = None
+        self.buffer: Any = None
+        self.given = out is not None
         if out is not None:
-            if not is_ndarray(out) or out.dtype != np.uint8 or out.shape != (n,) \
-                    or not out.flags.c_contiguous or not out.flags.writeable:
-                raise ValueError(f"kind_out must be a writable contiguous uint8 array of shape ({n},)")
+            if not is_ndarray(out):
+                raise TypeError(f"kind_out must be a numpy array, not {type_name(out)}")
+            if out.dtype != np.uint8 or out.shape != (n,) or not out.flags.c_contiguous \
+                    or not out.flags.writeable:
+                raise ValueError(f"kind_out must be a writable contiguous uint8 array of shape "
+                                 f"({n},)")
             self.array = out
-        elif use_numpy:
-            self.array = need_numpy().empty(n, dtype=np.uint8)
+        elif np is not None:
+            self.array = np.empty(n, dtype=np.uint8)
         if self.array is not None:
-            self.buffer = None
-            self.address = self.array.ctypes.data
+            self.address = int(self.array.ctypes.data)
         else:
             self.buffer = (ctypes.c_ubyte * max(n, 1))()
             self.address = ctypes.addressof(self.buffer)
@@ -184,14 +229,33 @@ class KindOutput:
     def result(self) -> Any:
         if self.array is not None:
             return self.array
-        return list(self.buffer[: self.n])
+        return [NORMAL_KINDS[k] for k in self.buffer[: self.n]]
+
+
+def check_disjoint(outputs: Sequence[Tuple[str, Any]], inputs: Sequence[Tuple[str, Any]]) -> None:
+    """ValueError if two output arrays, or an output and an input, share memory.
+
+    The library writes outputs while reading inputs; overlapping buffers would give results that
+    depend on the order of the writes. Only arrays the caller passed can overlap.
+    """
+    arrays = [(name, a) for name, a in outputs if is_ndarray(a)]
+    others = [(name, a) for name, a in inputs if is_ndarray(a)]
+    for i, (name, a) in enumerate(arrays):
+        for other, b in arrays[i + 1:] + others:
+            try:
+                shared = np.shares_memory(a, b, max_work=100000)
+            except _TOO_HARD:
+                shared = np.may_share_memory(a, b)
+            if shared:
+                raise ValueError(f"{name} overlaps {other}: outputs must not share memory with "
+                                 f"each other or with the inputs")
 
 
 _U32 = "I" if array.array("I").itemsize == 4 else "L"
 
 
-def uint32s(x: Any, what: str) -> Tuple[Any, int, int, bool]:
-    """(keep, address, count, is_numpy) of a packed uint32 copy (or view) of ids."""
+def uint32s(x: Any, what: str) -> Tuple[Any, int, int]:
+    """(keep, address, count) of a packed uint32 copy (or view) of ids."""
     if is_ndarray(x):
         a = np.asarray(x)
         if a.ndim == 0:
@@ -199,36 +263,41 @@ def uint32s(x: Any, what: str) -> Tuple[Any, int, int, bool]:
         if a.ndim != 1:
             raise ValueError(f"{what} must be one-dimensional")
         if a.dtype != np.uint32:
-            if a.size and (not np.issubdtype(a.dtype, np.integer) or a.min() < 0
-                           or a.max() > 0xFFFFFFFF):
+            if a.size and not np.issubdtype(a.dtype, np.integer):
+                raise TypeError(f"{what} must hold integers, not {a.dtype}")
+            if a.size and (a.min() < 0 or a.max() > 0xFFFFFFFF):
                 raise ValueError(f"{what} must hold integers in 0..2**32-1")
             a = a.astype(np.uint32)
         a = np.ascontiguousarray(a)
-        return a, a.ctypes.data, a.shape[0], True
+        return a, int(a.ctypes.data), int(a.shape[0])
     if isinstance(x, numbers.Integral):
         x = (x,)
+    if isinstance(x, (str, bytes)) or not isinstance(x, Iterable):
+        raise TypeError(f"{what} must be an integer or a sequence of integers, not {type_name(x)}")
     try:
         arr = array.array(_U32, x)
-    except (TypeError, OverflowError) as exc:
+    except TypeError as exc:
+        raise TypeError(f"{what} must be an integer or a sequence of integers ({exc})") from None
+    except OverflowError as exc:
         raise ValueError(f"{what} must hold integers in 0..2**32-1") from exc
     if not arr:
         arr.append(0)  # a valid pointer; the count passed stays 0
-        return arr, arr.buffer_info()[0], 0, False
-    return arr, arr.buffer_info()[0], len(arr), False
+        return arr, arr.buffer_info()[0], 0
+    return arr, arr.buffer_info()[0], len(arr)
 
 
 class UInt32Output:
     """count uint32 values, shaped (rows, k) or flat, as a numpy array or a list."""
 
-    def __init__(self, count: int, use_numpy: bool, shape: Tuple[int, ...]) -> None:
+    def __init__(self, count: int, shape: Tuple[int, ...], lists: bool = False) -> None:
         self.count = count
         self.shape = shape
-        if use_numpy:
-            self.array = need_numpy().empty(shape, dtype=np.uint32)
-            self.buf = None
-            self.address = self.array.ctypes.data
+        self.array: Any = None
+        self.buf: Any = None
+        if np is not None and not lists:
+            self.array = np.empty(shape, dtype=np.uint32)
+            self.address = int(self.array.ctypes.data)
         else:
-            self.array = None
             self.buf = array.array(_U32, bytes(4 * max(count, 1)))
             self.address = self.buf.buffer_info()[0]
 
@@ -242,75 +311,99 @@ class UInt32Output:
         return list(zip(*(values[c::k] for c in range(k))))
 
 
-def flat_net(net: Any, weights: Any) -> Tuple[int, int, int, Any, Any, Any]:
-    """(rows, cols, dim, ctrl keep, ctrl address, weights address) from a control net.
+def nested_doubles(x: Any, depth: int, what: str) -> Tuple[Tuple[int, ...], "array.array[float]"]:
+    """(shape, packed doubles) of a rectangular nested sequence of real numbers, depth levels deep.
+
+    Errors name the offending element: ``net[1][2] must be a sequence of real numbers, not int``,
+    ``net must be rectangular: net[1] has 2 entries, net[0] has 3``.
+    """
+    if isinstance(x, memoryview):
+        x = x.tolist()
+    flat: "array.array[float]" = array.array("d")
+    lengths: List[Optional[Tuple[int, str]]] = [None] * depth
+
+    def walk(obj: Any, level: int, label: str) -> None:
+        if is_ndarray(obj) and obj.ndim == depth - level:
+            try:
+                a = np.ascontiguousarray(obj, dtype=np.float64)
+            except (TypeError, ValueError):
+                raise TypeError(f"{label} must hold real numbers, not {obj.dtype}") from None
+            for lv, size in enumerate(a.shape):
+                expect(lv + level, size, label + "[0]" * lv)
+            flat.extend(a.reshape(-1).tolist())
+            return
+        if isinstance(obj, (str, bytes)) or not isinstance(obj, Iterable):
+            kind = "a sequence of real numbers" if level == depth - 1 else "a sequence"
+            raise TypeError(f"{label} must be {kind}, not {type_name(obj)}")
+        items = obj if isinstance(obj, (list, tuple)) else list(obj)
+        expect(level, len(items), label)
+        if level == depth - 1:
+            try:
+                flat.extend(array.array("d", items))
+            except TypeError:
+                for i, item in enumerate(items):
+                    if not isinstance(item, numbers.Real):
+                        raise TypeError(f"{label}[{i}] must be a real number, not "
+                                        f"{type_name(item)}") from None
+                raise
+            return
+        for i, item in enumerate(items):
+            walk(item, level + 1, f"{label}[{i}]")
+
+    def expect(level: int, size: int, label: str) -> None:
+        seen = lengths[level]
+        if seen is None:
+            lengths[level] = (size, label)
+        elif seen[0] != size:
+            raise ValueError(f"{what} must be rectangular: {label} has {size} entries, "
+                             f"{seen[1]} has {seen[0]}")
+
+    walk(x, 0, what)
+    shape = tuple(seen[0] if seen is not None else 0 for seen in lengths)
+    return shape, flat
+
+
+def flat_net(net: Any, weights: Any, what: str = "net",
+             wname: str = "weights") -> Tuple[int, int, int, Any, int, Optional[int]]:
+    """(rows, cols, dim, keep, ctrl address, weights address) from a control net.
 
     The net is a numpy array or nested sequence of shape (deg_u+1, deg_v+1, dim); weights None or
     of shape (deg_u+1, deg_v+1). The library copies both, so one packed copy is made here.
     """
     if is_ndarray(net):
-        a = np.ascontiguousarray(net, dtype=np.float64)
-        if a.ndim != 3:
-            raise ValueError(f"the control net must have shape (deg_u+1, deg_v+1, dim), got {a.shape}")
-        rows, cols, dim = a.shape
+        if net.ndim != 3:
+            raise ValueError(f"{what} must have shape (deg_u+1, deg_v+1, dim), got {net.shape}")
+        try:
+            a = np.ascontiguousarray(net, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise TypeError(f"{what} must hold real numbers, not {net.dtype}") from None
+        rows, cols, dim = (int(s) for s in a.shape)
         ctrl_keep: Any = a
-        ctrl_addr = a.ctypes.data
+        ctrl_addr = int(a.ctypes.data)
     else:
-        if isinstance(net, memoryview):
-            net = net.tolist()
-        rows_list = [list(r) for r in net]
-        rows = len(rows_list)
-        cols = len(rows_list[0]) if rows else 0
-        points = [p for r in rows_list for p in r]
-        dim = len(points[0]) if points else 0
-        if any(len(r) != cols for r in rows_list) or any(len(p) != dim for p in points):
-            raise ValueError("the control net must be rectangular: every row the same length, "
-                             "every point the same dimension")
-        flat = array.array("d")
-        for p in points:
-            flat.extend(p if isinstance(p, array.array) else array.array("d", p))
+        (rows, cols, dim), flat = nested_doubles(net, 3, what)
         if not flat:  # keep the pointer valid so that the library reports the real problem
             flat.append(0.0)
         ctrl_keep = flat
         ctrl_addr = flat.buffer_info()[0]
     if rows == 0 or cols == 0:
-        raise ValueError("the control net needs at least one row and one column")
+        raise ValueError(f"{what} needs at least one row and one column")
     w_keep: Any = None
     w_addr = None
     if weights is not None:
-        if is_ndarray(weights):
-            w = np.ascontiguousarray(weights, dtype=np.float64)
-            if w.shape != (rows, cols):
-                raise ValueError(f"weights must have shape {(rows, cols)}, got {w.shape}")
-            w_keep, w_addr = w, w.ctypes.data
-        else:
-            wrows = [list(r) for r in weights]
-            if len(wrows) != rows or any(len(r) != cols for r in wrows):
-                raise ValueError(f"weights must have shape {(rows, cols)}")
-            w_keep = array.array("d", [float(x) for r in wrows for x in r])
-            w_addr = w_keep.buffer_info()[0]
+        wshape, w = nested_doubles(weights, 2, wname)
+        if wshape != (rows, cols):
+            raise ValueError(f"{wname} must have shape {(rows, cols)}, got {wshape}")
+        w_keep, w_addr = w, w.buffer_info()[0]
     return rows, cols, dim, (ctrl_keep, w_keep), ctrl_addr, w_addr
 
 
-def packed_doubles(values: Any, count: int, what: str) -> Tuple[Any, int]:
-    """A packed C copy of count doubles from a nested sequence or array (for small inputs)."""
-    if is_ndarray(values):
-        a = np.ascontiguousarray(values, dtype=np.float64).reshape(-1)
-    else:
-        a = array.array("d", _flatten(values))
-    if len(a) != count:
-        raise ValueError(f"{what} must hold {count} numbers, got {len(a)}")
-    address = a.ctypes.data if is_ndarray(a) else a.buffer_info()[0]
-    return a, address
-
-
-def _flatten(x: Any) -> List[float]:
-    if isinstance(x, numbers.Real):
-        return [float(x)]
-    out: List[float] = []
-    for item in x:
-        out.extend(_flatten(item))
-    return out
+def packed_doubles(values: Any, shape: Tuple[int, ...], what: str) -> Tuple[Any, int]:
+    """A packed C copy of a small nested sequence or array of the given shape."""
+    got, flat = nested_doubles(values, len(shape), what)
+    if got != shape:
+        raise ValueError(f"{what} must have shape {shape}, got {got}")
+    return flat, flat.buffer_info()[0]
 
 
 def nested(flat: Sequence[float], shape: Sequence[int]) -> Any:

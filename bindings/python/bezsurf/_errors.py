@@ -1,6 +1,8 @@
 """Exceptions raised for the library's negative status codes."""
 
-from typing import Dict, Optional, Type
+import errno as _errno
+import os
+from typing import Any, Dict, Optional, Tuple, Type
 
 
 class BezsurfError(Exception):
@@ -27,6 +29,15 @@ class BezsurfError(Exception):
         where = f"{function}: " if function else ""
         more = f": {detail}" if detail else ""
         super().__init__(f"{where}{message}{more} (status {code})")
+        self._init: Tuple[Any, ...] = (code, message, function, detail)
+
+    def __str__(self) -> str:
+        return str(self.args[0]) if self.args else ""
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # Rebuilt from the constructor's arguments: exceptions cross process boundaries
+        # (multiprocessing) by pickling.
+        return (type(self), self._init)
 
 
 class InvalidArgumentError(BezsurfError, ValueError):
@@ -63,23 +74,83 @@ class ParseError(BezsurfError, ValueError):
     Attributes:
         line: 1-based line of the error, or None when unknown.
         column: 1-based byte column of the error, or None when unknown.
+        filename: the file being read (Surface.load), else None.
     """
 
     line: Optional[int]
     column: Optional[int]
+    filename: Optional[str]
 
     def __init__(self, code: int, message: str, function: Optional[str] = None,
                  detail: Optional[str] = None, line: Optional[int] = None,
-                 column: Optional[int] = None) -> None:
+                 column: Optional[int] = None, filename: Optional[str] = None) -> None:
         self.line = line
         self.column = column
+        self.filename = filename
+        shown = detail
         if line is not None:
-            detail = f"line {line}, column {column}" + (f": {detail}" if detail else "")
-        super().__init__(code, message, function, detail)
+            shown = f"line {line}, column {column}" + (f": {detail}" if detail else "")
+        super().__init__(code, message, function, shown)
+        self.detail = detail
+        self._init = (code, message, function, detail, line, column, filename)
 
 
 class BezsurfIOError(BezsurfError, OSError):
-    """BS_ERR_IO: a file could not be opened, read or written."""
+    """BS_ERR_IO: a file could not be opened, read or written.
+
+    Also an OSError with ``errno`` (the C library's errno after the failed call, EIO when it
+    left none), ``strerror`` and ``filename``. Raised as the subclass matching the errno where
+    Python has one: :class:`BezsurfFileNotFoundError` (a FileNotFoundError),
+    :class:`BezsurfPermissionError` (a PermissionError), :class:`BezsurfIsADirectoryError`,
+    :class:`BezsurfNotADirectoryError`.
+    """
+
+    def __init__(self, code: int, message: str, function: Optional[str] = None,
+                 detail: Optional[str] = None, errno: Optional[int] = None,
+                 filename: Optional[str] = None) -> None:
+        errno = errno or _errno.EIO
+        strerror = os.strerror(errno)
+        what = f"{detail}: " if detail else ""
+        where = f": {filename!r}" if filename is not None else ""
+        BezsurfError.__init__(self, code, message, function,
+                              f"{what}[Errno {errno}] {strerror}{where}")
+        self.detail = detail
+        self.errno = errno
+        self.strerror = strerror
+        self.filename = filename
+        self._init = (code, message, function, detail, errno, filename)
+
+
+class BezsurfFileNotFoundError(BezsurfIOError, FileNotFoundError):
+    """BS_ERR_IO with ENOENT."""
+
+
+class BezsurfPermissionError(BezsurfIOError, PermissionError):
+    """BS_ERR_IO with EACCES or EPERM."""
+
+
+class BezsurfIsADirectoryError(BezsurfIOError, IsADirectoryError):
+    """BS_ERR_IO with EISDIR."""
+
+
+class BezsurfNotADirectoryError(BezsurfIOError, NotADirectoryError):
+    """BS_ERR_IO with ENOTDIR."""
+
+
+_IO_CLASSES: Dict[int, Type[BezsurfIOError]] = {
+    _errno.ENOENT: BezsurfFileNotFoundError,
+    _errno.EACCES: BezsurfPermissionError,
+    _errno.EPERM: BezsurfPermissionError,
+    _errno.EISDIR: BezsurfIsADirectoryError,
+    _errno.ENOTDIR: BezsurfNotADirectoryError,
+}
+
+
+def io_error(code: int, message: str, function: Optional[str], detail: Optional[str],
+             errno: Optional[int], filename: Optional[str]) -> BezsurfIOError:
+    """The BezsurfIOError subclass for errno, carrying errno and filename."""
+    cls = _IO_CLASSES.get(errno or 0, BezsurfIOError)
+    return cls(code, message, function, detail, errno, filename)
 
 
 class IncompatibleError(BezsurfError, ValueError):

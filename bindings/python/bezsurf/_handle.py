@@ -1,7 +1,9 @@
 """Ownership of C handles: deterministic release and parents kept alive by their children."""
 
 import ctypes
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, TypeVar
+
+_H = TypeVar("_H", bound="Handle")
 
 
 class Handle:
@@ -35,7 +37,8 @@ class Handle:
             raise ValueError(f"operation on a closed {type(self).__name__}")
         return ctypes.c_void_p(self._handle)
 
-    # Lets the object itself be passed to a C function (errors then come as ctypes.ArgumentError).
+    # Lets the object itself be passed to a C function. The public methods check their
+    # arguments first, so that a wrong type is a TypeError naming the argument.
     _as_parameter_ = _ptr
 
     def close(self) -> None:
@@ -45,7 +48,7 @@ class Handle:
         if h is not None and self._parent is None and self._destroy is not None:
             type(self)._destroy(h)  # type: ignore[misc]
 
-    def __enter__(self) -> Any:
+    def __enter__(self: _H) -> _H:
         return self
 
     def __exit__(self, *exc: Any) -> None:

@@ -1,19 +1,23 @@
 """Loading libbezsurf and declaring its C functions.
 
-The library is found as ``$BEZSURF_LIBRARY`` when that is set, else by its SONAME
-(``libbezsurf.so.1``) on the system search path; the unversioned development symlink is never
-used, so a library of another major version cannot be picked up by accident. Every C function is
+The library is ``$BEZSURF_LIBRARY`` when that is set, else the first ``libbezsurf.so.1`` of
+``search_path()``: the package directory, the install prefixes, then the dynamic loader's own
+search. Always the SONAME: the unversioned development symlink is never used, so a library of
+another major version cannot be picked up by accident; the major version is checked as well. Every C function is
 declared once, in ``FUNCTIONS`` below, and the declarations are applied when the module loads.
 """
 
 import ctypes
 import os
 import sys
+import sysconfig
 from ctypes import (POINTER, c_char_p, c_double, c_int, c_size_t, c_ssize_t, c_ubyte, c_uint,
                     c_uint32, c_void_p)
 from typing import Any, Callable, Dict, List, Sequence, Tuple
 
-from ._errors import ERROR_CLASSES, BezsurfError
+from ._errors import ERROR_CLASSES, BezsurfError, BezsurfIOError, io_error
+
+BS_ERR_IO = -9
 
 #: Major version of the C ABI this binding speaks.
 ABI_MAJOR = 1
@@ -162,11 +166,14 @@ NOT_BOUND: Dict[str, str] = {}
 
 
 def status_text(dll: ctypes.CDLL, code: int) -> str:
-    return dll.bs_status_string(code).decode("utf-8", "replace")
+    text: bytes = dll.bs_status_string(code)
+    return text.decode("utf-8", "replace")
 
 
-def error_for(dll: ctypes.CDLL, code: int, function: str = "") -> BezsurfError:
+def error_for(dll: ctypes.CDLL, code: int, function: str = "", errno: int = 0) -> BezsurfError:
     cls = ERROR_CLASSES.get(code, BezsurfError)
+    if issubclass(cls, BezsurfIOError):
+        return io_error(code, status_text(dll, code), function or None, None, errno, None)
     return cls(code, status_text(dll, code), function or None)
 
 
@@ -198,7 +205,10 @@ class Library:
 
     def _check(self, result: int, func: Any, args: Any) -> int:
         if result < 0:
-            raise error_for(self.dll, result, getattr(func, "__name__", ""))
+            # errno as the failed call left it (the library is loaded with use_errno; callers
+            # of I/O functions clear it first), read before anything else can change it
+            errno = ctypes.get_errno() if result == BS_ERR_IO else 0
+            raise error_for(self.dll, result, getattr(func, "__name__", ""), errno)
         return result
 
     def __getattr__(self, name: str) -> Callable[..., Any]:
@@ -213,26 +223,64 @@ def _missing_stub(name: str) -> Callable[..., Any]:
     return stub
 
 
-def load() -> Library:
-    """Load the library, check its major version and declare its functions."""
-    path = os.environ.get("BEZSURF_LIBRARY") or SONAME
+def search_path() -> List[str]:
+    """Where the library is looked for, in order (see docs/python.md, "How the library is found").
+
+    1. ``$BEZSURF_LIBRARY`` when set (and then nothing else);
+    2. the package's own directory (the library a wheel built from the sources carries);
+    3. the install prefixes: ``lib``, ``lib/<multiarch>`` and ``lib64`` under ``sys.prefix``
+       (a virtual environment), ``sys.base_prefix`` and ``/usr/local`` (CMake's default prefix,
+       whose libraries the dynamic loader finds only after ``ldconfig``);
+    4. the bare SONAME, resolved by the dynamic loader (``LD_LIBRARY_PATH``, ``ld.so.cache``,
+       the system directories).
+    """
+    explicit = os.environ.get("BEZSURF_LIBRARY")
+    if explicit:
+        return [explicit]
+    paths = [os.path.join(os.path.dirname(os.path.abspath(__file__)), SONAME)]
+    multiarch = sysconfig.get_config_var("MULTIARCH")
+    for prefix in (sys.prefix, sys.base_prefix, "/usr/local"):
+        for libdir in ("lib", f"lib/{multiarch}" if multiarch else None, "lib64"):
+            if libdir:
+                path = os.path.join(prefix, libdir, SONAME)
+                if path not in paths:
+                    paths.append(path)
+    paths.append(SONAME)
+    return paths
+
+
+def _open(path: str) -> ctypes.CDLL:
+    """Load one candidate and check that it is libbezsurf of major version ABI_MAJOR."""
+    dll = ctypes.CDLL(path, use_errno=True)
     try:
-        dll = ctypes.CDLL(path)
-    except OSError as exc:
-        raise ImportError(
-            f"cannot load libbezsurf from {path!r} ({exc}); install libbezsurf {ABI_MAJOR}.x "
-            f"so that {SONAME} is on the library search path, or set BEZSURF_LIBRARY to the "
-            f"library file") from exc
-    try:
-        dll.bs_version_number.argtypes = []
-        dll.bs_version_number.restype = c_uint
-        number = int(dll.bs_version_number())
-    except AttributeError as exc:
-        raise ImportError(f"{path!r} is not libbezsurf (no bs_version_number)") from exc
+        fn = dll.bs_version_number
+    except AttributeError:
+        raise OSError(f"{path!r} is not libbezsurf (no bs_version_number)") from None
+    fn.argtypes = []
+    fn.restype = c_uint
+    number = int(fn())
     if number // 10000 != ABI_MAJOR:
-        raise ImportError(f"{path!r} is libbezsurf major version {number // 10000}; this binding "
-                          f"needs major version {ABI_MAJOR}")
-    return Library(dll, path)
+        raise OSError(f"{path!r} is libbezsurf major version {number // 10000}; this binding "
+                      f"needs major version {ABI_MAJOR}")
+    return dll
+
+
+def load() -> Library:
+    """Find and load the library, check its major version and declare its functions."""
+    candidates = search_path()
+    tried: List[str] = []
+    for path in candidates:
+        if len(candidates) > 1 and os.sep in path and not os.path.exists(path):
+            continue
+        try:
+            return Library(_open(path), path)
+        except OSError as exc:
+            tried.append(str(exc))
+    where = "; ".join(tried) if tried else "not found"
+    raise ImportError(
+        f"cannot load libbezsurf {ABI_MAJOR}.x ({where}); searched {', '.join(candidates)}. "
+        f"Install libbezsurf (cmake --install) or the wheel built from its sources, or set "
+        f"BEZSURF_LIBRARY to the library file")
 
 
 LIB = load()

@@ -2,25 +2,26 @@
 
 import ctypes
 import os
-from typing import Any, List, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Tuple, Union
 
+from . import _args as A
 from . import _buffers as B
+from ._buffers import IdRows, Ids, Points
+from ._enums import Format
+from ._errors import BezsurfIOError, io_error
 from ._handle import Handle
 from ._lib import LIB
 
-#: Export formats of :meth:`Mesh.write` (the names may be given as strings too).
-FORMATS = {"obj": 0, "ply": 1, "ply_ascii": 2, "stl": 3}
+if TYPE_CHECKING:
+    import numpy.typing as npt
 
-Format = Union[int, str]
+    from .surface import Surface
 
+#: Export formats of :meth:`Mesh.write` by name (Format members and their names work too).
+FORMATS = {f.name.lower(): f for f in Format}
 
-def _format(f: Format) -> int:
-    if isinstance(f, str):
-        try:
-            return FORMATS[f.lower()]
-        except KeyError:
-            raise ValueError(f"format must be one of {sorted(FORMATS)}, not {f!r}") from None
-    return int(f)
+FormatArg = Union[Format, int, str]
+OutArray = Optional["npt.NDArray[Any]"]
 
 
 class Mesh(Handle):
@@ -29,21 +30,50 @@ class Mesh(Handle):
 
     Vertices carry a position, a unit normal, a (u, v) pair and the id of the patch they were
     evaluated on; triangles are counter-clockwise index triples seen from the side the normals
-    point to. The read-back methods return lists of tuples, or numpy arrays written in place by
-    the library when ``numpy=True`` (or an ``out=`` array, where offered, is given). A mesh is a
-    context manager; ``close()`` releases it at once.
+    point to. The read-back methods return numpy arrays written in place by the library whenever
+    numpy is importable (float arrays in Fortran order; ``out=`` takes any float64 array of the
+    shape), else lists of tuples. A mesh is a context manager; ``close()`` releases it at once.
+
+    A mesh remembers how it was made (a copy of the surface and the tessellation parameters):
+    ``copy.copy``, ``copy.deepcopy`` and pickling rebuild it from that, and tessellation is
+    deterministic, so the copy has the same vertices and triangles bit for bit.
     """
 
     _destroy = LIB.bs_mesh_destroy
+    _recipe: Tuple["Surface", str, Tuple[Any, ...]]
 
     def __init__(self) -> None:
         raise TypeError("meshes are made by Surface.tessellate() and Surface.tessellate_adaptive()")
 
     @classmethod
-    def _wrap(cls, handle: Optional[int]) -> "Mesh":
+    def _tessellate(cls, surface: "Surface", method: str, args: Tuple[Any, ...]) -> "Mesh":
+        """Tessellate ``surface`` (a copy the mesh keeps as its recipe)."""
+        out = ctypes.c_void_p()
+        if method == "uniform":
+            LIB.bs_surface_tessellate_uniform(surface._ptr, *args, ctypes.byref(out))
+        elif method == "adaptive":
+            LIB.bs_surface_tessellate_adaptive(surface._ptr, *args, ctypes.byref(out))
+        else:
+            raise ValueError(f"unknown tessellation method {method!r}")
         m = cls.__new__(cls)
-        m._adopt(handle)  # type: ignore[arg-type]
+        m._adopt(out.value)  # type: ignore[arg-type]
+        m._recipe = (surface, method, args)
         return m
+
+    def _remake(self) -> "Mesh":
+        self._ptr  # a closed mesh is not copied
+        surface, method, args = self._recipe
+        return Mesh._tessellate(surface.clone(), method, args)
+
+    def __copy__(self) -> "Mesh":
+        return self._remake()
+
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "Mesh":
+        return self._remake()
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        self._ptr  # a closed mesh is not pickled
+        return (Mesh._tessellate, self._recipe)
 
     @property
     def vertex_count(self) -> int:
@@ -60,46 +90,50 @@ class Mesh(Handle):
         """Number of triangle strips (0 unless tessellated with ``strips=True``)."""
         return int(LIB.bs_mesh_strip_count(self._ptr))
 
-    def _views(self, fn: Any, n: int, k: int, numpy: bool, out: Any) -> Any:
-        res = B.Output(n, k, numpy, out)
+    def _views(self, fn: Callable[..., Any], n: int, k: int, out: OutArray) -> Points:
+        res = B.Output(n, k, out)
         fn(self._ptr, res.views)
-        return res.result()
+        result: Points = res.result()
+        return result
 
-    def positions(self, *, numpy: bool = False, out: Any = None) -> Any:
+    def positions(self, *, out: OutArray = None) -> Points:
         """Vertex positions, (vertex_count, 3)."""
-        return self._views(LIB.bs_mesh_copy_positions, self.vertex_count, 3, numpy, out)
+        return self._views(LIB.bs_mesh_copy_positions, self.vertex_count, 3, out)
 
-    def normals(self, *, numpy: bool = False, out: Any = None) -> Any:
+    def normals(self, *, out: OutArray = None) -> Points:
         """Unit vertex normals, (vertex_count, 3); never NaN."""
-        return self._views(LIB.bs_mesh_copy_normals, self.vertex_count, 3, numpy, out)
+        return self._views(LIB.bs_mesh_copy_normals, self.vertex_count, 3, out)
 
-    def uv(self, *, numpy: bool = False, out: Any = None) -> Any:
+    def uv(self, *, out: OutArray = None) -> Points:
         """Vertex (u, v) parameters on the patch each vertex was evaluated on, (vertex_count, 2)."""
-        return self._views(LIB.bs_mesh_copy_uv, self.vertex_count, 2, numpy, out)
+        return self._views(LIB.bs_mesh_copy_uv, self.vertex_count, 2, out)
 
-    def corner_uv(self, *, numpy: bool = False, out: Any = None) -> Any:
+    def corner_uv(self, *, out: OutArray = None) -> Points:
         """(u, v) of every triangle corner on the triangle's own patch, (3 * triangle_count, 2)."""
-        return self._views(LIB.bs_mesh_copy_corner_uv, 3 * self.triangle_count, 2, numpy, out)
+        return self._views(LIB.bs_mesh_copy_corner_uv, 3 * self.triangle_count, 2, out)
 
-    def _ids(self, fn: Any, count: int, shape: Tuple[int, ...], numpy: bool) -> Any:
-        res = B.UInt32Output(count, numpy, shape)
+    def _ids(self, fn: Callable[..., Any], count: int, shape: Tuple[int, ...]) -> Any:
+        res = B.UInt32Output(count, shape)
         fn(self._ptr, res.address, count)
         return res.result()
 
-    def patch_ids(self, *, numpy: bool = False) -> Any:
+    def patch_ids(self) -> Ids:
         """Per vertex, the id of the patch it was evaluated on (uint32)."""
         n = self.vertex_count
-        return self._ids(LIB.bs_mesh_copy_patch_ids, n, (n,), numpy)
+        result: Ids = self._ids(LIB.bs_mesh_copy_patch_ids, n, (n,))
+        return result
 
-    def triangles(self, *, numpy: bool = False) -> Any:
+    def triangles(self) -> IdRows:
         """Vertex index triples, (triangle_count, 3) (uint32)."""
         n = self.triangle_count
-        return self._ids(LIB.bs_mesh_copy_triangles, 3 * n, (n, 3), numpy)
+        result: IdRows = self._ids(LIB.bs_mesh_copy_triangles, 3 * n, (n, 3))
+        return result
 
-    def triangle_patch_ids(self, *, numpy: bool = False) -> Any:
+    def triangle_patch_ids(self) -> Ids:
         """Per triangle, the id of the patch it tessellates (uint32)."""
         n = self.triangle_count
-        return self._ids(LIB.bs_mesh_copy_triangle_patch_ids, n, (n,), numpy)
+        result: Ids = self._ids(LIB.bs_mesh_copy_triangle_patch_ids, n, (n,))
+        return result
 
     def strips(self) -> List[List[int]]:
         """The triangle strips as lists of vertex indices. Triangle i of a strip s is
@@ -107,20 +141,28 @@ class Mesh(Handle):
         a repeated index (at poles) are degenerate and to be dropped."""
         nidx = int(LIB.bs_mesh_strip_index_count(self._ptr))
         nstart = self.strip_count + 1
-        idx = B.UInt32Output(nidx, False, (nidx,))
-        start = B.UInt32Output(nstart, False, (nstart,))
+        idx = B.UInt32Output(nidx, (nidx,), lists=True)
+        start = B.UInt32Output(nstart, (nstart,), lists=True)
         LIB.bs_mesh_copy_strips(self._ptr, idx.address, nidx, start.address, nstart)
         flat, offsets = idx.result(), start.result()
         return [flat[offsets[k]:offsets[k + 1]] for k in range(nstart - 1)]
 
-    def write(self, path: "Union[str, bytes, os.PathLike[str]]", format: Format = "obj") -> None:
-        """Write the mesh to a file: "obj" (Wavefront OBJ), "ply" (binary little-endian),
-        "ply_ascii" or "stl" (binary)."""
-        LIB.bs_mesh_write(self._ptr, _format(format), os.fsencode(path))
+    def write(self, path: A.PathArg, format: FormatArg = Format.OBJ) -> None:
+        """Write the mesh to a file: Format.OBJ ("obj", Wavefront OBJ), Format.PLY ("ply",
+        binary little-endian), Format.PLY_ASCII ("ply_ascii") or Format.STL ("stl", binary).
+        Raises BezsurfIOError (an OSError with ``errno`` and ``filename``) on failure."""
+        fmt = A.mesh_format(format)
+        name = A.path(path)
+        ctypes.set_errno(0)
+        try:
+            LIB.bs_mesh_write(self._ptr, fmt, name)
+        except BezsurfIOError as exc:
+            raise io_error(exc.code, exc.message, exc.function, exc.detail, exc.errno,
+                           os.fsdecode(name)) from None
 
-    def to_bytes(self, format: Format = "obj") -> bytes:
+    def to_bytes(self, format: FormatArg = Format.OBJ) -> bytes:
         """The bytes :meth:`write` would put in a file."""
-        fmt = _format(format)
+        fmt = A.mesh_format(format)
         size = ctypes.c_size_t()
         LIB.bs_mesh_write_memory(self._ptr, fmt, None, 0, ctypes.byref(size))
         buf = ctypes.create_string_buffer(max(size.value, 1))

@@ -2,24 +2,39 @@
 
 import array
 import ctypes
-from typing import Any, List, NamedTuple, Optional, Sequence, Tuple, Union
+from typing import (TYPE_CHECKING, Any, Dict, List, Literal, NamedTuple, Optional, Sequence,
+                    Tuple, Union, overload)
 
+from . import _args as A
 from . import _buffers as B
+from ._buffers import KindOrKinds, Point, PointOrPoints, Points
+from ._enums import Direction, NormalKind
 from ._handle import Handle
 from ._lib import LIB, CCurve
 
-#: Directions for split() and isocurve(); 'u' and 'v' are accepted as well.
-DIR_U = 0
-DIR_V = 1
+if TYPE_CHECKING:
+    import numpy.typing as npt
+
+#: Directions for split(), isocurve() and reverse(); 'u' and 'v' are accepted as well.
+DIR_U = Direction.U
+DIR_V = Direction.V
 
 #: Normal kinds written by the normal evaluators.
-NORMAL_REGULAR = 0
-NORMAL_LIMIT = 1
-NORMAL_UNDEFINED = 2
+NORMAL_REGULAR = NormalKind.REGULAR
+NORMAL_LIMIT = NormalKind.LIMIT
+NORMAL_UNDEFINED = NormalKind.UNDEFINED
 
-Direction = Union[int, str]
-Params = Any  # a real number, a sequence of them, array.array('d'), memoryview or numpy array
-
+#: A direction: Direction.U / Direction.V, 0 / 1, or "u" / "v".
+DirectionArg = Union[Direction, int, str]
+#: Evaluation parameters: a real number, a sequence of them, array.array('d'), memoryview or
+#: numpy array (any real dtype, any stride).
+ParamSeq = Union[Sequence[float], "array.array[float]", memoryview, "npt.NDArray[Any]"]
+Params = Union[float, ParamSeq]
+#: A control net (deg_u+1, deg_v+1, dim), a weight grid, a curve's points or a matrix: nested
+#: sequences of real numbers or a numpy array.
+Nested = Union[Sequence[Any], "npt.NDArray[Any]", memoryview]
+#: An ``out=`` array: a float64 numpy array of the result's shape.
+OutArray = Optional["npt.NDArray[Any]"]
 
 class Curve(NamedTuple):
     """A Bezier curve: its control points and, when rational, its weights (else None).
@@ -31,31 +46,22 @@ class Curve(NamedTuple):
     """
 
     points: Any
-    weights: Any = None
+    weights: Optional[Any] = None
 
 
 class Evaluation(NamedTuple):
     """Results of an evaluation; fields that were not asked for are None.
 
-    Each field is a numpy array (``position``, ``du``, ``dv``: shape (n, dim); ``normal``: (n, 3);
-    ``kind``: uint8 of shape (n,)) when a parameter was a numpy array, else a list of n tuples
-    (``kind``: a list of ints). For scalar u and v the leading n axis is dropped.
+    With numpy each field is a numpy array (``position``, ``du``, ``dv``: float64 of shape
+    (n, dim); ``normal``: (n, 3); ``kind``: uint8 of shape (n,)), else a list of n tuples
+    (``kind``: a list of :class:`NormalKind`). For scalar u and v the leading n axis is dropped.
     """
 
-    position: Any
-    du: Any = None
-    dv: Any = None
-    normal: Any = None
-    kind: Any = None
-
-
-def _direction(d: Direction) -> int:
-    if isinstance(d, str):
-        try:
-            return {"u": DIR_U, "v": DIR_V}[d.lower()]
-        except KeyError:
-            raise ValueError(f"direction must be 'u' or 'v', not {d!r}") from None
-    return int(d)
+    position: PointOrPoints
+    du: Optional[PointOrPoints] = None
+    dv: Optional[PointOrPoints] = None
+    normal: Optional[PointOrPoints] = None
+    kind: Optional[KindOrKinds] = None
 
 
 def _check_requested(derivatives: bool, normals: bool, du_out: Any, dv_out: Any,
@@ -84,9 +90,10 @@ class Patch(Handle):
     The library copies both.
 
     Parameters of the evaluators (u, v) may be real numbers, lists, tuples, ``array.array('d')``,
-    memoryviews of doubles or numpy arrays. With a numpy array among them the results are numpy
-    arrays of shape (n, dim) that the library writes in place (pass ``out=`` to reuse one);
-    otherwise lists of n tuples. u and v outside [0, 1] extrapolate.
+    memoryviews of doubles or numpy arrays. Results are numpy arrays of shape (n, dim) written in
+    place by the library whenever numpy is importable (Fortran order: each coordinate contiguous,
+    the library's fastest layout; pass ``out=`` to reuse an array of any layout), otherwise lists
+    of n tuples. u and v outside [0, 1] extrapolate.
 
     Errors from the library raise :class:`bezsurf.BezsurfError` subclasses. A patch is a context
     manager; ``close()`` releases it at once.
@@ -94,13 +101,14 @@ class Patch(Handle):
     Example::
 
         >>> p = Patch([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
-        >>> p.eval([0.5], [0.5])
-        [(0.5, 0.5, 0.25)]
+        >>> x, y, z = p.eval(0.5, 0.5)
+        >>> print(x, y, z)
+        0.5 0.5 0.25
     """
 
     _destroy = LIB.bs_patch_destroy
 
-    def __init__(self, net: Any, weights: Any = None) -> None:
+    def __init__(self, net: Nested, weights: Optional[Nested] = None) -> None:
         rows, cols, dim, keep, ctrl, w = B.flat_net(net, weights)
         handle = ctypes.c_void_p()
         LIB.bs_patch_create(rows - 1, cols - 1, dim, ctrl, w, ctypes.byref(handle))
@@ -150,7 +158,8 @@ class Patch(Handle):
         shape = self.shape
         buf = array.array("d", bytes(8 * shape[0] * shape[1] * shape[2]))
         LIB.bs_patch_get_ctrl(self._ptr, buf.buffer_info()[0], len(buf), None, 0)
-        return B.nested(buf, shape)
+        net: List[List[Tuple[float, ...]]] = B.nested(buf, shape)
+        return net
 
     @property
     def weights(self) -> Optional[List[List[float]]]:
@@ -162,20 +171,20 @@ class Patch(Handle):
         LIB.bs_patch_get_ctrl(self._ptr, None, 0, buf.buffer_info()[0], len(buf))
         return [list(buf[i * cols:(i + 1) * cols]) for i in range(rows)]
 
-    def ctrl_array(self, out: Any = None) -> Any:
+    def ctrl_array(self, out: OutArray = None) -> "npt.NDArray[Any]":
         """The control net as a numpy array of shape (deg_u+1, deg_v+1, dim), written by the
         library into ``out`` (a C-contiguous float64 array of that shape) or a new array."""
         np = B.need_numpy()
-        arr = out if out is not None else np.empty(self.shape)
+        arr: "npt.NDArray[Any]" = out if out is not None else np.empty(self.shape)
         _check_packed(arr, self.shape, "out")
         LIB.bs_patch_get_ctrl(self._ptr, arr.ctypes.data, arr.size, None, 0)
         return arr
 
-    def weights_array(self, out: Any = None) -> Any:
+    def weights_array(self, out: OutArray = None) -> "npt.NDArray[Any]":
         """The weights as a numpy array of shape (deg_u+1, deg_v+1); all ones when polynomial."""
         np = B.need_numpy()
         shape = self.shape[:2]
-        arr = out if out is not None else np.empty(shape)
+        arr: "npt.NDArray[Any]" = out if out is not None else np.empty(shape)
         _check_packed(arr, shape, "out")
         LIB.bs_patch_get_ctrl(self._ptr, None, 0, arr.ctypes.data, arr.size)
         return arr
@@ -188,10 +197,11 @@ class Patch(Handle):
 
     __copy__ = clone
 
-    def __deepcopy__(self, memo: Any) -> "Patch":
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "Patch":
         return self.clone()
 
-    def __reduce__(self) -> Any:
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # The control data, rebuilt by Patch(net, weights) on load (also for borrowed patches).
         return (Patch, (self.ctrl, self.weights))
 
     def __repr__(self) -> str:
@@ -201,30 +211,62 @@ class Patch(Handle):
         return f"<bezsurf.Patch degree ({self.degree_u}, {self.degree_v}) dim {self.dim} {kind}>"
 
     # ---- evaluation -----------------------------------------------------------------------
+    @overload
+    def eval(self, u: float, v: float, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Point: ...
+
+    @overload
+    def eval(self, u: ParamSeq, v: Params, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, u: Params, v: ParamSeq, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, u: Params, v: Params, *, derivatives: Literal[True], normals: bool = ...,
+             out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+             normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, u: Params, v: Params, *, derivatives: bool = ..., normals: Literal[True],
+             out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+             normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, u: Params, v: Params, *, derivatives: bool = ..., normals: bool = ...,
+             out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+             normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Union[PointOrPoints, Evaluation]: ...
+
     def eval(self, u: Params, v: Params, *, derivatives: bool = False, normals: bool = False,
-             out: Any = None, du_out: Any = None, dv_out: Any = None, normal_out: Any = None,
-             kind_out: Any = None) -> Any:
+             out: OutArray = None, du_out: OutArray = None, dv_out: OutArray = None,
+             normal_out: OutArray = None, kind_out: OutArray = None) -> Any:
         """Evaluate the patch at the n points (u[k], v[k]).
 
         Returns the positions S(u, v), shape (n, dim), unless ``derivatives`` or ``normals`` is
         set; then an :class:`Evaluation` with ``position`` and, on request, the first partial
-        derivatives ``du``, ``dv`` and the unit ``normal`` with its ``kind`` (NORMAL_REGULAR,
-        NORMAL_LIMIT or NORMAL_UNDEFINED; 3-D patches only). Scalar u and v give one point.
+        derivatives ``du``, ``dv`` and the unit ``normal`` with its ``kind`` (a
+        :class:`NormalKind`; 3-D patches only). Scalar u and v give one point.
         ``out``, ``du_out``, ``dv_out`` (float64, shape (n, dim)), ``normal_out`` (n, 3) and
-        ``kind_out`` (uint8, n) are numpy arrays written in place instead of new results.
+        ``kind_out`` (uint8, n) are numpy arrays written in place instead of new results; they
+        must not overlap each other or the inputs.
         """
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
-        call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out))
+        call = _Call(u, v)
         pos = call.output(self.dim, out, "out")
         dus = dvs = nrm = kinds = None
         if derivatives:
             dus = call.output(self.dim, du_out, "du_out")
             dvs = call.output(self.dim, dv_out, "dv_out")
+        if normals:
+            nrm = call.output(3, normal_out, "normal_out")
+            kinds = call.kinds(kind_out)
+        call.check_disjoint()
         # Normals first: their call fails (dimension) before anything is written, so a failure
         # leaves every output untouched, as a single C call would.
         if normals:
-            nrm = call.output(3, normal_out, "normal_out")
-            kinds = B.KindOutput(call.n, call.numpy, kind_out)
+            assert nrm is not None and kinds is not None
             LIB.bs_patch_eval_normal(self._ptr, call.n, call.u, call.v,
                                      None if derivatives else pos.views, nrm.views, kinds.address)
         if derivatives or not normals:
@@ -235,36 +277,75 @@ class Patch(Handle):
         return Evaluation(*(call.finish(x.result() if x is not None else None)
                             for x in (pos, dus, dvs, nrm, kinds)))
 
-    def eval_deriv(self, ku: int, kv: int, u: Params, v: Params, *, out: Any = None) -> Any:
+    @overload
+    def eval_deriv(self, ku: int, kv: int, u: float, v: float, *,
+                   out: OutArray = ...) -> Point: ...
+
+    @overload
+    def eval_deriv(self, ku: int, kv: int, u: ParamSeq, v: Params, *,
+                   out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval_deriv(self, ku: int, kv: int, u: Params, v: ParamSeq, *,
+                   out: OutArray = ...) -> Points: ...
+
+    def eval_deriv(self, ku: int, kv: int, u: Params, v: Params, *,
+                   out: OutArray = None) -> Any:
         """The mixed partial derivative d^(ku+kv) S / du^ku dv^kv at the n points (u[k], v[k]).
 
         Orders beyond the degree give zero (polynomial patches); (0, 0) gives positions. Result
         shape (n, dim), like :meth:`eval`.
         """
-        call = _Call(u, v, (out,))
+        ku = A.integer(ku, "ku", 0, A.UINT_MAX)
+        kv = A.integer(kv, "kv", 0, A.UINT_MAX)
+        call = _Call(u, v)
         res = call.output(self.dim, out, "out")
+        call.check_disjoint()
         LIB.bs_patch_eval_deriv(self._ptr, ku, kv, call.n, call.u, call.v, res.views)
         return call.finish(res.result())
 
-    def eval_normal(self, u: Params, v: Params, *, out: Any = None, normal_out: Any = None,
-                    kind_out: Any = None) -> Evaluation:
+    def eval_normal(self, u: Params, v: Params, *, out: OutArray = None,
+                    normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
         """Positions, unit normals and normal kinds at the n points of a 3-D patch.
 
         Returns an :class:`Evaluation` (position, normal, kind set). Where S_u x S_v vanishes
-        the limit normal is given (kind NORMAL_LIMIT); where no normal exists, (0, 0, 0) with
-        kind NORMAL_UNDEFINED.
+        the limit normal is given (kind NormalKind.LIMIT); where no normal exists, (0, 0, 0) with
+        kind NormalKind.UNDEFINED.
         """
-        call = _Call(u, v, (out, normal_out, kind_out))
+        call = _Call(u, v)
         pos = call.output(self.dim, out, "out")
         nrm = call.output(3, normal_out, "normal_out")
-        kinds = B.KindOutput(call.n, call.numpy, kind_out)
-        LIB.bs_patch_eval_normal(self._ptr, call.n, call.u, call.v, pos.views, nrm.views, kinds.address)
+        kinds = call.kinds(kind_out)
+        call.check_disjoint()
+        LIB.bs_patch_eval_normal(self._ptr, call.n, call.u, call.v, pos.views, nrm.views,
+                                 kinds.address)
         return Evaluation(call.finish(pos.result()), None, None, call.finish(nrm.result()),
                           call.finish(kinds.result()))
 
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, derivatives: Literal[False] = ...,
+                  normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, derivatives: Literal[True], normals: bool = ...,
+                  out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+                  normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: Literal[True],
+                  out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+                  normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: bool = ...,
+                  out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
+                  normal_out: OutArray = ...,
+                  kind_out: OutArray = ...) -> Union[Points, Evaluation]: ...
+
     def eval_grid(self, u: Params, v: Params, *, derivatives: bool = False,
-                  normals: bool = False, out: Any = None, du_out: Any = None,
-                  dv_out: Any = None, normal_out: Any = None, kind_out: Any = None) -> Any:
+                  normals: bool = False, out: OutArray = None, du_out: OutArray = None,
+                  dv_out: OutArray = None, normal_out: OutArray = None,
+                  kind_out: OutArray = None) -> Any:
         """Evaluate on the tensor grid of every u[a] with every v[b].
 
         Point (a, b) is row a*len(v) + b of results of shape (len(u)*len(v), dim) (for numpy,
@@ -272,7 +353,7 @@ class Patch(Handle):
         :class:`Evaluation` when ``derivatives`` or ``normals`` is set, as :meth:`eval` does.
         """
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
-        call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out), grid=True)
+        call = _Call(u, v, grid=True)
         pos = call.output(self.dim, out, "out")
         dus = dvs = nrm = kinds = None
         if derivatives:
@@ -280,7 +361,8 @@ class Patch(Handle):
             dvs = call.output(self.dim, dv_out, "dv_out")
         if normals:
             nrm = call.output(3, normal_out, "normal_out")
-            kinds = B.KindOutput(call.n, call.numpy, kind_out)
+            kinds = call.kinds(kind_out)
+        call.check_disjoint()
         LIB.bs_patch_eval_grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views,
                                dus.views if dus else None, dvs.views if dvs else None,
                                nrm.views if nrm else None, kinds.address if kinds else None)
@@ -290,51 +372,61 @@ class Patch(Handle):
                             for x in (pos, dus, dvs, nrm, kinds)))
 
     # ---- exact operations -----------------------------------------------------------------
-    def split(self, direction: Direction, t: float) -> Tuple["Patch", "Patch"]:
+    def split(self, direction: DirectionArg, t: float) -> Tuple["Patch", "Patch"]:
         """Split at t (0 < t < 1) along ``direction`` ('u' or 'v') into the parts over [0, t]
         and [t, 1]."""
+        d = A.direction(direction)
+        t = A.real(t, "t")
         lo, hi = ctypes.c_void_p(), ctypes.c_void_p()
-        LIB.bs_patch_split(self._ptr, _direction(direction), t, ctypes.byref(lo), ctypes.byref(hi))
+        LIB.bs_patch_split(self._ptr, d, t, ctypes.byref(lo), ctypes.byref(hi))
         return Patch._wrap(lo.value), Patch._wrap(hi.value)
 
     def split4(self, u: float, v: float) -> Tuple["Patch", "Patch", "Patch", "Patch"]:
         """Split at (u, v) into four patches: [u low, v low], [u high, v low], [u low, v high],
         [u high, v high]."""
+        u, v = A.real(u, "u"), A.real(v, "v")
         out = (ctypes.c_void_p * 4)()
         LIB.bs_patch_split4(self._ptr, u, v, out)
-        return tuple(Patch._wrap(h) for h in out)  # type: ignore[return-value]
+        a, b, c, d = (Patch._wrap(h) for h in out)
+        return a, b, c, d
 
     def subpatch(self, u0: float, u1: float, v0: float, v1: float) -> "Patch":
         """The patch over [u0, u1] x [v0, v1]; u0 > u1 (v0 > v1) reverses that direction."""
+        args = [A.real(x, name) for x, name in ((u0, "u0"), (u1, "u1"), (v0, "v0"), (v1, "v1"))]
         out = ctypes.c_void_p()
-        LIB.bs_patch_subpatch(self._ptr, u0, u1, v0, v1, ctypes.byref(out))
+        LIB.bs_patch_subpatch(self._ptr, *args, ctypes.byref(out))
         return Patch._wrap(out.value)
 
     def elevate(self, raise_u: int, raise_v: int) -> "Patch":
         """The same surface with its degrees raised by raise_u and raise_v."""
+        ru = A.integer(raise_u, "raise_u")
+        rv = A.integer(raise_v, "raise_v")
         out = ctypes.c_void_p()
-        LIB.bs_patch_elevate(self._ptr, raise_u, raise_v, ctypes.byref(out))
+        LIB.bs_patch_elevate(self._ptr, ru, rv, ctypes.byref(out))
         return Patch._wrap(out.value)
 
     def derivative(self, ku: int, kv: int) -> "Patch":
         """The hodograph patch of d^(ku+kv) S / du^ku dv^kv (polynomial patches only)."""
+        ku = A.integer(ku, "ku", 0, A.UINT_MAX)
+        kv = A.integer(kv, "kv", 0, A.UINT_MAX)
         out = ctypes.c_void_p()
         LIB.bs_patch_derivative(self._ptr, ku, kv, ctypes.byref(out))
         return Patch._wrap(out.value)
 
-    def isocurve(self, direction: Direction, t: float, *, numpy: bool = False) -> Curve:
+    def isocurve(self, direction: DirectionArg, t: float) -> Curve:
         """Control points and weights of an iso-parameter curve.
 
         Direction 'u': the curve u = t, a Bezier curve in v of degree degree_v; 'v': v = t, in u.
-        Returns a :class:`Curve` (points, weights): points a list of tuples (or a numpy array of
-        shape (degree+1, dim) when ``numpy`` is true), weights a list (array) or None when the
-        patch is polynomial.
+        Returns a :class:`Curve` (points, weights): with numpy, points a float64 array of shape
+        (degree+1, dim) and weights an array; else a list of tuples and a list. Weights are None
+        when the patch is polynomial.
         """
-        d = _direction(direction)
+        d = A.direction(direction)
+        t = A.real(t, "t")
         npts = (self.degree_v if d == DIR_U else self.degree_u) + 1
         dim = self.dim
         rational = self.rational
-        if numpy:
+        if B.have_numpy():
             np = B.need_numpy()
             pts: Any = np.empty((npts, dim))
             w: Any = np.empty(npts) if rational else None
@@ -344,7 +436,7 @@ class Patch(Handle):
             w = array.array("d", bytes(8 * npts)) if rational else None
             paddr, waddr = pts.buffer_info()[0], (w.buffer_info()[0] if w is not None else None)
         LIB.bs_patch_isocurve(self._ptr, d, t, paddr, npts * dim, waddr, npts if rational else 0)
-        if numpy:
+        if B.have_numpy():
             return Curve(pts, w)
         return Curve(B.nested(pts, (npts, dim)), list(w) if w is not None else None)
 
@@ -356,11 +448,11 @@ class Patch(Handle):
         LIB.bs_patch_bounds(self._ptr, lo.buffer_info()[0], hi.buffer_info()[0])
         return tuple(lo), tuple(hi)
 
-    def transform(self, affine: Any) -> "Patch":
+    def transform(self, affine: Nested) -> "Patch":
         """The patch with x -> A x + b applied to its net. ``affine`` is dim rows of dim+1
         numbers, [A | b] (nested sequence or numpy array of shape (dim, dim+1))."""
         dim = self.dim
-        keep, address = B.packed_doubles(affine, dim * (dim + 1), "affine")
+        keep, address = B.packed_doubles(affine, (dim, dim + 1), "affine")
         out = ctypes.c_void_p()
         LIB.bs_patch_transform(self._ptr, address, ctypes.byref(out))
         del keep
@@ -373,15 +465,16 @@ class Patch(Handle):
         LIB.bs_patch_swap_uv(self._ptr, ctypes.byref(out))
         return Patch._wrap(out.value)
 
-    def reverse(self, direction: Direction) -> "Patch":
+    def reverse(self, direction: DirectionArg) -> "Patch":
         """The same surface with one direction reversed: 'u' gives Q(u, v) = P(1-u, v),
         'v' gives Q(u, v) = P(u, 1-v)."""
+        d = A.direction(direction)
         out = ctypes.c_void_p()
-        LIB.bs_patch_reverse(self._ptr, _direction(direction), ctypes.byref(out))
+        LIB.bs_patch_reverse(self._ptr, d, ctypes.byref(out))
         return Patch._wrap(out.value)
 
     @classmethod
-    def ruled(cls, c0: Any, c1: Any) -> "Patch":
+    def ruled(cls, c0: Union[Curve, Nested], c1: Union[Curve, Nested]) -> "Patch":
         """The ruled patch joining curve c0 (at v = 0) to curve c1 (at v = 1) by straight
         segments: degree (d, 1), d the larger curve degree. Curves are :class:`Curve` values or
         bare point sequences; rational curves give a rational patch."""
@@ -391,11 +484,13 @@ class Patch(Handle):
         return cls._wrap(out.value)
 
     @classmethod
-    def coons(cls, v0: Any, v1: Any, u0: Any, u1: Any) -> "Patch":
+    def coons(cls, v0: Union[Curve, Nested], v1: Union[Curve, Nested], u0: Union[Curve, Nested],
+              u1: Union[Curve, Nested]) -> "Patch":
         """The bilinearly blended Coons patch of four polynomial boundary curves:
         S(u, 0) = v0(u), S(u, 1) = v1(u), S(0, v) = u0(v), S(1, v) = u1(v). The corners must
         meet (IncompatibleError otherwise); rational curves raise UnsupportedError."""
-        curves = [_CurveArg(c, name) for c, name in ((v0, "v0"), (v1, "v1"), (u0, "u0"), (u1, "u1"))]
+        curves = [_CurveArg(c, name)
+                  for c, name in ((v0, "v0"), (v1, "v1"), (u0, "u0"), (u1, "u1"))]
         out = ctypes.c_void_p()
         LIB.bs_patch_coons(*(ctypes.byref(c.c) for c in curves), ctypes.byref(out))
         return cls._wrap(out.value)
@@ -407,34 +502,48 @@ class _CurveArg:
     def __init__(self, curve: Any, what: str) -> None:
         if isinstance(curve, Curve):
             points, weights = curve.points, curve.weights
+            pname = f"{what}.points"
         else:
             points, weights = curve, None
-        rows, _, dim, keep, ctrl, w = B.flat_net([points], None if weights is None else [weights])
-        del rows
-        npts = len(points)
+            pname = what
+        (npts, dim), ctrl = B.nested_doubles(points, 2, pname)
+        if npts == 0:
+            raise ValueError(f"{pname} needs at least one point")
+        w_addr = None
+        keep: List[Any] = [ctrl]
+        if weights is not None:
+            (nw,), w = B.nested_doubles(weights, 1, f"{what}.weights")
+            if nw != npts:
+                raise ValueError(f"{what}.weights must hold {npts} numbers, got {nw}")
+            keep.append(w)
+            w_addr = w.buffer_info()[0]
         self.keep = keep
-        self.c = CCurve(npts - 1, dim, ctrl, w)
+        self.c = CCurve(npts - 1, dim, ctrl.buffer_info()[0], w_addr)
 
 
 def _check_packed(arr: Any, shape: Sequence[int], what: str) -> None:
     np = B.need_numpy()
-    if not isinstance(arr, np.ndarray) or arr.dtype != np.float64 or arr.shape != tuple(shape) \
+    if not isinstance(arr, np.ndarray):
+        raise TypeError(f"{what} must be a numpy array, not {type(arr).__name__}")
+    if arr.dtype != np.float64 or arr.shape != tuple(shape) \
             or not arr.flags.c_contiguous or not arr.flags.writeable:
         raise ValueError(f"{what} must be a writable C-contiguous float64 array of shape "
                          f"{tuple(shape)}")
 
 
 class _Call:
-    """The parameter views of one evaluation call and how its results are shaped."""
+    """The parameter views of one evaluation call, its outputs and how its results are shaped."""
 
-    def __init__(self, u: Params, v: Params, outs: Sequence[Any], grid: bool = False) -> None:
+    def __init__(self, u: Params, v: Params, grid: bool = False,
+                 inputs: Sequence[Tuple[str, Any]] = ()) -> None:
         self.scalar = (not grid) and B.is_scalar(u) and B.is_scalar(v)
         du = B.doubles(u, "u")
         dv = B.doubles(v, "v")
-        self.keep = (du, dv)
-        self.numpy = du.numpy or dv.numpy or any(B.is_ndarray(o) for o in outs)
+        self.inputs: List[Tuple[str, Any]] = [("u", du.keep), ("v", dv.keep)] + list(inputs)
+        self.given: List[Tuple[str, Any]] = []
         self.u = du.cview()
         self.v = dv.cview()
+        self.nu = self.nv = 0
         if grid:
             self.nu, self.nv = du.count, dv.count
             self.n = self.nu * self.nv
@@ -444,7 +553,20 @@ class _Call:
             self.n = du.count
 
     def output(self, k: int, out: Any, what: str) -> B.Output:
-        return B.Output(self.n, k, self.numpy, out, what)
+        res = B.Output(self.n, k, out, what)
+        if out is not None:
+            self.given.append((what, out))
+        return res
+
+    def kinds(self, out: Any) -> B.KindOutput:
+        res = B.KindOutput(self.n, out)
+        if out is not None:
+            self.given.append(("kind_out", out))
+        return res
+
+    def check_disjoint(self) -> None:
+        if self.given:
+            B.check_disjoint(self.given, self.inputs)
 
     def finish(self, value: Any) -> Any:
         return _squeeze(value) if self.scalar else value

@@ -1,22 +1,29 @@
 """The Surface class: an ordered set of patches of one dimension (a quilt such as the teapot)."""
 
 import ctypes
-import os
 import numbers
-from typing import Any, Iterable, Iterator, List, NamedTuple, Optional, Union
+import os
+from typing import (Any, Dict, Iterable, Iterator, List, Literal, NamedTuple, Optional, Tuple,
+                    Union, overload)
 
+from . import _args as A
 from . import _buffers as B
-from ._errors import BezsurfError, BezsurfIOError, ParseError
+from ._buffers import Point, PointOrPoints, Points
+from ._enums import SIDES, Side
+from ._errors import BezsurfError, BezsurfIOError, ParseError, io_error
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .mesh import Mesh
-from .patch import Evaluation, Patch, _Call, _check_requested
+from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
 
 #: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
-SIDE_V0 = 0
-SIDE_U1 = 1
-SIDE_V1 = 2
-SIDE_U0 = 3
+SIDE_V0 = Side.V0
+SIDE_U1 = Side.U1
+SIDE_V1 = Side.V1
+SIDE_U0 = Side.U0
+
+#: Patch ids of a scattered evaluation: one id for all points, a sequence or a numpy array.
+Ids = Union[int, Iterable[int], "B.UInt32Array"]
 
 
 class EdgeContinuity(NamedTuple):
@@ -24,8 +31,8 @@ class EdgeContinuity(NamedTuple):
 
     patch_a: int
     patch_b: int
-    side_a: int
-    side_b: int
+    side_a: Side
+    side_b: Side
     reversed: bool
     c1: bool
     flipped: bool
@@ -39,7 +46,7 @@ class OpenEdge(NamedTuple):
     """A patch side that no other patch shares."""
 
     patch: int
-    side: int
+    side: Side
 
 
 class Continuity(NamedTuple):
@@ -48,12 +55,10 @@ class Continuity(NamedTuple):
     edges: List[EdgeContinuity]
     open_edges: List[OpenEdge]
 
-PathLike = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
-
 
 def builtin_names() -> List[str]:
     """Names of the built-in surfaces ("teapot", "teacup", "teaspoon", ...)."""
-    names = []
+    names: List[str] = []
     while True:
         name = LIB.bs_builtin_name(len(names))
         if name is None:
@@ -61,15 +66,19 @@ def builtin_names() -> List[str]:
         names.append(name.decode("ascii"))
 
 
-def _located(exc: BezsurfError, err: CParseError) -> BezsurfError:
-    """The parse or I/O error with the library's position and reason attached."""
+def _located(exc: BezsurfError, err: CParseError, filename: Optional[str] = None) -> BezsurfError:
+    """The parse or I/O error with the library's position and reason, and the file, attached."""
     reason = err.message.decode("utf-8", "replace") or None
     if isinstance(exc, ParseError):
         return ParseError(exc.code, exc.message, exc.function, reason,
-                          err.line or None, err.column or None)
+                          err.line or None, err.column or None, filename)
     if isinstance(exc, BezsurfIOError):
-        return BezsurfIOError(exc.code, exc.message, exc.function, reason)
+        return io_error(exc.code, exc.message, exc.function, reason, exc.errno, filename)
     return exc
+
+
+def _with_file(exc: BezsurfIOError, filename: str) -> BezsurfIOError:
+    return io_error(exc.code, exc.message, exc.function, exc.detail, exc.errno, filename)
 
 
 class Surface(Handle):
@@ -83,10 +92,16 @@ class Surface(Handle):
     _destroy = LIB.bs_surface_destroy
 
     def __init__(self, patches: Iterable[Patch] = ()) -> None:
+        if not isinstance(patches, Iterable):
+            raise TypeError(f"patches must be an iterable of bezsurf.Patch, not "
+                            f"{type(patches).__name__}")
+        items = list(patches)
+        for i, p in enumerate(items):
+            A.instance(p, Patch, f"patches[{i}]")
         handle = ctypes.c_void_p()
         LIB.bs_surface_create(ctypes.byref(handle))
         self._adopt(handle.value)  # type: ignore[arg-type]
-        for p in patches:
+        for p in items:
             self.add(p)
 
     @classmethod
@@ -99,6 +114,8 @@ class Surface(Handle):
     def builtin(cls, name: str) -> "Surface":
         """A new copy of a built-in surface: "teapot" (32 bicubic patches, Z up), "teacup"
         (26, Y up) or "teaspoon" (16, Y up), Newell's tea set. See :func:`builtin_names`."""
+        if not isinstance(name, str):
+            raise TypeError(f"name must be a str, not {type(name).__name__}")
         out = ctypes.c_void_p()
         LIB.bs_surface_create_builtin(name.encode("utf-8"), ctypes.byref(out))
         return cls._wrap(out.value)
@@ -107,7 +124,12 @@ class Surface(Handle):
     def from_bpt(cls, text: Union[str, bytes]) -> "Surface":
         """Parse .bpt text (str or bytes) into a new surface of 3-D patches.
         Raises ParseError with ``line``, ``column`` and ``detail`` when the text is malformed."""
-        data = text.encode("utf-8") if isinstance(text, str) else bytes(text)
+        if isinstance(text, str):
+            data = text.encode("utf-8")
+        elif isinstance(text, (bytes, bytearray, memoryview)):
+            data = bytes(text)
+        else:
+            raise TypeError(f"text must be a str or bytes, not {type(text).__name__}")
         err = CParseError()
         out = ctypes.c_void_p()
         try:
@@ -117,15 +139,18 @@ class Surface(Handle):
         return cls._wrap(out.value)
 
     @classmethod
-    def load(cls, path: PathLike) -> "Surface":
-        """Read a .bpt file. Raises BezsurfIOError (an OSError) when it cannot be read and
-        ParseError (with line and column) when it is malformed."""
+    def load(cls, path: A.PathArg) -> "Surface":
+        """Read a .bpt file. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``,
+        e.g. a FileNotFoundError) when it cannot be read and ParseError (with line, column and
+        filename) when it is malformed."""
+        name = A.path(path)
         err = CParseError()
         out = ctypes.c_void_p()
+        ctypes.set_errno(0)
         try:
-            LIB.bs_surface_read_bpt_file(os.fsencode(path), ctypes.byref(err), ctypes.byref(out))
+            LIB.bs_surface_read_bpt_file(name, ctypes.byref(err), ctypes.byref(out))
         except BezsurfError as exc:
-            raise _located(exc, err) from None
+            raise _located(exc, err, os.fsdecode(name)) from None
         return cls._wrap(out.value)
 
     def to_bpt(self) -> str:
@@ -136,13 +161,20 @@ class Surface(Handle):
         LIB.bs_surface_write_bpt(self._ptr, buf, size.value, ctypes.byref(size))
         return buf.value.decode("ascii")
 
-    def save(self, path: PathLike) -> None:
-        """Write the surface as a .bpt file (created or truncated)."""
-        LIB.bs_surface_write_bpt_file(self._ptr, os.fsencode(path))
+    def save(self, path: A.PathArg) -> None:
+        """Write the surface as a .bpt file (created or truncated). Raises BezsurfIOError (an
+        OSError with ``errno`` and ``filename``) when the file cannot be written."""
+        name = A.path(path)
+        ctypes.set_errno(0)
+        try:
+            LIB.bs_surface_write_bpt_file(self._ptr, name)
+        except BezsurfIOError as exc:
+            raise _with_file(exc, os.fsdecode(name)) from None
 
     def add(self, patch: Patch) -> int:
         """Append a copy of ``patch``; returns its index (patch id). Raises IncompatibleError if
         its dimension differs from the surface's."""
+        A.instance(patch, Patch, "patch")
         index = ctypes.c_size_t()
         LIB.bs_surface_add(self._ptr, patch._ptr, ctypes.byref(index))
         return index.value
@@ -155,8 +187,12 @@ class Surface(Handle):
 
     __copy__ = clone
 
-    def __deepcopy__(self, memo: Any) -> "Surface":
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "Surface":
         return self.clone()
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        # The patches' control data, rebuilt by Surface(patches) on load.
+        return (Surface, (list(self),))
 
     @property
     def dim(self) -> int:
@@ -166,8 +202,22 @@ class Surface(Handle):
     def __len__(self) -> int:
         return int(LIB.bs_surface_count(self._ptr))
 
-    def __getitem__(self, index: int) -> Patch:
+    @overload
+    def __getitem__(self, index: int) -> Patch: ...
+
+    @overload
+    def __getitem__(self, index: slice) -> "Surface": ...
+
+    def __getitem__(self, index: Union[int, slice]) -> Union[Patch, "Surface"]:
+        """``surface[i]``: patch i, borrowed from the surface (negative i counts from the end).
+        ``surface[a:b:c]``: a new surface holding copies of those patches, renumbered from 0."""
         n = len(self)
+        if isinstance(index, slice):
+            return Surface([self[i] for i in range(*index.indices(n))])
+        if isinstance(index, bool) or not isinstance(index, numbers.Integral) and \
+                not hasattr(index, "__index__"):
+            raise TypeError(f"surface indices must be integers or slices, not "
+                            f"{type(index).__name__}")
         i = index.__index__()
         if i < 0:
             i += n
@@ -181,19 +231,51 @@ class Surface(Handle):
             yield self[i]
 
     # ---- evaluation --------------------------------------------------------------------------
-    def eval(self, ids: Any, u: Any, v: Any, *, derivatives: bool = False, normals: bool = False,
-             out: Any = None, du_out: Any = None, dv_out: Any = None, normal_out: Any = None,
-             kind_out: Any = None) -> Any:
+    @overload
+    def eval(self, ids: int, u: float, v: float, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Point: ...
+
+    @overload
+    def eval(self, ids: Ids, u: ParamSeq, v: Params, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: ParamSeq, *, derivatives: Literal[False] = ...,
+             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: Literal[True],
+             normals: bool = ..., out: OutArray = ..., du_out: OutArray = ...,
+             dv_out: OutArray = ..., normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = ...,
+             normals: Literal[True], out: OutArray = ..., du_out: OutArray = ...,
+             dv_out: OutArray = ..., normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Evaluation: ...
+
+    @overload
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = ...,
+             normals: bool = ..., out: OutArray = ..., du_out: OutArray = ...,
+             dv_out: OutArray = ..., normal_out: OutArray = ...,
+             kind_out: OutArray = ...) -> Union[PointOrPoints, Evaluation]: ...
+
+    def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = False,
+             normals: bool = False, out: OutArray = None, du_out: OutArray = None,
+             dv_out: OutArray = None, normal_out: OutArray = None,
+             kind_out: OutArray = None) -> Any:
         """Evaluate at n scattered points: point k lies on patch ids[k] at (u[k], v[k]).
 
         ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
-        Results and keyword arguments as :meth:`Patch.eval`; sorting points by id is fastest.
+        Results and keyword arguments as :meth:`Patch.eval` (positions of shape (n, dim), or an
+        :class:`Evaluation`); sorting points by id is fastest.
         """
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
-        call = _Call(u, v, (out, du_out, dv_out, normal_out, kind_out, ids))
-        if isinstance(ids, numbers.Integral) and not call.scalar:
+        call = _Call(u, v, inputs=[("ids", ids)])
+        if isinstance(ids, numbers.Integral) and not isinstance(ids, bool) and not call.scalar:
             ids = [int(ids)] * call.n
-        keep, id_addr, nid, _ = B.uint32s(ids, "ids")
+        keep, id_addr, nid = B.uint32s(ids, "ids")
         if nid != call.n:
             raise ValueError(f"ids and u must have the same length ({nid} != {call.n})")
         dim = self.dim
@@ -202,9 +284,12 @@ class Surface(Handle):
         if derivatives:
             dus = call.output(dim, du_out, "du_out")
             dvs = call.output(dim, dv_out, "dv_out")
-        if normals:  # first, so that a failure leaves every output untouched
+        if normals:
             nrm = call.output(3, normal_out, "normal_out")
-            kinds = B.KindOutput(call.n, call.numpy, kind_out)
+            kinds = call.kinds(kind_out)
+        call.check_disjoint()
+        if normals:  # first, so that a failure leaves every output untouched
+            assert nrm is not None and kinds is not None
             LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
                                        None if derivatives else pos.views, nrm.views,
                                        kinds.address)
@@ -217,10 +302,12 @@ class Surface(Handle):
         return Evaluation(*(call.finish(x.result() if x is not None else None)
                             for x in (pos, dus, dvs, nrm, kinds)))
 
-    def eval_normal(self, ids: Any, u: Any, v: Any, **outputs: Any) -> Evaluation:
+    def eval_normal(self, ids: Ids, u: Params, v: Params, *, out: OutArray = None,
+                    normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
         """Positions, unit normals and kinds at scattered points of a 3-D surface
         (``eval(ids, u, v, normals=True)``)."""
-        return self.eval(ids, u, v, normals=True, **outputs)  # type: ignore[no-any-return]
+        return self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
+                         kind_out=kind_out)
 
     def continuity(self, tol: float = 1e-9, samples: int = 32) -> Continuity:
         """Shared and open edges of a 3-D surface and the continuity across each shared edge.
@@ -229,6 +316,8 @@ class Surface(Handle):
         (1..4096) normals per edge measure the G1 angle. Returns a :class:`Continuity` of
         :class:`EdgeContinuity` and :class:`OpenEdge` lists.
         """
+        tol = A.real(tol, "tol")
+        samples = A.integer(samples, "samples")
         n_edges, n_open = ctypes.c_size_t(), ctypes.c_size_t()
         LIB.bs_surface_continuity(self._ptr, tol, samples, None, 0, ctypes.byref(n_edges),
                                   None, 0, ctypes.byref(n_open))
@@ -237,28 +326,27 @@ class Surface(Handle):
         LIB.bs_surface_continuity(self._ptr, tol, samples, edges, n_edges.value,
                                   ctypes.byref(n_edges), opens, n_open.value, ctypes.byref(n_open))
         return Continuity(
-            [EdgeContinuity(e.patch_a, e.patch_b, e.side_a, e.side_b, bool(e.reversed), bool(e.c1),
-                            bool(e.flipped), e.samples, e.c0_gap, e.g1_angle, e.c1_defect)
+            [EdgeContinuity(e.patch_a, e.patch_b, SIDES[e.side_a], SIDES[e.side_b],
+                            bool(e.reversed), bool(e.c1), bool(e.flipped), e.samples, e.c0_gap,
+                            e.g1_angle, e.c1_defect)
              for e in edges[: n_edges.value]],
-            [OpenEdge(o.patch, o.side) for o in opens[: n_open.value]])
+            [OpenEdge(o.patch, SIDES[o.side]) for o in opens[: n_open.value]])
 
     # ---- tessellation --------------------------------------------------------------------------
     def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False) -> Mesh:
         """A crack-free triangle mesh with nu x nv segments per patch (nv defaults to nu);
         ``strips`` also builds triangle strips."""
-        out = ctypes.c_void_p()
-        LIB.bs_surface_tessellate_uniform(self._ptr, nu, nu if nv is None else nv,
-                                          2 if strips else 0, ctypes.byref(out))
-        return Mesh._wrap(out.value)
+        nu = A.integer(nu, "nu")
+        nv = nu if nv is None else A.integer(nv, "nv")
+        return Mesh._tessellate(self.clone(), "uniform", (nu, nv, 2 if strips else 0))
 
     def tessellate_adaptive(self, tolerance: float, *, relative: bool = False,
                             strips: bool = False) -> Mesh:
         """A crack-free mesh whose triangles lie within ``tolerance`` of the surface (a distance,
         or with ``relative`` a fraction of the control points' bounding-box diagonal)."""
-        out = ctypes.c_void_p()
+        tolerance = A.real(tolerance, "tolerance")
         flags = (1 if relative else 0) | (2 if strips else 0)
-        LIB.bs_surface_tessellate_adaptive(self._ptr, tolerance, flags, ctypes.byref(out))
-        return Mesh._wrap(out.value)
+        return Mesh._tessellate(self.clone(), "adaptive", (tolerance, flags))
 
     def __repr__(self) -> str:
         if self.closed:

@@ -34,3 +34,31 @@ NET = [[[1, 0, 2], [1, 2, 4], [1, 3, 2]],
 def bilinear():
     """S(u,v) = (u, v, u*v): the hyperbolic paraboloid as a degree (1,1) patch."""
     return bezsurf.Patch([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+
+
+def plain(x):
+    """A result as plain Python values: numpy arrays become what the binding returns without
+    numpy (2-D: a list of tuples; 1-D floats: a tuple; 1-D integers: a list), recursively."""
+    if numpy is not None:
+        if isinstance(x, numpy.ndarray):
+            if x.ndim == 2:
+                return [tuple(r) for r in x.tolist()]
+            if x.ndim == 1:
+                return tuple(x.tolist()) if x.dtype.kind == "f" else x.tolist()
+            return x.tolist()
+        if isinstance(x, numpy.generic):
+            return x.item()
+    if isinstance(x, list):
+        return [plain(e) for e in x]
+    if isinstance(x, tuple):
+        return type(x)(*(plain(e) for e in x)) if hasattr(x, "_fields") else \
+            tuple(plain(e) for e in x)
+    return x
+
+
+class PlainTestCase(unittest.TestCase):
+    """assertEqual compares results as plain Python values, so that one test checks the same
+    values whether the binding returns numpy arrays (numpy importable) or lists."""
+
+    def assertEqual(self, first, second, msg=None):
+        super().assertEqual(plain(first), plain(second), msg)

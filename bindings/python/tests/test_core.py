@@ -103,6 +103,36 @@ class LoaderTest(unittest.TestCase):
         self.assertIn("ImportError", r.stderr)
         self.assertIn("libbezsurf.so.1", r.stderr)
 
+    def test_package_directory_before_search_path(self):
+        with tempfile.TemporaryDirectory() as d:
+            shutil.copytree(os.path.join(PACKAGE_DIR, "bezsurf"), os.path.join(d, "bezsurf"))
+            bundled = os.path.join(d, "bezsurf", "libbezsurf.so.1")
+            shutil.copy(LIBRARY, bundled)
+            r = run_import({"PYTHONPATH": d, "LD_LIBRARY_PATH": os.path.dirname(LIBRARY)},
+                           "import bezsurf; print(bezsurf.library_path())")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stdout.strip(), bundled)
+
+    def test_search_order(self):
+        saved = os.environ.pop("BEZSURF_LIBRARY", None), sys.prefix
+        try:
+            sys.prefix = "/opt/venv"
+            paths = _lib.search_path()
+            os.environ["BEZSURF_LIBRARY"] = "/x/libother.so"
+            self.assertEqual(_lib.search_path(), ["/x/libother.so"])
+        finally:
+            os.environ.pop("BEZSURF_LIBRARY", None)
+            if saved[0] is not None:
+                os.environ["BEZSURF_LIBRARY"] = saved[0]
+            sys.prefix = saved[1]
+        package = os.path.dirname(os.path.abspath(bezsurf.__file__))
+        self.assertEqual(paths[0], os.path.join(package, "libbezsurf.so.1"))
+        self.assertEqual(paths[1], "/opt/venv/lib/libbezsurf.so.1")
+        self.assertLess(paths.index("/opt/venv/lib/libbezsurf.so.1"),
+                        paths.index("/usr/local/lib/libbezsurf.so.1"))
+        self.assertEqual(paths[-1], "libbezsurf.so.1")
+        self.assertTrue(all(p.endswith("libbezsurf.so.1") for p in paths), paths)
+
     def test_missing_library(self):
         r = run_import({"BEZSURF_LIBRARY": "/nonexistent/libbezsurf.so.1"})
         self.assertNotEqual(r.returncode, 0)
@@ -123,6 +153,48 @@ class LoaderTest(unittest.TestCase):
         self.assertIn("major version 2", r.stderr)
 
 
+class BackendTest(unittest.TestCase):
+    """The in-tree build backend takes the metadata from pyproject.toml."""
+
+    @classmethod
+    def setUpClass(cls):
+        import importlib.util
+        spec = importlib.util.spec_from_file_location(
+            "bezsurf_build_under_test", os.path.join(PACKAGE_DIR, "_build", "bezsurf_build.py"))
+        cls.backend = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(cls.backend)
+        with open(os.path.join(PACKAGE_DIR, "pyproject.toml"), encoding="utf-8") as f:
+            cls.pyproject = f.read()
+
+    def test_fallback_toml_parser_agrees_with_tomllib(self):
+        try:
+            import tomllib
+        except ImportError:
+            self.skipTest("tomllib needs Python 3.11")
+        self.assertEqual(self.backend.parse_toml(self.pyproject), tomllib.loads(self.pyproject))
+
+    def test_metadata_from_pyproject(self):
+        project = self.backend.parse_toml(self.pyproject)["project"]
+        meta = self.backend.metadata_text()
+        head, _, body = meta.partition("\n\n")
+        lines = head.splitlines()
+        self.assertIn(f"Version: {bezsurf.__version__}", lines)
+        self.assertIn(f"Summary: {project['description']}", lines)
+        self.assertIn(f"Requires-Python: {project['requires-python']}", lines)
+        self.assertIn(f"License: {project['license']['text']}", lines)
+        self.assertEqual([ln[len("Classifier: "):] for ln in lines if ln.startswith("Classifier: ")],
+                         project["classifiers"])
+        self.assertIn('Requires-Dist: numpy; extra == "numpy"', lines)
+        with open(os.path.join(PACKAGE_DIR, project["readme"]), encoding="utf-8") as f:
+            self.assertEqual(body, f.read())
+
+    def test_bundle_setting(self):
+        self.assertEqual(self.backend._bundle_mode({"bundle": "no"}), "no")
+        with self.assertRaises(ValueError):
+            self.backend._bundle_mode({"bundle": "maybe"})
+        self.assertIsNone(self.backend.build_library("no"))
+
+
 class InstallTest(unittest.TestCase):
     """The package installs offline with the interpreter's own pip (in-tree stdlib backend)."""
 
@@ -132,9 +204,11 @@ class InstallTest(unittest.TestCase):
         except ImportError:
             self.skipTest("pip is not available to this interpreter")
         with tempfile.TemporaryDirectory() as d:
+            # the pure-Python wheel (bundling the library is python_install's job)
             r = subprocess.run([sys.executable, "-m", "pip", "install", "--no-build-isolation",
                                 "--no-index", "--no-cache-dir", "--disable-pip-version-check",
-                                "--target", d, PACKAGE_DIR], capture_output=True, text=True)
+                                "--target", d, PACKAGE_DIR], capture_output=True, text=True,
+                               env=dict(os.environ, BEZSURF_BUNDLE="no"))
             self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
             self.assertTrue(os.path.exists(os.path.join(d, "bezsurf", "py.typed")))
             r = run_import({"PYTHONPATH": d, "BEZSURF_LIBRARY": LIBRARY},

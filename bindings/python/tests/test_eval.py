@@ -7,7 +7,7 @@ import unittest
 
 import bezsurf
 
-from .support import NET, bilinear, needs_numpy, numpy as np, requires
+from .support import PlainTestCase, plain, NET, bilinear, needs_numpy, numpy as np, requires
 
 PARAMS = [(0.0, 0.0), (1.0, 0.0), (0.25, 0.75), (0.5, 0.5), (1.0, 1.0), (-0.5, 2.0)]
 U = [p[0] for p in PARAMS]
@@ -24,7 +24,7 @@ def saddle_normal(u, v):
 
 
 @requires("bs_patch_eval")
-class AcceptanceTest(unittest.TestCase):
+class AcceptanceTest(PlainTestCase):
     def test_acceptance_point_exact(self):
         p = bezsurf.Patch([[[1, 0, 2], [1, 2, 4], [1, 3, 2]], [[2, 1, 0], [2, 2, 2], [2, 4, 0]],
                            [[4, 1, 0], [3, 3, 2], [4, 4, 2]]])
@@ -38,7 +38,7 @@ class AcceptanceTest(unittest.TestCase):
 
 
 @requires("bs_patch_eval", "bs_patch_eval_deriv", "bs_patch_eval_normal")
-class ListEvalTest(unittest.TestCase):
+class ListEvalTest(PlainTestCase):
     def test_positions(self):
         self.assertEqual(bilinear().eval(U, V), [saddle(u, v) for u, v in PARAMS])
 
@@ -136,7 +136,7 @@ class ListEvalTest(unittest.TestCase):
 
 
 @requires("bs_patch_eval_grid")
-class GridTest(unittest.TestCase):
+class GridTest(PlainTestCase):
     def test_grid_order_and_values(self):
         us, vs = [0.0, 0.5, 1.0], [0.25, 0.75]
         got = bilinear().eval_grid(us, vs, derivatives=True, normals=True)
@@ -154,7 +154,7 @@ class GridTest(unittest.TestCase):
 
 @needs_numpy
 @requires("bs_patch_eval", "bs_patch_eval_grid", "bs_patch_eval_normal", "bs_patch_eval_deriv")
-class NumpyEvalTest(unittest.TestCase):
+class NumpyEvalTest(PlainTestCase):
     def setUp(self):
         self.p = bilinear()
         self.u = np.array(U)

@@ -6,7 +6,7 @@ import unittest
 
 import bezsurf
 
-from .support import DATA_DIR, requires
+from .support import PlainTestCase, plain, DATA_DIR, requires
 
 SADDLE_BPT = "1\n1 1\n0 0 0\n0 1 0\n1 0 0\n1 1 1\n"
 
@@ -22,7 +22,7 @@ def first_patch_from_text(path):
 
 @requires("bs_surface_read_bpt", "bs_surface_read_bpt_file", "bs_surface_write_bpt",
           "bs_surface_write_bpt_file", "bs_surface_create_builtin", "bs_builtin_name")
-class BptTest(unittest.TestCase):
+class BptTest(PlainTestCase):
     def test_builtin_names_and_teapot(self):
         self.assertEqual(bezsurf.builtin_names()[:3], ["teapot", "teacup", "teaspoon"])
         with bezsurf.Surface.builtin("teapot") as s:

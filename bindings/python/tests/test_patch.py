@@ -9,10 +9,10 @@ import unittest
 
 import bezsurf
 
-from .support import NET, HAVE_NUMPY, needs_numpy, numpy as np
+from .support import PlainTestCase, plain, NET, HAVE_NUMPY, needs_numpy, numpy as np
 
 
-class CreateTest(unittest.TestCase):
+class CreateTest(PlainTestCase):
     def test_accessors(self):
         with bezsurf.Patch([[[0, 0], [1, 0], [2, 1], [3, 0]], [[0, 1], [1, 1], [2, 2], [3, 3]]]) as p:
             self.assertEqual((p.degree_u, p.degree_v, p.dim), (1, 3, 2))
@@ -71,7 +71,7 @@ class CreateTest(unittest.TestCase):
         self.assertEqual(p.degree_u, bezsurf.MAX_DEGREE)
 
 
-class CopyAndLifetimeTest(unittest.TestCase):
+class CopyAndLifetimeTest(PlainTestCase):
     def test_clone_is_independent(self):
         p = bezsurf.Patch(NET, [[1, 2, 1]] * 3)
         q = p.clone()
@@ -146,7 +146,7 @@ class CopyAndLifetimeTest(unittest.TestCase):
 
 
 @needs_numpy
-class NumpyCtrlTest(unittest.TestCase):
+class NumpyCtrlTest(PlainTestCase):
     def test_numpy_net_any_layout_and_dtype(self):
         a = np.array(NET, dtype=np.int32)
         p = bezsurf.Patch(np.asfortranarray(a)[:, ::-1, :])
@@ -170,7 +170,7 @@ class NumpyCtrlTest(unittest.TestCase):
             p.ctrl_array(out=np.zeros((3, 3, 2)))
 
 
-class SurfaceTest(unittest.TestCase):
+class SurfaceTest(PlainTestCase):
     def test_add_count_get(self):
         with bezsurf.Surface() as s:
             self.assertEqual((len(s), s.dim), (0, 0))

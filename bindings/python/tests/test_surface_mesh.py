@@ -8,7 +8,7 @@ import unittest
 
 import bezsurf
 
-from .support import needs_numpy, numpy as np, requires
+from .support import PlainTestCase, plain, needs_numpy, numpy as np, requires
 
 
 def square(x0, y0=0.0):
@@ -22,7 +22,7 @@ def saddle(x0):
 
 
 @requires("bs_surface_eval", "bs_surface_eval_normal")
-class SurfaceEvalTest(unittest.TestCase):
+class SurfaceEvalTest(PlainTestCase):
     def test_points_on_their_patches(self):
         s = bezsurf.Surface([saddle(0), saddle(10)])
         got = s.eval([1, 0, 1], [0.5, 0.25, 1.0], [0.5, 0.5, 0.75])
@@ -60,7 +60,7 @@ class SurfaceEvalTest(unittest.TestCase):
 
 
 @requires("bs_surface_continuity")
-class ContinuityTest(unittest.TestCase):
+class ContinuityTest(PlainTestCase):
     def test_two_squares(self):
         c = bezsurf.Surface([square(0), square(1)]).continuity()
         self.assertEqual(len(c.edges), 1)
@@ -86,11 +86,11 @@ class ContinuityTest(unittest.TestCase):
 
 @requires("bs_surface_tessellate_uniform", "bs_surface_tessellate_adaptive", "bs_mesh_write",
           "bs_mesh_write_memory", "bs_mesh_copy_strips")
-class MeshTest(unittest.TestCase):
+class MeshTest(PlainTestCase):
     def test_uniform_square(self):
         with bezsurf.Surface([square(0)]).tessellate(2) as m:
             self.assertEqual((m.vertex_count, m.triangle_count), (9, 8))
-            pos = m.positions()
+            pos = plain(m.positions())
             self.assertEqual(sorted(pos), sorted((x, y, 0.0) for x in (0, 0.5, 1) for y in (0, 0.5, 1)))
             self.assertEqual(m.normals(), [(0.0, 0.0, 1.0)] * 9)
             self.assertEqual([(x, y) for x, y, _ in pos], m.uv())   # S(u,v) = (u, v, 0)
@@ -125,7 +125,7 @@ class MeshTest(unittest.TestCase):
                     k = t.index(min(t))
                     tris.add(t[k:] + t[:k])
         want = set()
-        for t in m.triangles():
+        for t in plain(m.triangles()):
             k = t.index(min(t))
             want.add(t[k:] + t[:k])
         self.assertEqual(tris, want)
@@ -179,12 +179,12 @@ class MeshTest(unittest.TestCase):
         pos = np.full((m.vertex_count, 3), np.nan)
         self.assertIs(m.positions(out=pos), pos)
         self.assertTrue(np.all(np.isfinite(pos)))
-        tri = m.triangles(numpy=True)
+        tri = m.triangles()
         self.assertEqual((tri.dtype, tri.shape), (np.uint32, (m.triangle_count, 3)))
         a, b, c = pos[tri[:, 0]], pos[tri[:, 1]], pos[tri[:, 2]]
         self.assertEqual(np.cross(b - a, c - a)[:, 2].sum() / 2, 2.0)   # total area
-        self.assertTrue(np.array_equal(m.uv(numpy=True), np.array(m.uv())))
-        self.assertTrue(np.array_equal(m.normals(numpy=True)[:, 2], np.ones(m.vertex_count)))
+        self.assertTrue(np.array_equal(m.uv(), np.array(m.uv())))
+        self.assertTrue(np.array_equal(m.normals()[:, 2], np.ones(m.vertex_count)))
 
 
 if __name__ == "__main__":

@@ -1,0 +1,50 @@
+"""Typical uses of the binding, for the type checker (tests/typecheck.py), not for running.
+
+``assert_type`` fails the check when an overload resolves to another type than documented.
+"""
+
+from typing import List, Optional, Tuple
+
+from typing_extensions import assert_type
+
+import bezsurf
+from bezsurf._buffers import Ids, IdRows, Point, PointOrPoints, Points
+
+
+def uses(path: str) -> None:
+    p = bezsurf.Patch([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], weights=None)
+    assert_type(p.eval(0.5, 0.5), Point)
+    assert_type(p.eval([0.5], [0.5]), Points)
+    assert_type(p.eval(0.5, [0.5, 0.25]), Points)
+    assert_type(p.eval([0.5], [0.5], derivatives=True), bezsurf.Evaluation)
+    assert_type(p.eval([0.5], [0.5], normals=True), bezsurf.Evaluation)
+    assert_type(p.eval_grid([0.0, 1.0], [0.0, 1.0]), Points)
+    assert_type(p.eval_deriv(1, 0, 0.5, 0.5), Point)
+    ev = p.eval_normal([0.5], [0.5])
+    assert_type(ev.position, PointOrPoints)
+    lo, hi = p.split(bezsurf.Direction.U, 0.5)
+    assert_type(lo, bezsurf.Patch)
+    assert_type(p.split4(0.5, 0.5)[3], bezsurf.Patch)
+    assert_type(p.degree, Tuple[int, int])
+    assert_type(p.weights, Optional[List[List[float]]])
+    c = p.isocurve("u", 0.5)
+    assert_type(bezsurf.Patch.ruled(c, [[0, 0, 1], [1, 0, 1]]), bezsurf.Patch)
+
+    s = bezsurf.Surface.load(path)
+    assert_type(s[0], bezsurf.Patch)
+    assert_type(s[1:], bezsurf.Surface)
+    assert_type(s.eval([0, 1], [0.5, 0.5], [0.5, 0.5]), Points)
+    assert_type(s.eval(0, 0.5, 0.5), Point)
+    assert_type(s.continuity().edges[0].side_a, bezsurf.Side)
+    with s.tessellate(8) as m:
+        assert_type(m.positions(), Points)
+        assert_type(m.triangles(), IdRows)
+        assert_type(m.patch_ids(), Ids)
+        assert_type(m.strips(), List[List[int]])
+        m.write(path + ".ply", bezsurf.Format.PLY)
+        assert_type(m.to_bytes("stl"), bytes)
+    try:
+        bezsurf.Surface.load(path)
+    except FileNotFoundError as e:
+        assert_type(e.errno, int)
+    assert_type(bezsurf.version(), str)
