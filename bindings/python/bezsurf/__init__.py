@@ -6,7 +6,9 @@ the system library search path, and must be of major version 1.
 
 Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hodographs, ...),
 :class:`Surface` (an ordered set of patches: evaluation, .bpt files, the built-in tea set,
-continuity, tessellation) and :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export).
+continuity, tessellation), :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export) and
+:class:`BSpline` (a B-spline or NURBS surface, cut into Bezier patches by
+:meth:`Surface.add_bspline`).
 Errors are :class:`BezsurfError` subclasses; wrong argument types raise TypeError and bad
 values ValueError, naming the argument. numpy is optional: whenever it is importable, results
 are numpy arrays written in place by the library (float arrays in Fortran order, the library's
@@ -24,10 +26,11 @@ from ._buffers import have_numpy
 from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
                     Evaluation, Patch)
 from .mesh import Mesh
+from .bspline import BSpline
 from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
                       Surface, builtin_names)
 
-__version__ = "1.0.0"
+__version__ = "1.1.0"
 
 #: Largest degree per direction and largest dimension (BS_MAX_DEGREE, BS_MAX_DIM).
 MAX_DEGREE = 64
@@ -60,7 +63,7 @@ def library_path() -> str:
 
 
 __all__ = [
-    "Patch", "Surface", "Mesh", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
+    "Patch", "Surface", "Mesh", "BSpline", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
     "Direction", "NormalKind", "Format", "Side",
     "SIDE_V0", "SIDE_U1", "SIDE_V1", "SIDE_U0",
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",

@@ -54,6 +54,14 @@ class CParseError(ctypes.Structure):
     _fields_ = [("line", c_size_t), ("column", c_size_t), ("message", ctypes.c_char * 96)]
 
 
+class CBSpline(ctypes.Structure):
+    """``bs_bspline``: a B-spline or NURBS surface pointing into packed arrays (since 1.1)."""
+
+    _fields_ = [("deg_u", c_size_t), ("deg_v", c_size_t), ("count_u", c_size_t),
+                ("count_v", c_size_t), ("dim", c_size_t), ("knots_u", c_void_p),
+                ("knots_v", c_void_p), ("ctrl", c_void_p), ("weights", c_void_p)]
+
+
 class CEdgeContinuity(ctypes.Structure):
     """``bs_edge_continuity``: how two patches meet along one shared edge."""
 
@@ -131,6 +139,11 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_surface_get", (HANDLE, c_size_t), HANDLE),
     ("bs_surface_eval", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS), STATUS),
     ("bs_surface_eval_normal", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
+    # bspline.h (1.1): B-spline and NURBS surfaces
+    ("bs_bspline_span_count", (POINTER(CBSpline), SIZE_OUT, SIZE_OUT), STATUS),
+    ("bs_surface_add_bspline", (HANDLE, POINTER(CBSpline), DOUBLES, c_size_t, SIZE_OUT), STATUS),
+    ("bs_bspline_locate", (POINTER(CBSpline), c_double, c_double, SIZE_OUT, POINTER(c_double),
+                           POINTER(c_double)), STATUS),
     # continuity.h
     ("bs_surface_continuity", (HANDLE, c_double, c_size_t, POINTER(CEdgeContinuity), c_size_t,
                                SIZE_OUT, POINTER(COpenEdge), c_size_t, SIZE_OUT), STATUS),

@@ -13,6 +13,7 @@ from ._enums import SIDES, Side
 from ._errors import BezsurfError, BezsurfIOError, ParseError, io_error
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
+from .bspline import BSpline
 from .mesh import Mesh
 from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
 
@@ -178,6 +179,22 @@ class Surface(Handle):
         index = ctypes.c_size_t()
         LIB.bs_surface_add(self._ptr, patch._ptr, ctypes.byref(index))
         return index.value
+
+    def add_bspline(self, bspline: BSpline) -> Points:
+        """Append a B-spline or NURBS surface as one Bezier patch per knot span: span (a, b) becomes
+        patch ``len(self) + a * spans_v + b`` (len before the call). Returns each added patch's
+        span (u0, u1, v0, v1), shape (patches, 4). On any error the surface is unchanged."""
+        A.instance(bspline, BSpline, "bspline")
+        return bspline._add_to(self._ptr)
+
+    @classmethod
+    def from_bspline(cls, ctrl: Any, knots_u: Any, knots_v: Any,
+                     weights: Any = None) -> "Surface":
+        """A new surface of the Bezier patches of a B-spline or NURBS surface; the arguments are
+        those of :class:`BSpline`."""
+        s = cls()
+        s.add_bspline(BSpline(ctrl, knots_u, knots_v, weights))
+        return s
 
     def clone(self) -> "Surface":
         """An independent copy of the surface and its patches."""

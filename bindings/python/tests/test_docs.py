@@ -2,9 +2,11 @@
 
 import doctest
 
+import bezsurf.bspline
 import bezsurf.patch
 
 
 def load_tests(loader, tests, ignore):
     tests.addTests(doctest.DocTestSuite(bezsurf.patch))
+    tests.addTests(doctest.DocTestSuite(bezsurf.bspline))
     return tests
