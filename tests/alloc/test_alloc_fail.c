@@ -287,6 +287,41 @@ static bs_status op_tessellate_adaptive(void)
     return st;
 }
 
+/* A NURBS of 2 x 3 spans added to a surface that already holds 9 patches (so that its array
+ * grows): on failure the surface, the spans and the count are as they were. */
+static bs_status op_add_bspline(void)
+{
+    static const double ku[] = {0, 0, 0, 1, 2, 2, 2}, kv[] = {0, 0, 1, 2, 3, 3};
+    double ctrl[4 * 4 * 3], w[16], spans[24];
+    for (int k = 0; k < 48; k++)
+        ctrl[k] = (double)(k % 7);
+    for (int k = 0; k < 16; k++)
+        w[k] = 1.0 + 0.125 * k;
+    bs_bspline b = {2, 1, 4, 4, 3, ku, kv, ctrl, w};
+    bs_surface *s = NULL;
+    bs_status st = bs_surface_create(&s);
+    for (int k = 0; k < 9 && st == BS_OK; k++)
+        st = bs_surface_add(s, P, NULL);
+    if (st != BS_OK) {
+        bs_surface_destroy(s);
+        return st;
+    }
+    for (int k = 0; k < 24; k++)
+        spans[k] = SENT;
+    size_t count = 777;
+    st = bs_surface_add_bspline(s, &b, spans, 24, &count);
+    if (st != BS_OK) {
+        int untouched = count == 777 && bs_surface_count(s) == 9;
+        for (int k = 0; k < 24; k++)
+            untouched &= spans[k] == SENT;
+        CHECKF(untouched, "bs_surface_add_bspline: outputs or surface changed on failure");
+    } else {
+        CHECK(count == 6 && bs_surface_count(s) == 15);
+    }
+    bs_surface_destroy(s);
+    return st;
+}
+
 typedef struct op {
     const char *name;
     op_fn fn;
@@ -315,6 +350,7 @@ static const op ops[] = {
     {"bs_surface_create_builtin", op_builtin, 0},
     {"bs_surface_write_bpt", op_write_bpt, 1},
     {"bs_surface_write_bpt_file", op_write_bpt_file, 0},
+    {"bs_surface_add_bspline", op_add_bspline, 0},
     {"bs_surface_continuity", op_continuity, 0},
     {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
     {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
