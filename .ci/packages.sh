@@ -2,8 +2,8 @@
 # The packages as a user gets them (docs/building.md): a Debian package and a tarball made by CPack
 # from a build configured for /usr. The tarball's tool runs from wherever it is unpacked. The .deb
 # is installed on this machine with dpkg, then the tool, its man page and both consumers are used
-# with no environment variables, as after `apt install ./bezsurf_*.deb`; the package is removed
-# again at the end, whatever happens.
+# with no environment variables, as after `apt install ./bezsurf_*.deb`, and so is the Rust crate
+# as a path dependency; the package is removed again at the end, whatever happens.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -55,3 +55,9 @@ cmake -S "$root/tests/consumer/cmake" -B "$scratch/consumer-cmake" >/dev/null
 cmake --build "$scratch/consumer-cmake" >/dev/null
 "$scratch/consumer-cmake/consumer"
 echo "deb: tool, man page, pkg-config and CMake consumers work with no environment variables"
+# The Rust crate as a path dependency of a new crate, finding the installed library through
+# pkg-config alone (docs/rust.md, "Using the crate").
+if command -v cargo >/dev/null 2>&1; then
+  CARGO_TARGET_DIR="$scratch/rust-target" sh "$root/bindings/rust/check-dependent.sh" cargo \
+    "$root/bindings/rust" "$root/docs/rust.md" "$scratch/rust"
+fi
