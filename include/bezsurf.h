@@ -10,6 +10,7 @@
  *   bezsurf/continuity.h  shared and open edges of a surface, continuity across them
  *   bezsurf/mesh.h     tessellation into triangle meshes, mesh export
  *   bezsurf/bspline.h  B-spline and NURBS surfaces cut into Bezier patches (from 1.1)
+ *   bezsurf/query.h    geometric queries: curvature (from 1.1)
  * Everything declared here is part of the stable C ABI (SONAME libbezsurf.so.1).
  */
 #ifndef BEZSURF_H
@@ -23,5 +24,6 @@
 #include "bezsurf/continuity.h"
 #include "bezsurf/mesh.h"
 #include "bezsurf/bspline.h"
+#include "bezsurf/query.h"
 
 #endif

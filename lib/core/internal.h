@@ -1,7 +1,7 @@
 /*
- * Core layer, shared with every layer above it (ops, surface, continuity, io, mesh, query): the
- * patch object and the checks and accessors of strided views. The evaluation kernels are the
- * core's own business and live in core/kernels.h. Not installed.
+ * Core layer, shared with every layer above it: the patch object, the checks and accessors of
+ * strided views, and the table of all partials at one point (what queries build on). The
+ * evaluation loops are the core's own business and live in core/kernels.h. Not installed.
  */
 #ifndef BEZSURF_CORE_INTERNAL_H
 #define BEZSURF_CORE_INTERNAL_H
@@ -58,6 +58,12 @@ static inline double bsi_cget(const bs_cview *v, size_t k)
 {
     return *(const double *)(const void *)((const char *)v->data + (ptrdiff_t)k * bsi_stride(v->stride));
 }
+
+/* All Cartesian partials S^(a,b), a <= ka, b <= kb, at one finite point (lib/core/deriv.c):
+ * out[(a*(kb+1) + b)*dim + c]. scratch holds bsi_deriv_table_scratch(p, ka, kb) doubles. */
+size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
+void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
+                     double *scratch, double *out);
 
 /* 1 if every one of the n values is finite. */
 int bsi_all_finite(const double *x, size_t n);

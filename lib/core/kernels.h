@@ -88,11 +88,6 @@ void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v
 void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
                        size_t stride, double *s, double *su, double *sv);
 
-/* All Cartesian partials S^(a,b), a <= ka, b <= kb, at one finite point:
- * out[(a*(kb+1) + b)*dim + c]. scratch holds bsi_deriv_table_scratch(p, ka, kb) doubles. */
-size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
-void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
-                     double *scratch, double *out);
 
 /* ---- Normals (lib/core/normal.c) ---- */
 

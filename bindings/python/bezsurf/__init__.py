@@ -20,11 +20,11 @@ from ._errors import (BezsurfError, BezsurfFileNotFoundError, BezsurfIOError,
                       DegreeError, DimensionError, DomainError, IncompatibleError,
                       InvalidArgumentError, NoMemoryError, NonFiniteError, ParseError, SizeError,
                       UnsupportedError)
-from ._enums import Direction, Format, NormalKind, Side
+from ._enums import CurvatureKind, Direction, Format, NormalKind, Side
 from ._lib import LIB as _LIB
 from ._buffers import have_numpy
-from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curve,
-                    Evaluation, Patch)
+from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curvature,
+                    Curve, Evaluation, Patch)
 from .mesh import Mesh
 from .bspline import BSpline
 from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
@@ -64,7 +64,7 @@ def library_path() -> str:
 
 __all__ = [
     "Patch", "Surface", "Mesh", "BSpline", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
-    "Direction", "NormalKind", "Format", "Side",
+    "Direction", "NormalKind", "Format", "Side", "CurvatureKind", "Curvature",
     "SIDE_V0", "SIDE_U1", "SIDE_V1", "SIDE_U0",
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",
     "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",

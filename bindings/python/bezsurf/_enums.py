@@ -18,6 +18,14 @@ class NormalKind(IntEnum):
     UNDEFINED = 2   #: no normal exists; (0, 0, 0) is written
 
 
+class CurvatureKind(IntEnum):
+    """How a curvature was obtained (BS_CURV_*, since 1.1)."""
+
+    REGULAR = 0     #: from the fundamental forms at the point
+    LIMIT = 1       #: the limit along the line towards (1/2, 1/2) (collapsed edges, poles)
+    UNDEFINED = 2   #: no finite curvature (a cone's apex); NaN is written
+
+
 class Format(IntEnum):
     """Mesh export formats (BS_MESH_*): Mesh.write() and to_bytes() also take their names."""
 

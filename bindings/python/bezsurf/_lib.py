@@ -144,6 +144,8 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_surface_add_bspline", (HANDLE, POINTER(CBSpline), DOUBLES, c_size_t, SIZE_OUT), STATUS),
     ("bs_bspline_locate", (POINTER(CBSpline), c_double, c_double, SIZE_OUT, POINTER(c_double),
                            POINTER(c_double)), STATUS),
+    # query.h (1.1): curvature
+    ("bs_patch_eval_curvature", (HANDLE, c_size_t, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS, BYTES), STATUS),
     # continuity.h
     ("bs_surface_continuity", (HANDLE, c_double, c_size_t, POINTER(CEdgeContinuity), c_size_t,
                                SIZE_OUT, POINTER(COpenEdge), c_size_t, SIZE_OUT), STATUS),

@@ -8,7 +8,7 @@ from typing import (TYPE_CHECKING, Any, Dict, List, Literal, NamedTuple, Optiona
 from . import _args as A
 from . import _buffers as B
 from ._buffers import KindOrKinds, Point, PointOrPoints, Points
-from ._enums import Direction, NormalKind
+from ._enums import CurvatureKind, Direction, NormalKind
 from ._handle import Handle
 from ._lib import LIB, CCurve
 
@@ -71,6 +71,27 @@ def _check_requested(derivatives: bool, normals: bool, du_out: Any, dv_out: Any,
         raise ValueError("du_out and dv_out need derivatives=True")
     if not normals and (normal_out is not None or kind_out is not None):
         raise ValueError("normal_out and kind_out need normals=True")
+
+
+#: CurvatureKind members indexed by their value.
+CURVATURE_KINDS = tuple(CurvatureKind)
+
+
+class Curvature(NamedTuple):
+    """Curvatures and principal directions (:meth:`Patch.eval_curvature`).
+
+    With numpy: ``gaussian``, ``mean``, ``k_min``, ``k_max`` float64 arrays of shape (n,),
+    ``d_min``, ``d_max`` of shape (n, 3), ``kind`` uint8 of shape (n,); else lists (``kind``: of
+    :class:`CurvatureKind`). For scalar u and v the leading n axis is dropped.
+    """
+
+    gaussian: Any
+    mean: Any
+    k_min: Any
+    k_max: Any
+    d_min: Any
+    d_max: Any
+    kind: Any
 
 
 def _squeeze(value: Any) -> Any:
@@ -321,6 +342,33 @@ class Patch(Handle):
                                  kinds.address)
         return Evaluation(call.finish(pos.result()), None, None, call.finish(nrm.result()),
                           call.finish(kinds.result()))
+
+    def eval_curvature(self, u: Params, v: Params) -> Curvature:
+        """Gaussian and mean curvature, principal curvatures k_min <= k_max and their unit
+        directions at the n points of a 3-D patch (bs_patch_eval_curvature, since 1.1).
+
+        Signs follow the normal of :meth:`eval_normal` (outward normals give a sphere k = -1/r);
+        (d_min, d_max, normal) is right-handed. At collapsed edges and poles the values are the
+        limits towards (1/2, 1/2) (kind CurvatureKind.LIMIT); where no finite limit exists, NaN
+        with kind CurvatureKind.UNDEFINED. See docs/queries.md for the accuracy.
+        """
+        call = _Call(u, v)
+        curv = call.output(4, None, "curv")
+        dmin = call.output(3, None, "d_min")
+        dmax = call.output(3, None, "d_max")
+        kinds = call.kinds(None)
+        LIB.bs_patch_eval_curvature(self._ptr, call.n, call.u, call.v, curv.views, dmin.views,
+                                    dmax.views, kinds.address)
+        k = curv.result()
+        if B.is_ndarray(k):
+            cols = [k[:, i] for i in range(4)]
+            kind: Any = kinds.result()
+        else:
+            cols = [[row[i] for row in k] for i in range(4)]
+            kind = [CURVATURE_KINDS[int(x)] for x in kinds.result()]
+        gauss, mean, k_min, k_max = (call.finish(c) for c in cols)
+        return Curvature(gauss, mean, k_min, k_max, call.finish(dmin.result()),
+                         call.finish(dmax.result()), call.finish(kind))
 
     @overload
     def eval_grid(self, u: Params, v: Params, *, derivatives: Literal[False] = ...,

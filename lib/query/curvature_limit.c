@@ -1,0 +1,117 @@
+/*
+ * Curvature at limit points (collapsed edges, poles): the fundamental forms degenerate there, so
+ * the curvature is taken as its limit along the line towards the domain centre. Along that line
+ * it is an analytic function of the distance h wherever the limit exists, so samples at
+ * h = 2^-3 .. 2^-10 (regular points) are extrapolated to h = 0 by Richardson's scheme; the
+ * difference between the last two orders of the scheme measures the error, and a limit that
+ * does not settle (a cone's apex, where the curvature grows like 1/h) is reported undefined.
+ */
+#include "query/internal.h"
+
+#include <math.h>
+
+#define LEVELS 8
+#define LIMIT_TOL 1e-7 /* extrapolation error accepted, relative to |k_min| + |k_max| + 1/D */
+
+/* Richardson extrapolation to h = 0 of f[j] = f(h0 2^-j), j < LEVELS; *err: the estimate's
+ * distance to the previous orders. */
+static double extrapolate(const double *f, double *err)
+{
+    double t[LEVELS][LEVELS];
+    for (int j = 0; j < LEVELS; j++) {
+        t[j][0] = f[j];
+        for (int k = 1; k <= j; k++)
+            t[j][k] = t[j][k - 1] + (t[j][k - 1] - t[j - 1][k - 1]) / (ldexp(1.0, k) - 1.0);
+    }
+    double best = t[LEVELS - 1][LEVELS - 1];
+    *err = fabs(best - t[LEVELS - 1][LEVELS - 2]) + fabs(best - t[LEVELS - 2][LEVELS - 2]);
+    return best;
+}
+
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Unit a, or 0 if a is (numerically) zero against the scale len. */
+static int unit3(const double *a, double len, double *out)
+{
+    double n = sqrt(dot3(a, a));
+    if (!(n > 1e-12 * len))
+        return 0;
+    for (int i = 0; i < 3; i++)
+        out[i] = a[i] / n;
+    return 1;
+}
+
+/* dmin from a tangent estimate t (projected onto the plane of nrm), dmax = nrm x dmin. */
+static int frame(const double *t, const double *nrm, bsi_curv *out)
+{
+    double p[3], tn = dot3(t, nrm);
+    for (int i = 0; i < 3; i++)
+        p[i] = t[i] - tn * nrm[i];
+    if (!unit3(p, 1.0, out->dmin))
+        return 0;
+    const double *a = nrm, *b = out->dmin;
+    out->dmax[0] = a[1] * b[2] - a[2] * b[1];
+    out->dmax[1] = a[2] * b[0] - a[0] * b[2];
+    out->dmax[2] = a[0] * b[1] - a[1] * b[0];
+    return 1;
+}
+
+unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double nrm[3],
+                             double inv_d, double *scratch, bsi_curv *out)
+{
+    double du = 0.5 - u, dv = 0.5 - v;
+    if (du == 0.0 && dv == 0.0)
+        return BS_CURV_UNDEFINED; /* the centre itself: no line to follow */
+    double us[LEVELS], vs[LEVELS];
+    for (int j = 0; j < LEVELS; j++) {
+        double h = ldexp(1.0, -(3 + j));
+        us[j] = u + h * du;
+        vs[j] = v + h * dv;
+    }
+    bsi_partials q[LEVELS];
+    unsigned char nk[LEVELS];
+    bsi_curv c[LEVELS];
+    bsi_curv_partials(p, LEVELS, us, vs, scratch, q, nk);
+    for (int j = 0; j < LEVELS; j++) {
+        if (nk[j] != BS_NORMAL_REGULAR)
+            return BS_CURV_UNDEFINED;
+        bsi_curv_regular(&q[j], inv_d, &c[j]);
+        /* principal directions are lines: keep each sample's sign next to the first's */
+        double smin = dot3(c[j].dmin, c[0].dmin) < 0.0 ? -1.0 : 1.0;
+        for (int i = 0; i < 3; i++)
+            c[j].dmin[i] *= smin;
+    }
+    double f[LEVELS], err[2], k[2];
+    for (int i = 0; i < 2; i++) { /* k_min, k_max */
+        for (int j = 0; j < LEVELS; j++)
+            f[j] = c[j].k[2 + i];
+        k[i] = extrapolate(f, &err[i]);
+    }
+    double scale = fabs(k[0]) + fabs(k[1]) + inv_d;
+    if (!(err[0] <= LIMIT_TOL * scale && err[1] <= LIMIT_TOL * scale))
+        return BS_CURV_UNDEFINED; /* no finite limit, or none found */
+    out->k[0] = k[0] * k[1];
+    out->k[1] = 0.5 * (k[0] + k[1]);
+    out->k[2] = fmin(k[0], k[1]);
+    out->k[3] = fmax(k[0], k[1]);
+    /* Umbilic at the accuracy limits reach: the rule's directions from the point's own partials
+     * (S_u made unit, S_v where S_u vanishes); else the extrapolated direction of k_min. */
+    double t[3];
+    if (out->k[3] - out->k[2] <= 10.0 * LIMIT_TOL * scale) {
+        bsi_partials here;
+        unsigned char hk;
+        bsi_curv_partials(p, 1, &u, &v, scratch, &here, &hk);
+        double len = 1.0 / inv_d;
+        if (unit3(here.d[0], len, t) && frame(t, nrm, out))
+            return BS_CURV_LIMIT;
+        if (unit3(here.d[1], len, t) && frame(t, nrm, out))
+            return BS_CURV_LIMIT;
+    }
+    for (int i = 0; i < 3; i++) {
+        double e;
+        for (int j = 0; j < LEVELS; j++)
+            f[j] = c[j].dmin[i];
+        t[i] = extrapolate(f, &e);
+    }
+    return frame(t, nrm, out) ? BS_CURV_LIMIT : BS_CURV_UNDEFINED;
+}

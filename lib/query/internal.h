@@ -1,0 +1,36 @@
+/*
+ * Query layer, private to lib/query/: curvature at one point from its partial derivatives, and
+ * its limit at degenerate points. Not installed.
+ */
+#ifndef BEZSURF_QUERY_INTERNAL_H
+#define BEZSURF_QUERY_INTERNAL_H
+
+#include "surface/internal.h"
+
+/* Curvature at one point: K, H, k_min, k_max, and the principal directions. */
+typedef struct bsi_curv {
+    double k[4]; /* K, H, k_min, k_max */
+    double dmin[3], dmax[3];
+} bsi_curv;
+
+/* The partials a curvature needs at one point: S_u, S_v, S_uu, S_uv, S_vv, and the unit normal. */
+typedef struct bsi_partials {
+    double d[5][3];
+    double nrm[3];
+} bsi_partials;
+
+/* Curvature from the fundamental forms at a regular point; inv_d = 1/D (umbilic test scale). */
+void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out);
+
+/* The partials at n finite points (u[k], v[k]) into q[k] and the normal kinds into kind;
+ * scratch holds bsi_deriv_table_scratch(p, 2, 2) + 27 doubles. */
+void bsi_curv_partials(const bs_patch *p, size_t n, const double *u, const double *v,
+                       double *scratch, bsi_partials *q, unsigned char *kind);
+
+/* The limit of the curvature at finite (u,v) along the line towards (1/2,1/2), nrm the limit
+ * normal there (scratch as for bsi_curv_partials): BS_CURV_LIMIT with out filled, or
+ * BS_CURV_UNDEFINED when the limit does not exist or could not be found. */
+unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double nrm[3],
+                             double inv_d, double *scratch, bsi_curv *out);
+
+#endif

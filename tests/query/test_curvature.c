@@ -1,0 +1,346 @@
+/* Curvature: random patches against the fundamental forms in long double (tests/support/
+ * reference.h), exact surfaces (sphere with a pole, cylinder), limits at poles (sphere, the
+ * teapot's lid) and a cone's apex, and every argument rule. */
+#include "harness.h"
+#include "reference.h"
+
+#include <bezsurf.h>
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct result {
+    double k[4], dmin[3], dmax[3];
+    unsigned char kind;
+} result;
+
+static bs_status curvature_at(const bs_patch *p, double u, double v, result *r)
+{
+    bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+    bs_view k[4], a[3], b[3];
+    for (int i = 0; i < 4; i++)
+        k[i] = (bs_view){&r->k[i], 1, 0};
+    for (int i = 0; i < 3; i++) {
+        a[i] = (bs_view){&r->dmin[i], 1, 0};
+        b[i] = (bs_view){&r->dmax[i], 1, 0};
+    }
+    return bs_patch_eval_curvature(p, 1, &cu, &cv, k, a, b, &r->kind);
+}
+
+static double normal_at(const bs_patch *p, double u, double v, double n[3])
+{
+    bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+    bs_view nv[3] = {{&n[0], 1, 0}, {&n[1], 1, 0}, {&n[2], 1, 0}};
+    unsigned char kind;
+    return bs_patch_eval_normal(p, 1, &cu, &cv, NULL, nv, &kind) == BS_OK ? kind : -1;
+}
+
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Directions: unit, orthogonal, (dmin, dmax, N) right-handed. */
+static void check_frame(const result *r, const double n[3])
+{
+    double c[3] = {r->dmin[1] * r->dmax[2] - r->dmin[2] * r->dmax[1],
+                   r->dmin[2] * r->dmax[0] - r->dmin[0] * r->dmax[2],
+                   r->dmin[0] * r->dmax[1] - r->dmin[1] * r->dmax[0]};
+    CHECKF(fabs(dot3(r->dmin, r->dmin) - 1) < 1e-12 && fabs(dot3(r->dmax, r->dmax) - 1) < 1e-12 &&
+               fabs(dot3(r->dmin, r->dmax)) < 1e-12 && fabs(dot3(c, n) - 1) < 1e-9,
+           "frame: |dmin|^2-1 %.2g, dmin.dmax %.2g, (dmin x dmax).N %.12g",
+           dot3(r->dmin, r->dmin) - 1, dot3(r->dmin, r->dmax), dot3(c, n));
+}
+
+static double worst_regular, worst_angle; /* errors over the scale, and in radians */
+static double worst_limit;                /* error at the sphere's pole over the scale */
+
+/* One random point of a random patch against the long double fundamental forms. */
+static void against_reference(const bs_patch *p, const double *ctrl, const double *w, size_t m,
+                              size_t n, double u, double v, double inv_d)
+{
+    ref_net net = {m, n, 3, ctrl, w};
+    long double d[5][3];
+    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+    for (int j = 0; j < 5; j++)
+        ref_deriv(&net, ab[j][0], ab[j][1], u, v, d[j]);
+    long double cr[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1], d[0][2] * d[1][0] - d[0][0] * d[1][2],
+                         d[0][0] * d[1][1] - d[0][1] * d[1][0]};
+    long double wl = sqrtl(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), N[3];
+    for (int c = 0; c < 3; c++)
+        N[c] = cr[c] / wl;
+    long double E = 0, F = 0, G = 0, L = 0, M = 0, NN = 0;
+    for (int c = 0; c < 3; c++) {
+        E += d[0][c] * d[0][c];
+        F += d[0][c] * d[1][c];
+        G += d[1][c] * d[1][c];
+        L += d[2][c] * N[c];
+        M += d[3][c] * N[c];
+        NN += d[4][c] * N[c];
+    }
+    long double W = E * G - F * F, K = (L * NN - M * M) / W, H = (E * NN - 2 * F * M + G * L) / (2 * W);
+    long double s = sqrtl(fmaxl(H * H - K, 0.0L)), kmin = H - s, kmax = H + s;
+    result r;
+    CHECK_STATUS(curvature_at(p, u, v, &r), BS_OK);
+    CHECK(r.kind == BS_CURV_REGULAR);
+    double scale = fabs((double)kmin) + fabs((double)kmax) + inv_d;
+    long double want[4] = {K, H, kmin, kmax};
+    for (int i = 0; i < 4; i++) {
+        double e = (double)fabsl((long double)r.k[i] - want[i]) / (i == 0 ? scale * scale : scale);
+        worst_regular = fmax(worst_regular, e);
+        CHECKF(e <= 1e-9, "(%g,%g) value %d: error %.3g of the scale", u, v, i, e);
+    }
+    double nd[3] = {(double)N[0], (double)N[1], (double)N[2]};
+    check_frame(&r, nd);
+    if (2 * s < 1e-3L * scale)
+        return; /* near an umbilic the directions are ill-conditioned */
+    /* the direction of k_max: (II - k_max I) t = 0, from the better-conditioned row */
+    long double a1 = M - kmax * F, b1 = -(L - kmax * E), a2 = NN - kmax * G, b2 = -(M - kmax * F);
+    long double du = fabsl(a1) + fabsl(b1) > fabsl(a2) + fabsl(b2) ? a1 : a2;
+    long double dv = fabsl(a1) + fabsl(b1) > fabsl(a2) + fabsl(b2) ? b1 : b2;
+    long double t[3], tl = 0;
+    for (int c = 0; c < 3; c++) {
+        t[c] = du * d[0][c] + dv * d[1][c];
+        tl += t[c] * t[c];
+    }
+    /* the sine of the angle between the lines, from the cross product (a sine from the cosine
+     * would measure the rounding of |dmax| instead) */
+    long double x[3], dl = 0, xl = 0;
+    for (int c = 0; c < 3; c++)
+        dl += (long double)r.dmax[c] * r.dmax[c];
+    x[0] = t[1] * r.dmax[2] - t[2] * r.dmax[1];
+    x[1] = t[2] * r.dmax[0] - t[0] * r.dmax[2];
+    x[2] = t[0] * r.dmax[1] - t[1] * r.dmax[0];
+    for (int c = 0; c < 3; c++)
+        xl += x[c] * x[c];
+    double sinang = (double)sqrtl(xl / (tl * dl));
+    worst_angle = fmax(worst_angle, sinang);
+    CHECKF(sinang <= 1e-8, "(%g,%g): k_max direction off by %.3g rad", u, v, sinang);
+}
+
+static void random_patches(void)
+{
+    unsigned long long rng = 99;
+    double ctrl[8 * 8 * 3], w[64];
+    for (int trial = 0; trial < 60; trial++) {
+        size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 1 + (size_t)(bs_test_rand_u64(&rng) % 5);
+        if (m + n < 3)
+            m = 2;
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+        for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
+            for (int c = 0; c < 3; c++) {
+                double base = c == 0 ? (double)(k / (n + 1)) : c == 1 ? (double)(k % (n + 1)) : 0.0;
+                ctrl[3 * k + (size_t)c] = base + bs_test_rand(&rng, -0.4, 0.4);
+                lo[c] = fmin(lo[c], ctrl[3 * k + (size_t)c]);
+                hi[c] = fmax(hi[c], ctrl[3 * k + (size_t)c]);
+            }
+            w[k] = bs_test_rand(&rng, 0.5, 2.0);
+        }
+        int rational = trial % 2;
+        bs_patch *p;
+        CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? w : NULL, &p), BS_OK);
+        double inv_d = 1.0 / hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+        for (int k = 0; k < 20; k++)
+            against_reference(p, ctrl, rational ? w : NULL, m, n, bs_test_rand(&rng, 0, 1),
+                              bs_test_rand(&rng, 0, 1), inv_d);
+        bs_patch_destroy(p);
+    }
+}
+
+/* The octant of a sphere of radius R as a surface of revolution (rational biquadratic): u along
+ * the meridian from the pole (the collapsed side u = 0), v around the axis. */
+#define R 2.5
+static bs_patch *sphere_octant(void)
+{
+    const double h = sqrt(0.5);
+    const double q[3][3] = {{0, 0, R}, {R, 0, R}, {R, 0, 0}}, wq[3] = {1, h, 1};
+    const double a[3][2] = {{1, 0}, {1, 1}, {0, 1}}, wa[3] = {1, h, 1};
+    double ctrl[27], w[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            ctrl[(i * 3 + j) * 3] = q[i][0] * a[j][0];
+            ctrl[(i * 3 + j) * 3 + 1] = q[i][0] * a[j][1];
+            ctrl[(i * 3 + j) * 3 + 2] = q[i][2];
+            w[i * 3 + j] = wq[i] * wa[j];
+        }
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(2, 2, 3, ctrl, w, &p), BS_OK);
+    return p;
+}
+
+static void sphere(void)
+{
+    bs_patch *p = sphere_octant();
+    const double pts[][2] = {{0.3, 0.7}, {0.9, 0.1}, {0.5, 0.5}, {1.0, 1.0}, {0.0, 0.3}, {0.0, 1.0}};
+    for (size_t k = 0; k < sizeof pts / sizeof pts[0]; k++) {
+        double u = pts[k][0], v = pts[k][1], nrm[3];
+        result r;
+        CHECK_STATUS(curvature_at(p, u, v, &r), BS_OK);
+        int kind = (int)normal_at(p, u, v, nrm);
+        CHECK(r.kind == (u == 0.0 ? BS_CURV_LIMIT : BS_CURV_REGULAR) && kind == (int)r.kind);
+        double x[3];
+        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+        bs_view xv[3] = {{&x[0], 1, 0}, {&x[1], 1, 0}, {&x[2], 1, 0}};
+        CHECK_STATUS(bs_patch_eval(p, 1, &cu, &cv, xv, NULL, NULL), BS_OK);
+        double outward = dot3(nrm, x) / R; /* +1 or -1; outward normals give k = -1/R */
+        double tol = r.kind == BS_CURV_LIMIT ? 1e-6 : 1e-9, scale = 2.0 / R;
+        CHECKF(fabs(fabs(outward) - 1) < 1e-12, "normal not radial: %.17g", outward);
+        CHECKF(fabs(r.k[0] - 1 / (R * R)) <= tol * scale * scale, "K %.17g at (%g,%g)", r.k[0], u, v);
+        for (int i = 1; i < 4; i++) {
+            CHECKF(fabs(r.k[i] + outward / R) <= tol * scale, "k%d %.17g at (%g,%g)", i, r.k[i], u, v);
+            if (r.kind == BS_CURV_LIMIT)
+                worst_limit = fmax(worst_limit, fabs(r.k[i] + outward / R) / scale);
+        }
+        check_frame(&r, nrm);
+        if (r.kind == BS_CURV_REGULAR) { /* umbilic: dmin is S_u made unit */
+            double su[3];
+            bs_view sv[3] = {{&su[0], 1, 0}, {&su[1], 1, 0}, {&su[2], 1, 0}};
+            CHECK_STATUS(bs_patch_eval(p, 1, &cu, &cv, NULL, sv, NULL), BS_OK);
+            double l = sqrt(dot3(su, su));
+            CHECKF(fabs(dot3(su, r.dmin) / l - 1) < 1e-12, "umbilic dmin not S_u: %.3g", dot3(su, r.dmin) / l - 1);
+        }
+    }
+    bs_patch_destroy(p);
+}
+
+static void cylinder(void)
+{
+    const double h = sqrt(0.5), a[3][2] = {{1, 0}, {1, 1}, {0, 1}}, wa[3] = {1, h, 1};
+    double ctrl[18], w[6];
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++) {
+            ctrl[(i * 3 + j) * 3] = R * a[j][0];
+            ctrl[(i * 3 + j) * 3 + 1] = R * a[j][1];
+            ctrl[(i * 3 + j) * 3 + 2] = 4.0 * i;
+            w[i * 3 + j] = wa[j];
+        }
+    bs_patch *p;
+    CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, w, &p), BS_OK);
+    for (int k = 0; k <= 4; k++) {
+        double u = k / 4.0, v = (k * 3 % 5) / 4.0, nrm[3];
+        result r;
+        CHECK_STATUS(curvature_at(p, u, v, &r), BS_OK);
+        normal_at(p, u, v, nrm);
+        double radial = nrm[0] * nrm[0] + nrm[1] * nrm[1]; /* N is horizontal */
+        CHECK(r.kind == BS_CURV_REGULAR && fabs(radial - 1) < 1e-12);
+        /* zero along the axis, -+1/R around it */
+        double zero = fabs(r.k[2]) < fabs(r.k[3]) ? r.k[2] : r.k[3];
+        double bent = fabs(r.k[2]) < fabs(r.k[3]) ? r.k[3] : r.k[2];
+        const double *axis_dir = fabs(r.k[2]) < fabs(r.k[3]) ? r.dmin : r.dmax;
+        CHECKF(fabs(zero) <= 1e-9 * 2 / R && fabs(fabs(bent) - 1 / R) <= 1e-9 * 2 / R &&
+                   fabs(r.k[0]) <= 1e-9 * 4 / (R * R),
+               "cylinder k %.17g %.17g K %.3g", zero, bent, r.k[0]);
+        CHECKF(fabs(fabs(axis_dir[2]) - 1) < 1e-12, "axis direction %.17g", axis_dir[2]);
+        check_frame(&r, nrm);
+    }
+    bs_patch_destroy(p);
+}
+
+/* The teapot's lid and bottom have poles shared by four patches: the limit is the same from
+ * each, and the curvature next to the pole tends to it. */
+static void teapot_poles(void)
+{
+    bs_surface *s;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    int limits = 0;
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        const bs_patch *p = bs_surface_get(s, i);
+        for (int corner = 0; corner < 4; corner++) {
+            double u = corner & 1, v = corner >> 1, nrm[3];
+            if (normal_at(p, u, v, nrm) != BS_NORMAL_LIMIT)
+                continue;
+            result r, near;
+            CHECK_STATUS(curvature_at(p, u, v, &r), BS_OK);
+            CHECKF(r.kind == BS_CURV_LIMIT, "patch %zu corner %d: kind %d", i, corner, r.kind);
+            if (r.kind != BS_CURV_LIMIT)
+                continue;
+            limits++;
+            double h = 1e-4, un = u + h * (0.5 - u), vn = v + h * (0.5 - v);
+            CHECK_STATUS(curvature_at(p, un, vn, &near), BS_OK);
+            double scale = fabs(r.k[2]) + fabs(r.k[3]) + 0.1;
+            CHECKF(fabs(near.k[1] - r.k[1]) < 1e-2 * scale, "patch %zu: H %.9g at the pole, %.9g next to it",
+                   i, r.k[1], near.k[1]);
+            check_frame(&r, nrm);
+        }
+    }
+    CHECKF(limits >= 8, "only %d limit points found on the teapot", limits);
+    bs_surface_destroy(s);
+}
+
+static void cone_apex(void)
+{
+    /* S(u,v) = u (a(v), b(v), 1): apex at u = 0 (a collapsed side) */
+    const double ctrl[18] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+    bs_patch *p;
+    CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, NULL, &p), BS_OK);
+    result r;
+    CHECK_STATUS(curvature_at(p, 0.0, 0.4, &r), BS_OK);
+    CHECK(r.kind == BS_CURV_UNDEFINED && isnan(r.k[0]) && isnan(r.k[3]) && isnan(r.dmin[0]) && isnan(r.dmax[2]));
+    CHECK_STATUS(curvature_at(p, 0.5, 0.4, &r), BS_OK); /* elsewhere the cone is regular */
+    CHECK(r.kind == BS_CURV_REGULAR && fabs(r.k[0]) < 1e-9 && fabs(r.k[2] * r.k[3]) < 1e-9);
+    bs_patch_destroy(p);
+}
+
+static void arguments(void)
+{
+    bs_patch *p = sphere_octant(), *q2;
+    const double flat[8] = {0, 0, 1, 0, 0, 1, 1, 1};
+    CHECK_STATUS(bs_patch_create(1, 1, 2, flat, NULL, &q2), BS_OK);
+    double u[3] = {0.2, NAN, 0.7}, v[3] = {0.5, 0.5, INFINITY}, out[4][3], dm[3][3];
+    unsigned char kind[3] = {9, 9, 9};
+    bs_cview cu = {u, 3, 0}, cv = {v, 3, 0};
+    bs_view k[4], d[3];
+    for (int i = 0; i < 4; i++)
+        k[i] = (bs_view){out[i], 3, 0};
+    for (int i = 0; i < 3; i++)
+        d[i] = (bs_view){dm[i], 3, 0};
+    memset(out, 0, sizeof out);
+    CHECK_STATUS(bs_patch_eval_curvature(NULL, 3, &cu, &cv, k, d, d, kind), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_patch_eval_curvature(q2, 3, &cu, &cv, k, d, d, kind), BS_ERR_DIMENSION);
+    CHECK_STATUS(bs_patch_eval_curvature(p, 0, NULL, NULL, NULL, NULL, NULL, NULL), BS_OK);
+    CHECK_STATUS(bs_patch_eval_curvature(p, 3, NULL, &cv, k, NULL, NULL, kind), BS_ERR_INVALID_ARG);
+    bs_view short_k[4] = {k[0], k[1], {out[2], 2, 0}, k[3]};
+    CHECK_STATUS(bs_patch_eval_curvature(p, 3, &cu, &cv, short_k, NULL, NULL, kind), BS_ERR_SIZE);
+    bs_view odd = {(double *)(void *)((char *)dm[0] + 1), 3, 0};
+    bs_view odd_d[3] = {odd, d[1], d[2]};
+    CHECK_STATUS(bs_patch_eval_curvature(p, 3, &cu, &cv, NULL, odd_d, NULL, kind), BS_ERR_INVALID_ARG);
+    CHECK(kind[0] == 9 && out[0][0] == 0.0); /* nothing written by a failed check */
+    CHECK_STATUS(bs_patch_eval_curvature(p, 3, &cu, &cv, k, d, NULL, kind), BS_OK);
+    CHECK(kind[0] == BS_CURV_REGULAR && kind[1] == BS_CURV_UNDEFINED && kind[2] == BS_CURV_UNDEFINED);
+    CHECK(isnan(out[0][1]) && isnan(out[3][2]) && isnan(dm[0][1]) && !isnan(out[0][0]));
+    CHECK_STATUS(bs_patch_eval_curvature(p, 3, &cu, &cv, NULL, NULL, NULL, NULL), BS_OK);
+    /* strided, in a larger batch: the same values as one by one */
+    enum { NB = 70 };
+    double ub[NB], vb[NB], res[4][2 * NB];
+    for (int i = 0; i < NB; i++) {
+        ub[i] = (i % 10) / 9.0;
+        vb[i] = (i / 10) / 6.0;
+    }
+    bs_cview bu = {ub, NB, 0}, bv = {vb, NB, 0};
+    bs_view bk[4];
+    for (int i = 0; i < 4; i++)
+        bk[i] = (bs_view){res[i], NB, 2 * (ptrdiff_t)sizeof(double)};
+    CHECK_STATUS(bs_patch_eval_curvature(p, NB, &bu, &bv, bk, NULL, NULL, NULL), BS_OK);
+    int same = 1;
+    for (int i = 0; i < NB; i++) {
+        result r;
+        curvature_at(p, ub[i], vb[i], &r);
+        for (int c = 0; c < 4; c++)
+            same &= memcmp(&r.k[c], &res[c][2 * i], sizeof(double)) == 0;
+    }
+    CHECK(same);
+    bs_patch_destroy(q2);
+    bs_patch_destroy(p);
+}
+
+int main(void)
+{
+    random_patches();
+    printf("regular points: worst error %.3g of the scale (contract 1e-9), k_max direction %.3g rad "
+           "(contract 1e-8)\n", worst_regular, worst_angle);
+    sphere();
+    printf("limit points (the sphere's pole): worst error %.3g of the scale (contract 1e-6)\n", worst_limit);
+    cylinder();
+    teapot_poles();
+    cone_apex();
+    arguments();
+    return bs_test_exit("test_curvature");
+}
