@@ -42,7 +42,8 @@ bs_status bsi_patch_from_hom(size_t deg_u, size_t deg_v, size_t dim, int rationa
                              const double *hom, bs_patch **out);
 
 /* View checks: n elements from each of k views (k = 0 accepted). BS_ERR_INVALID_ARG for NULL
- * or misaligned data or strides, BS_ERR_SIZE when count < n or the byte extent overflows. */
+ * or misaligned data or strides, BS_ERR_SIZE when count < n, the byte extent overflows or the
+ * address of the first or the last element wraps around the address space. */
 bs_status bsi_check_views(const bs_view *views, size_t k, size_t n);
 bs_status bsi_check_cview(const bs_cview *view, size_t n);
 
