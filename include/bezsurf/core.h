@@ -90,7 +90,8 @@ BS_API const char *bs_status_string(bs_status s);
  * the highest address). `count` is how many elements the view can hold; a call that needs more
  * returns BS_ERR_SIZE and writes nothing, as does a view whose elements in use would not fit in the
  * address space (their span overflows ptrdiff_t, or an element address wraps around). `data` must be
- * aligned for double and `stride` a multiple of sizeof(double), else BS_ERR_INVALID_ARG. A set of d-dimensional points is an array of d views.
+ * aligned for double and `stride` a multiple of sizeof(double), else BS_ERR_INVALID_ARG. A set of
+ * d-dimensional points is an array of d views.
  * Output views must not overlap each other or the inputs; if they do, the values written are
  * unspecified (but nothing is written outside the views).
  * The library never keeps a view after the call returns.
