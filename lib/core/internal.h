@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /*
  * The patch object. Allocated as one block; never modified after bsi_patch_finish().
@@ -59,6 +60,22 @@ static inline double bsi_cget(const bs_cview *v, size_t k)
 {
     return *(const double *)(const void *)((const char *)v->data + (ptrdiff_t)k * bsi_stride(v->stride));
 }
+
+/* A file being written: a temporary file in the target's directory, renamed over the target by
+ * bsi_out_close() only after a complete, flushed and synced write. */
+typedef struct bsi_out_file {
+    FILE *f;          /* the temporary file, open for writing */
+    char *tmp;        /* its name */
+    const char *path; /* the target */
+} bsi_out_file;
+
+/* Start writing path. BS_ERR_IO (errno set) if path is an existing directory (EISDIR) or other
+ * non-regular file (EINVAL), or the temporary file cannot be created; BS_ERR_NO_MEMORY. */
+bs_status bsi_out_open(const char *path, bsi_out_file *o);
+/* Finish: with ok, flush, sync, close and rename over the target; on any failure (or !ok) close
+ * and remove the temporary file, leave the target as it was, and return BS_ERR_IO with errno
+ * telling why (the first failure's errno; with !ok, errno as the caller left it, else EIO). */
+bs_status bsi_out_close(bsi_out_file *o, int ok);
 
 /* 1 if every one of the n values is finite. */
 int bsi_all_finite(const double *x, size_t n);
