@@ -41,7 +41,7 @@ for f in one_point line wild_weights; do
     expect 0 "render $f" -- "$tool" render --nets --split --size 40x30 --ss 2 -o "$work/$f.png" "$hostile/$f.bpt"
     check "'$pngcheck' '$work/$f.png' 40 30" "$f: PNG not valid"
 done
-expect 2 "render an empty surface" -- "$tool" render -o "$work/empty.png" "$hostile/empty.bpt"
+expect 2 "render an empty surface" -- "$tool" render --size 64x48 -o "$work/empty.png" "$hostile/empty.bpt"
 check "grep -q 'no patches' '$work/err' && ! grep -q '3-D' '$work/err'" "empty surface message"
 check "[ ! -e '$work/empty.png' ]" "no picture of an empty surface"
 
@@ -69,8 +69,8 @@ check "grep -q 'cannot write $work/no/such/x.png: No such file or directory' '$w
 # write fails with EFBIG instead of killing the tool.
 for out in old.obj old.ply old.stl old.png; do
     echo "previous content" >"$work/$out"
-    cmd=tessellate
-    [ "$out" = old.png ] && cmd=render
+    cmd="tessellate -u 4"
+    [ "$out" = old.png ] && cmd="render --size 64x48 --ss 1"
     expect 3 "$cmd to $out past the file-size limit" -- sh -c \
         "trap '' XFSZ; ulimit -f 8; exec '$tool' $cmd -o '$work/$out' -b teacup"
     check "[ \"\$(cat '$work/$out')\" = 'previous content' ]" "$out: old content lost"
