@@ -1,5 +1,6 @@
 /* Helpers shared by the subcommands of the bezsurf tool. */
 #include "cmds.h"
+#include "outfile.h"
 
 #include <errno.h>
 #include <math.h>
@@ -35,8 +36,13 @@ static int take_builtin(const char *cmd, int argc, char **argv, int *i, cli_inpu
         cli_fail(cmd, CLI_USAGE, "%s needs a name (teapot, teacup or teaspoon)", argv[*i]);
         return -1;
     }
+    if (in->given) {
+        cli_usage_error(cmd, "more than one input (a FILE and --builtin, or two of them)", argv[*i + 1]);
+        return -1;
+    }
     in->builtin = argv[++*i];
     in->path = NULL;
+    in->given = 1;
     return 1;
 }
 
@@ -52,9 +58,10 @@ int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, in
     }
     if (a[0] == '-' && a[1] != '\0')
         return CLI_NOT_COMMON;
-    if (in->path != NULL)
-        return cli_usage_error(cmd, "more than one input file", a);
+    if (in->given)
+        return cli_usage_error(cmd, "more than one input (a FILE and --builtin, or two of them)", a);
     in->path = a; /* "-" included: standard input */
+    in->given = 1;
     return CLI_NEXT;
 }
 
@@ -87,7 +94,10 @@ static int read_stdin(const char *cmd, bs_surface **out)
     char *buf = NULL;
     for (;;) {
         if (len == cap) {
-            if (cap >= ((size_t)256 << 20)) {
+            if (cap >= ((size_t)256 << 20)) { /* full: only the end of the input may follow */
+                char extra;
+                if (fread(&extra, 1, 1, stdin) == 0)
+                    break;
                 free(buf);
                 return cli_fail(cmd, CLI_INPUT, "<stdin>: more than 256 MiB");
             }
@@ -106,7 +116,7 @@ static int read_stdin(const char *cmd, bs_surface **out)
     }
     if (ferror(stdin)) {
         free(buf);
-        return cli_fail(cmd, CLI_INPUT, "<stdin>: cannot read");
+        return cli_fail(cmd, CLI_INPUT, "<stdin>: cannot read: %s", strerror(errno));
     }
     bs_parse_error err;
     bs_status st = bs_surface_read_bpt(buf, len, &err, out);
@@ -135,8 +145,9 @@ int cli_load(const char *cmd, const cli_input *in, bs_surface **out)
     bs_status st = bs_surface_read_bpt_file(in->path, &err, out);
     if (st == BS_ERR_PARSE)
         return cli_fail(cmd, CLI_INPUT, "%s:%zu:%zu: %s", in->path, err.line, err.column, err.message);
-    if (st == BS_ERR_IO)
-        return cli_fail(cmd, CLI_INPUT, "%s: %s", in->path, errno ? strerror(errno) : err.message);
+    if (st == BS_ERR_IO) /* the library's reason, and the system's where a system call failed */
+        return cli_fail(cmd, CLI_INPUT, "%s: %s%s%s", in->path, err.message, errno ? ": " : "",
+                        errno ? strerror(errno) : "");
     if (st != BS_OK)
         return cli_fail(cmd, CLI_INTERNAL, "%s: %s", in->path, bs_status_string(st));
     return CLI_OK;
@@ -188,4 +199,29 @@ void cli_print_double(double x)
             break;
     }
     fputs(buf, stdout);
+}
+
+int cli_value(const char *cmd, const char *opt, const char *val, char *buf, size_t cap)
+{
+    size_t len = strlen(val);
+    if (len >= cap) {
+        cli_fail(cmd, CLI_USAGE, "value of %s too long (%zu bytes, at most %zu) (try 'bezsurf %s --help')", opt, len,
+                 cap - 1, cmd);
+        return 0;
+    }
+    memcpy(buf, val, len + 1);
+    return 1;
+}
+
+int cli_check_output(const char *cmd, const char *path)
+{
+    if (out_check(path) != 0)
+        return cli_fail_write(cmd, path);
+    return CLI_OK;
+}
+
+int cli_fail_write(const char *cmd, const char *path)
+{
+    return cli_fail(cmd, CLI_OUTPUT, "cannot write %s: %s", path,
+                    errno == EINVAL ? "not a regular file" : strerror(errno ? errno : EIO));
 }

@@ -1,6 +1,7 @@
 /* bezsurf eval: points (and normals) of a surface at given patch ids and parameters. */
 #include "cmds.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,12 +11,13 @@ static const char usage[] =
     "Evaluate the surface on patch ID at (U,V) and print one line per point:\n"
     "  ID U V x y z                     (--normals adds: nx ny nz kind)\n"
     "kind is 0 (regular), 1 (limit normal at a degenerate point) or 2 (undefined).\n"
-    "Numbers are printed with the fewest digits (at most 17) that read back exactly. U and V may lie outside [0,1].\n";
+    "Numbers are printed with the fewest digits (at most 17) that read back exactly. U and V may lie outside [0,1];\n"
+    "a point where the surface overflows (not a finite number) is an error, exit status 2.\n";
 
 int cmd_eval(int argc, char **argv)
 {
     const char *cmd = argv[0];
-    cli_input in = {NULL, "teapot"};
+    cli_input in = {NULL, "teapot", 0};
     int normals = 0;
     size_t n = 0, maxn = (size_t)argc / 4 + 1;
     uint32_t *ids = malloc(maxn * sizeof(uint32_t));
@@ -73,6 +75,13 @@ int cmd_eval(int argc, char **argv)
                                  : bs_surface_eval(s, n, ids, &u, &v, pos, NULL, NULL);
         if (st != BS_OK)
             rc = cli_fail(cmd, st == BS_ERR_DIMENSION ? CLI_INPUT : CLI_INTERNAL, "%s", bs_status_string(st));
+        /* Far outside [0,1] the polynomial overflows: say so instead of printing nan (before any
+         * line is printed). */
+        for (size_t k = 0; rc == CLI_OK && k < n; k++)
+            for (size_t c = 0; rc == CLI_OK && c < dim; c++)
+                if (!isfinite(out[c * n + k]))
+                    rc = cli_fail(cmd, CLI_INPUT, "--point %u %.17g %.17g: the surface overflows there", ids[k],
+                                  uv[2 * k], uv[2 * k + 1]);
         for (size_t k = 0; rc == CLI_OK && k < n; k++) {
             printf("%u", ids[k]);
             for (size_t c = 0; c < 2; c++) {

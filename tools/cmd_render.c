@@ -61,7 +61,8 @@ static int parse_args(int argc, char **argv, render_opts *o)
             o->output = val;
         } else if (strcmp(a, "--size") == 0) {
             char buf[64];
-            snprintf(buf, sizeof buf, "%s", val);
+            if (!cli_value("render", a, val, buf, sizeof buf))
+                return CLI_USAGE;
             char *x = strchr(buf, 'x');
             if (x == NULL)
                 return cli_usage_error("render", "bad size", val);
@@ -85,7 +86,8 @@ static int parse_args(int argc, char **argv, render_opts *o)
                 return cli_usage_error("render", "bad tolerance", val);
         } else if (strcmp(a, "--color") == 0) {
             char buf[128], *p = buf;
-            snprintf(buf, sizeof buf, "%s", val);
+            if (!cli_value("render", a, val, buf, sizeof buf))
+                return CLI_USAGE;
             for (int k = 0; k < 3; k++) {
                 char *comma = strchr(p, ',');
                 if ((comma == NULL) != (k == 2))
@@ -176,9 +178,11 @@ static int render(const render_opts *o, const bs_surface *s)
     bs_view nvw[3] = {{nrm, nv, s3}, {nrm + 1, nv, s3}, {nrm + 2, nv, s3}};
     double lo[3], hi[3];
     surface_box(s, lo, hi);
+    int framed = -1;
     if (pos && nrm && tri && rgb && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
-        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK &&
-        raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi) == 0) {
+        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK)
+        framed = raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi);
+    if (framed == 0) {
         raster_mesh(&r, pos, nrm, tri, nt, o->color);
         if (o->nets)
             draw_nets(&r, s);
@@ -187,8 +191,10 @@ static int render(const render_opts *o, const bs_surface *s)
             printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
             rc = cli_finish("render");
         } else {
-            rc = cli_fail("render", CLI_OUTPUT, "cannot write %s", o->output);
+            rc = cli_fail_write("render", o->output);
         }
+    } else if (framed == -2) {
+        rc = cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)");
     } else {
         cli_fail("render", CLI_INTERNAL, "out of memory");
     }
@@ -201,34 +207,59 @@ static int render(const render_opts *o, const bs_surface *s)
     return rc;
 }
 
-/* The patches to draw: all or --patch ID, each split in four with --split. */
+/* A power of two that brings the largest control coordinate of the patches drawn near 1, so that
+ * tiny (down to subnormal) and huge (up to DBL_MAX) models are tessellated, shaded and framed in
+ * finite numbers. Scaling by a power of two is exact (the picture does not change), and the
+ * exponent is kept well inside the range of a double. */
+static double unit_scale(const render_opts *o, const bs_surface *s)
+{
+    double big = 0.0;
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        if (o->patch != (size_t)-1 && i != o->patch)
+            continue;
+        double lo[3], hi[3];
+        if (bs_patch_bounds(bs_surface_get(s, i), lo, hi) == BS_OK)
+            for (int c = 0; c < 3; c++)
+                big = fmax(big, fmax(fabs(lo[c]), fabs(hi[c])));
+    }
+    if (!(big > 0.0) || !isfinite(big))
+        return 1.0;
+    int e = ilogb(big);
+    return ldexp(1.0, e < -1000 ? 1000 : e > 1000 ? -1000 : -e);
+}
+
+/* The patches to draw: all or --patch ID, scaled by unit_scale(), each split in four with --split. */
 static int select_patches(const render_opts *o, const bs_surface *s, bs_surface **out)
 {
     if (o->patch != (size_t)-1 && o->patch >= bs_surface_count(s))
         return cli_fail("render", CLI_INPUT, "no patch %zu (the surface has %zu)", o->patch, bs_surface_count(s));
+    double k = unit_scale(o, s);
+    const double affine[12] = {k, 0, 0, 0, 0, k, 0, 0, 0, 0, k, 0};
     bs_status st = bs_surface_create(out);
     for (size_t i = 0; st == BS_OK && i < bs_surface_count(s); i++) {
         if (o->patch != (size_t)-1 && i != o->patch)
             continue;
-        const bs_patch *p = bs_surface_get(s, i);
-        if (!o->split) {
+        bs_patch *p = NULL;
+        st = bs_patch_transform(bs_surface_get(s, i), affine, &p);
+        if (st == BS_OK && !o->split)
             st = bs_surface_add(*out, p, NULL);
-            continue;
+        if (st == BS_OK && o->split) {
+            bs_patch *quarter[4] = {NULL, NULL, NULL, NULL};
+            st = bs_patch_split4(p, 0.5, 0.5, quarter);
+            for (int q = 0; q < 4; q++) {
+                if (st == BS_OK)
+                    st = bs_surface_add(*out, quarter[q], NULL);
+                bs_patch_destroy(quarter[q]);
+            }
         }
-        bs_patch *quarter[4] = {NULL, NULL, NULL, NULL};
-        st = bs_patch_split4(p, 0.5, 0.5, quarter);
-        for (int k = 0; k < 4; k++) {
-            if (st == BS_OK)
-                st = bs_surface_add(*out, quarter[k], NULL);
-            bs_patch_destroy(quarter[k]);
-        }
+        bs_patch_destroy(p);
     }
     return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
 }
 
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot"}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
+    render_opts o = {{NULL, "teapot", 0}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
                      (size_t)-1};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
@@ -240,10 +271,17 @@ int cmd_render(int argc, char **argv)
         cli_default_output(&o.in, ".png", outbuf, sizeof outbuf);
         o.output = outbuf;
     }
+    rc = cli_check_output("render", o.output); /* before the work, not after it */
+    if (rc != CLI_OK)
+        return rc;
     bs_surface *s = NULL;
     rc = cli_load("render", &o.in, &s);
     if (rc != CLI_OK)
         return rc;
+    if (bs_surface_count(s) == 0) {
+        bs_surface_destroy(s);
+        return cli_fail("render", CLI_INPUT, "the surface has no patches: nothing to render");
+    }
     if (bs_surface_dim(s) != 3) {
         bs_surface_destroy(s);
         return cli_fail("render", CLI_INPUT, "the surface is not 3-D");

@@ -1,6 +1,7 @@
 /* `bezsurf tessellate`: surface to triangle mesh file (OBJ, PLY, STL). */
 #include "cmds.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -46,7 +47,7 @@ static int format_of_path(const char *path)
 
 int cmd_tessellate(int argc, char **argv)
 {
-    cli_input in = {NULL, "teapot"};
+    cli_input in = {NULL, "teapot", 0};
     const char *output = NULL;
     int format = -1, mode = 0 /* 0 relative, 1 absolute, 2 uniform */, flags = 0;
     double tol = 1e-3;
@@ -72,7 +73,8 @@ int cmd_tessellate(int argc, char **argv)
                 return cli_usage_error("tessellate", "unknown format", val);
         } else if (strcmp(a, "-u") == 0 || strcmp(a, "--uniform") == 0) {
             char buf[64];
-            snprintf(buf, sizeof buf, "%s", val);
+            if (!cli_value("tessellate", a, val, buf, sizeof buf))
+                return CLI_USAGE;
             char *x = strchr(buf, 'x');
             if (x != NULL)
                 *x = '\0';
@@ -80,6 +82,10 @@ int cmd_tessellate(int argc, char **argv)
                 return cli_usage_error("tessellate", "bad rate", val);
             if (x == NULL)
                 nv = nu;
+            if (nu < 1 || nv < 1 || nu > BS_TESS_MAX_RATE || nv > BS_TESS_MAX_RATE)
+                return cli_fail("tessellate", CLI_USAGE,
+                                "%s %s: segments out of range (1..%d) (try 'bezsurf tessellate --help')", a, val,
+                                BS_TESS_MAX_RATE);
             mode = 2;
         } else if (strcmp(a, "-t") == 0 || strcmp(a, "--tolerance") == 0 || strcmp(a, "-r") == 0 ||
                    strcmp(a, "--relative") == 0) {
@@ -101,8 +107,11 @@ int cmd_tessellate(int argc, char **argv)
     }
     if (format < 0)
         format = format_of_path(output);
+    int rc = cli_check_output("tessellate", output); /* before the work, not after it */
+    if (rc != CLI_OK)
+        return rc;
     bs_surface *s = NULL;
-    int rc = cli_load("tessellate", &in, &s);
+    rc = cli_load("tessellate", &in, &s);
     if (rc != CLI_OK)
         return rc;
     bs_mesh *m = NULL;
@@ -116,8 +125,11 @@ int cmd_tessellate(int argc, char **argv)
     }
     st = bs_mesh_write(m, format, output);
     if (st != BS_OK) {
+        int e = errno;
         bs_mesh_destroy(m);
-        return cli_fail("tessellate", CLI_OUTPUT, "%s: %s", output, bs_status_string(st));
+        errno = e;
+        return st == BS_ERR_IO ? cli_fail_write("tessellate", output)
+                               : cli_fail("tessellate", CLI_OUTPUT, "cannot write %s: %s", output, bs_status_string(st));
     }
     printf("%s: %zu vertices, %zu triangles", output, bs_mesh_vertex_count(m), bs_mesh_triangle_count(m));
     if (flags & BS_TESS_STRIPS)

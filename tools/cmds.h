@@ -33,6 +33,7 @@ int cmd_render(int argc, char **argv);
 typedef struct cli_input {
     const char *path;    /* NULL: built-in */
     const char *builtin; /* used when path is NULL; "teapot" by default */
+    int given;           /* a FILE or --builtin was given (a second one is a usage error) */
 } cli_input;
 
 /* 1 if arg is -h or --help. */
@@ -62,6 +63,13 @@ int cli_parse_size(const char *text, size_t *out);
 int cli_fail(const char *cmd, int code, const char *fmt, ...);
 /* Flush stdout; CLI_OUTPUT (with a message) if anything failed to be written. */
 int cli_finish(const char *cmd);
+/* Copy the value of option opt into buf (cap bytes); 0 after a usage error if it does not fit. */
+int cli_value(const char *cmd, const char *opt, const char *val, char *buf, size_t cap);
+/* Before any work: CLI_OK if path can be written (a temporary file can be made beside it and it is
+ * not an existing directory, FIFO or device), else CLI_OUTPUT after "cannot write PATH: reason". */
+int cli_check_output(const char *cmd, const char *path);
+/* "cannot write PATH: strerror(errno)"; returns CLI_OUTPUT. */
+int cli_fail_write(const char *cmd, const char *path);
 /* Print x with the fewest of 15, 16, 17 significant digits that read back exactly. */
 void cli_print_double(double x);
 /* "v0", "u1", "v1", "u0" for BS_SIDE_*. */

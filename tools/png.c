@@ -1,6 +1,8 @@
 /* PNG writer: signature, IHDR, one IDAT holding a zlib stream of stored deflate blocks, IEND. */
 #include "png.h"
+#include "outfile.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -47,6 +49,7 @@ static int chunk(FILE *f, const char *type, const unsigned char *data, size_t n)
 
 int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h)
 {
+    errno = EINVAL;
     if (w == 0 || h == 0 || w > 0x7fffffffu / 3 || h > 0x7fffffffu)
         return -1;
     size_t row = 3 * w + 1;
@@ -61,6 +64,7 @@ int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h
     if (raw == NULL || z == NULL) {
         free(raw);
         free(z);
+        errno = ENOMEM;
         return -1;
     }
     for (size_t y = 0; y < h; y++) {
@@ -91,12 +95,17 @@ int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h
     ihdr[11] = 0; /* filter method */
     ihdr[12] = 0; /* no interlace */
     static const unsigned char sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-    FILE *f = fopen(path, "wb");
-    int ok = f != NULL && fwrite(sig, 1, 8, f) == 8 && chunk(f, "IHDR", ihdr, 13) && chunk(f, "IDAT", z, k) &&
-             chunk(f, "IEND", NULL, 0);
-    if (f != NULL && fclose(f) != 0)
-        ok = 0;
+    out_file o;
+    int rc = out_open(path, &o);
+    if (rc == 0) {
+        errno = 0;
+        int ok = fwrite(sig, 1, 8, o.f) == 8 && chunk(o.f, "IHDR", ihdr, 13) && chunk(o.f, "IDAT", z, k) &&
+                 chunk(o.f, "IEND", NULL, 0);
+        rc = out_close(&o, ok);
+    }
+    int e = errno;
     free(raw);
     free(z);
-    return ok ? 0 : -1;
+    errno = e;
+    return rc;
 }

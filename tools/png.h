@@ -12,8 +12,9 @@ uint32_t png_crc32(uint32_t crc, const unsigned char *p, size_t n);
 /* Adler-32 of n bytes, continued from adler (start with 1). */
 uint32_t png_adler32(uint32_t adler, const unsigned char *p, size_t n);
 
-/* Write w x h pixels, 3 bytes (R, G, B) each, row by row from the top. 0 on success, -1 if the
- * file cannot be written or the size is out of range. */
+/* Write w x h pixels, 3 bytes (R, G, B) each, row by row from the top, replacing path atomically
+ * (tools/outfile.h: the old file stays as it was unless the whole new one was written). 0 on
+ * success, -1 with errno set if the file cannot be written (EINVAL: the size is out of range). */
 int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h);
 
 #endif

@@ -106,6 +106,11 @@ int raster_init(raster *r, size_t w, size_t h, size_t ss, double azimuth, double
     r->scale = fmin(sx, sy);
     r->ox = 0.5 * (double)r->W - r->scale * 0.5 * (xmin + xmax);
     r->oy = 0.5 * (double)r->H + r->scale * 0.5 * (ymin + ymax);
+    /* A box too small (the scale overflows) or too large (its size overflows) cannot be framed. */
+    if (!(isfinite(r->scale) && r->scale > 0.0 && isfinite(r->ox) && isfinite(r->oy))) {
+        raster_free(r);
+        return -2;
+    }
     return 0;
 }
 
@@ -138,10 +143,14 @@ void raster_mesh(raster *r, const double *pos, const double *nrm, const uint32_t
     for (size_t t = 0; t < ntri; t++) {
         double sx[3], sy[3], sz[3];
         const uint32_t *v = tri + 3 * t;
-        for (int k = 0; k < 3; k++)
+        int finite = 1;
+        for (int k = 0; k < 3; k++) {
             project(r, pos + 3 * (size_t)v[k], &sx[k], &sy[k], &sz[k]);
+            finite = finite && isfinite(sx[k]) && isfinite(sy[k]) && isfinite(sz[k]);
+        }
         double area = (sx[1] - sx[0]) * (sy[2] - sy[0]) - (sx[2] - sx[0]) * (sy[1] - sy[0]);
-        if (fabs(area) < 1e-12)
+        /* NaN or Inf would pass the bounds tests below and make the pixel loops unbounded */
+        if (!finite || !isfinite(area) || fabs(area) < 1e-12)
             continue;
         double x0 = floor(fmin(sx[0], fmin(sx[1], sx[2]))), x1 = ceil(fmax(sx[0], fmax(sx[1], sx[2])));
         double y0 = floor(fmin(sy[0], fmin(sy[1], sy[2]))), y1 = ceil(fmax(sy[0], fmax(sy[1], sy[2])));
@@ -171,12 +180,41 @@ void raster_mesh(raster *r, const double *pos, const double *nrm, const uint32_t
     }
 }
 
+/* Narrow [t0, t1] to the parameters where a + t (b - a) lies in [lo, hi]; 0 if none does. */
+static int clip(double a, double b, double lo, double hi, double *t0, double *t1)
+{
+    double d = b - a;
+    if (d == 0.0)
+        return a >= lo && a <= hi;
+    double ta = (lo - a) / d, tb = (hi - a) / d;
+    if (ta > tb) {
+        double t = ta;
+        ta = tb;
+        tb = t;
+    }
+    *t0 = fmax(*t0, ta);
+    *t1 = fmin(*t1, tb);
+    return *t0 <= *t1;
+}
+
 void raster_line(raster *r, const double a[3], const double b[3], double width, const double rgb[3])
 {
     double ax, ay, az, bx, by, bz;
     project(r, a, &ax, &ay, &az);
     project(r, b, &bx, &by, &bz);
-    double len = hypot(bx - ax, by - ay), half = 0.5 * width * (double)r->ss;
+    double half = 0.5 * width * (double)r->ss;
+    if (!(isfinite(ax) && isfinite(ay) && isfinite(az) && isfinite(bx) && isfinite(by) && isfinite(bz)))
+        return;
+    /* Only the part inside the frame (widened by the line's half width) is drawn, so the number of
+     * steps is bounded by the frame's size whatever the end points. */
+    double t0 = 0.0, t1 = 1.0;
+    if (!clip(ax, bx, -half - 1.0, (double)r->W + half + 1.0, &t0, &t1) ||
+        !clip(ay, by, -half - 1.0, (double)r->H + half + 1.0, &t0, &t1))
+        return;
+    double dx0 = bx - ax, dy0 = by - ay, dz0 = bz - az;
+    bx = ax + t1 * dx0, by = ay + t1 * dy0, bz = az + t1 * dz0;
+    ax += t0 * dx0, ay += t0 * dy0, az += t0 * dz0;
+    double len = hypot(bx - ax, by - ay);
     size_t steps = (size_t)ceil(len) + 1;
     double bias = 0.004 * (double)r->W / r->scale; /* 0.4% of the frame, in model units */
     for (size_t s = 0; s <= steps; s++) {

@@ -18,7 +18,8 @@ typedef struct raster {
 } raster;
 
 /* Set up the image and a camera looking at the box lo..hi (model coordinates) from the given
- * azimuth and elevation in degrees, fitted to the frame. 0 on success, -1 if out of memory. */
+ * azimuth and elevation in degrees, fitted to the frame. 0 on success, -1 if out of memory, -2 if
+ * the box cannot be framed (its size or the scale fitting it to the frame is not a finite number). */
 int raster_init(raster *r, size_t w, size_t h, size_t ss, double azimuth, double elevation, int up_y,
                 const double lo[3], const double hi[3]);
 

@@ -95,8 +95,10 @@ BS_API const char *bs_status_string(bs_status s);
  * Element k of a view is the double at byte address `(char *)data + k * stride`; a stride of 0 means
  * packed (sizeof(double)). Negative strides are allowed (data then points at element 0, the one with
  * the highest address). `count` is how many elements the view can hold; a call that needs more
- * returns BS_ERR_SIZE and writes nothing. `data` must be aligned for double and `stride` a multiple
- * of sizeof(double), else BS_ERR_INVALID_ARG. A set of d-dimensional points is an array of d views.
+ * returns BS_ERR_SIZE and writes nothing, as does a view whose elements in use would not fit in the
+ * address space (their span overflows ptrdiff_t, or an element address wraps around). `data` must be
+ * aligned for double and `stride` a multiple of sizeof(double), else BS_ERR_INVALID_ARG. A set of
+ * d-dimensional points is an array of d views.
  * Output views must not overlap each other or the inputs; if they do, the values written are
  * unspecified (but nothing is written outside the views).
  * The library never keeps a view after the call returns.
@@ -221,7 +223,8 @@ BS_API bs_status bs_patch_get_ctrl(const bs_patch *p, double *ctrl, size_t ctrl_
  *   (BS_ERR_DIMENSION); then, unless the count is 0, the views in the order of the parameters
  *   (u, v, then the outputs, each output's coordinates in order): a NULL view array where one is
  *   required or NULL data, misaligned data or stride (BS_ERR_INVALID_ARG), count below the number
- *   of points or a byte extent (n-1)*|stride| that overflows ptrdiff_t (BS_ERR_SIZE).
+ *   of points, a byte extent (n-1)*|stride| + sizeof(double) that overflows ptrdiff_t, or a first
+ *   or last element whose address would wrap around the address space (BS_ERR_SIZE).
  * - n = 0 (or nu = 0 or nv = 0) is a successful no-op once p and the orders or dimension have been
  *   checked; the views are then neither checked nor read.
  * - u and v may lie outside [0,1]: the polynomial is extrapolated (and may overflow to Inf far away;

@@ -49,11 +49,19 @@ BS_API bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_erro
 
 /**
  * @brief Read a .bpt file into a new surface (as bs_surface_read_bpt() on the file's bytes).
- * @param[in]  path  file name, passed to fopen() unchanged.
- * @param[out] err   NULL, or receives the error position and reason on BS_ERR_PARSE or BS_ERR_IO.
+ * Only regular files are read: a directory, FIFO, device or socket is refused before any byte is
+ * read, and opening never waits (a FIFO without a writer does not block).
+ * @param[in]  path  file name, passed to open() unchanged.
+ * @param[out] err   NULL, or receives the error position and reason on BS_ERR_PARSE or BS_ERR_IO
+ *                   (line and column 0 and one of "cannot open the file", "not a regular file (a
+ *                   directory)" or (a FIFO, a device, a socket), "cannot read the file", "file
+ *                   larger than 256 MiB").
  * @param[out] out   receives the new surface (NULL on failure).
  * @return BS_OK; BS_ERR_INVALID_ARG if path or out is NULL; BS_ERR_IO if the file cannot be opened
- *         or read, or is larger than 256 MiB; BS_ERR_PARSE; BS_ERR_NO_MEMORY.
+ *         or read, is not a regular file, or is larger than 256 MiB (268435456 bytes; a file of
+ *         exactly that size is read), with errno set by the failing system call (EISDIR for a
+ *         directory, EFBIG for a file too large, 0 for other non-regular files); BS_ERR_PARSE;
+ *         BS_ERR_NO_MEMORY.
  * @since 1.0
  */
 BS_API bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out);
@@ -75,11 +83,18 @@ BS_API bs_status bs_surface_write_bpt(const bs_surface *s, char *buf, size_t cap
 
 /**
  * @brief Write a surface as a .bpt file (same text as bs_surface_write_bpt(), without the NUL).
+ * The file is replaced atomically: the text goes to a new temporary file in the same directory
+ * (`.bezsurf-<16 hex digits>.tmp`), which is flushed, synced to disk and then renamed over path.
+ * On any failure the temporary file is removed and an existing file at path is left untouched.
+ * A replaced file keeps its permission bits; a new one gets 0666 less the umask. A symbolic link
+ * at path is replaced by the file, not followed. An existing directory, FIFO or device at path is
+ * never replaced (BS_ERR_IO).
  * @param[in] s     the surface (3-D patches).
- * @param[in] path  file name, created or truncated.
- * @return BS_OK; BS_ERR_INVALID_ARG if s or path is NULL; BS_ERR_DIMENSION; BS_ERR_IO if the file
- *         cannot be opened, written or closed (it may then be left partly written);
- *         BS_ERR_NO_MEMORY.
+ * @param[in] path  file name.
+ * @return BS_OK; BS_ERR_INVALID_ARG if s or path is NULL; BS_ERR_DIMENSION; BS_ERR_IO if path is
+ *         not a regular file or the file cannot be created, written, synced or renamed, with errno
+ *         telling why (e.g. ENOSPC, EFBIG, EACCES; EISDIR for a directory, EINVAL for another
+ *         non-regular file); BS_ERR_NO_MEMORY.
  * @since 1.0
  */
 BS_API bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path);

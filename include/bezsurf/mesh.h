@@ -215,12 +215,18 @@ BS_API bs_status bs_mesh_copy_strips(const bs_mesh *m, uint32_t *idx, size_t idx
 
 /**
  * @brief Write a mesh to a file. Numbers are written the same in every C locale.
+ * The file is replaced atomically, as by bs_surface_write_bpt_file(): written to a temporary file
+ * in the same directory, flushed, synced and renamed over path; on failure the temporary file is
+ * removed and an existing file at path is left untouched. An existing directory, FIFO or device at
+ * path is never replaced.
  * @param[in] m       the mesh.
  * @param[in] format  BS_MESH_OBJ, BS_MESH_PLY, BS_MESH_PLY_ASCII or BS_MESH_STL.
- * @param[in] path    file name; the file is created or truncated.
- * @return BS_OK; BS_ERR_INVALID_ARG if m or path is NULL or format is unknown; BS_ERR_IO if the
- *         file cannot be opened or written (it may then be left partly written); BS_ERR_SIZE if the
- *         mesh has more triangles than binary STL can count (UINT32_MAX).
+ * @param[in] path    file name.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or path is NULL or format is unknown; BS_ERR_IO if path is
+ *         not a regular file or the file cannot be created, written, synced or renamed, with errno
+ *         telling why (e.g. ENOSPC, EFBIG, EACCES; EISDIR for a directory, EINVAL for another
+ *         non-regular file); BS_ERR_SIZE if the mesh has more triangles than binary STL can count
+ *         (UINT32_MAX).
  * @since 1.0
  */
 BS_API bs_status bs_mesh_write(const bs_mesh *m, int format, const char *path);

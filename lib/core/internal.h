@@ -1,6 +1,7 @@
 /*
  * Core layer, shared with every layer above it: the patch object, the checks and accessors of
- * strided views, and the table of all partials at one point (what queries build on). The
+ * strided views, the table of all partials at one point (what queries build on), and files
+ * written atomically. The
  * evaluation loops are the core's own business and live in core/kernels.h. Not installed.
  */
 #ifndef BEZSURF_CORE_INTERNAL_H
@@ -10,6 +11,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /*
  * The patch object. Allocated as one block; never modified after bsi_patch_finish().
@@ -42,7 +44,8 @@ bs_status bsi_patch_from_hom(size_t deg_u, size_t deg_v, size_t dim, int rationa
                              const double *hom, bs_patch **out);
 
 /* View checks: n elements from each of k views (k = 0 accepted). BS_ERR_INVALID_ARG for NULL
- * or misaligned data or strides, BS_ERR_SIZE when count < n or the byte extent overflows. */
+ * or misaligned data or strides, BS_ERR_SIZE when count < n, the byte extent overflows or the
+ * address of the first or the last element wraps around the address space. */
 bs_status bsi_check_views(const bs_view *views, size_t k, size_t n);
 bs_status bsi_check_cview(const bs_cview *view, size_t n);
 
@@ -64,6 +67,22 @@ static inline double bsi_cget(const bs_cview *v, size_t k)
 size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
 void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
                      double *scratch, double *out);
+
+/* A file being written: a temporary file in the target's directory, renamed over the target by
+ * bsi_out_close() only after a complete, flushed and synced write. */
+typedef struct bsi_out_file {
+    FILE *f;          /* the temporary file, open for writing */
+    char *tmp;        /* its name */
+    const char *path; /* the target */
+} bsi_out_file;
+
+/* Start writing path. BS_ERR_IO (errno set) if path is an existing directory (EISDIR) or other
+ * non-regular file (EINVAL), or the temporary file cannot be created; BS_ERR_NO_MEMORY. */
+bs_status bsi_out_open(const char *path, bsi_out_file *o);
+/* Finish: with ok, flush, sync, close and rename over the target; on any failure (or !ok) close
+ * and remove the temporary file, leave the target as it was, and return BS_ERR_IO with errno
+ * telling why (the first failure's errno; with !ok, errno as the caller left it, else EIO). */
+bs_status bsi_out_close(bsi_out_file *o, int ok);
 
 /* 1 if every one of the n values is finite. */
 int bsi_all_finite(const double *x, size_t n);

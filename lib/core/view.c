@@ -11,10 +11,21 @@ static bs_status check_extent(const void *data, ptrdiff_t stride, size_t count, 
         return BS_ERR_INVALID_ARG;
     if (count < n)
         return BS_ERR_SIZE;
-    /* (n-1) * |stride| must fit in ptrdiff_t so that element addresses can be formed. */
+    if (n == 0)
+        return BS_OK;
+    /* The bytes from the lowest to the end of the highest of the n elements must form an object:
+     * (n-1) * |stride| + sizeof(double) fits in ptrdiff_t, so that element addresses can be formed
+     * and subtracted, ... */
     ptrdiff_t s = bsi_stride(stride);
     size_t mag = s < 0 ? (size_t)0 - (size_t)s : (size_t)s;
-    if (n > 1 && (n - 1) > (size_t)PTRDIFF_MAX / mag)
+    size_t room = (size_t)PTRDIFF_MAX - sizeof(double);
+    if (n > 1 && (n - 1) > room / mag)
+        return BS_ERR_SIZE;
+    /* ... and the first and the last element lie inside the address space: computing their
+     * addresses must not wrap around. */
+    size_t span = (n - 1) * mag;
+    uintptr_t at = (uintptr_t)data;
+    if (s < 0 ? at < span : at > UINTPTR_MAX - sizeof(double) + 1 - span)
         return BS_ERR_SIZE;
     return BS_OK;
 }

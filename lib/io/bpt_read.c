@@ -1,10 +1,16 @@
 /* Reading the .bpt text format (docs/bpt-format.md) from memory or from a file. */
+#define _POSIX_C_SOURCE 200809L
+
 #include "io/internal.h"
 
+#include <errno.h>
+#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 /* Each patch needs at least "0 0 x y z" and a separator before it: 10 bytes. */
 #define MIN_PATCH_BYTES 10
@@ -210,24 +216,71 @@ static void io_error(bs_parse_error *err, const char *what)
     }
 }
 
+/* Open path for reading if it is a regular file. Opening does not wait (a FIFO without a writer
+ * would block a plain open), and anything else is refused before a byte is read: a FIFO, a device
+ * or a socket could block the reads or never end. NULL with err and errno set on failure. */
+static FILE *open_regular(const char *path, bs_parse_error *err)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        int e = errno;
+        io_error(err, "cannot open the file");
+        errno = e;
+        return NULL;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        (void)close(fd);
+        io_error(err, "cannot open the file");
+        errno = e;
+        return NULL;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        (void)close(fd);
+        io_error(err, S_ISDIR(st.st_mode)    ? "not a regular file (a directory)"
+                      : S_ISFIFO(st.st_mode) ? "not a regular file (a FIFO)"
+                      : S_ISSOCK(st.st_mode) ? "not a regular file (a socket)"
+                                             : "not a regular file (a device)");
+        errno = S_ISDIR(st.st_mode) ? EISDIR : 0;
+        return NULL;
+    }
+    /* regular files never block: the flag changes nothing for them and may stay set */
+    FILE *f = fdopen(fd, "rb");
+    if (f == NULL) {
+        int e = errno;
+        (void)close(fd);
+        io_error(err, "cannot open the file");
+        errno = e;
+    }
+    return f;
+}
+
 bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
     if (out != NULL)
         *out = NULL;
     if (path == NULL || out == NULL)
         return BS_ERR_INVALID_ARG;
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) {
-        io_error(err, "cannot open the file");
+    FILE *f = open_regular(path, err);
+    if (f == NULL)
         return BS_ERR_IO;
-    }
     char *buf = NULL;
     size_t len = 0, cap = 0;
     bs_status st = BS_OK;
     for (;;) {
         if (len == cap) {
-            if (cap >= BPT_FILE_MAX) { /* e.g. a device that never ends */
+            if (cap >= BPT_FILE_MAX) { /* full: only the end of the file may follow */
+                char extra;
+                if (fread(&extra, 1, 1, f) == 0) {
+                    if (ferror(f)) {
+                        io_error(err, "cannot read the file");
+                        st = BS_ERR_IO;
+                    }
+                    break;
+                }
                 io_error(err, "file larger than 256 MiB");
+                errno = EFBIG;
                 st = BS_ERR_IO;
                 break;
             }

@@ -103,13 +103,10 @@ bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path)
     if (o.buf == NULL)
         return BS_ERR_NO_MEMORY;
     emit(s, &o);
-    FILE *f = fopen(path, "wb");
-    if (f == NULL) {
-        free(o.buf);
-        return BS_ERR_IO;
-    }
-    int ok = fwrite(o.buf, 1, o.len, f) == o.len;
-    ok = (fclose(f) == 0) && ok;
+    bsi_out_file out;
+    st = bsi_out_open(path, &out);
+    if (st == BS_OK)
+        st = bsi_out_close(&out, fwrite(o.buf, 1, o.len, out.f) == o.len);
     free(o.buf);
-    return ok ? BS_OK : BS_ERR_IO;
+    return st;
 }

@@ -1,6 +1,8 @@
 /* Mesh export: the file and memory entry points, each running one of the format writers. */
 #include "mesh/export.h"
 
+#include <errno.h>
+
 static int format_ok(int format)
 {
     return format == BS_MESH_OBJ || format == BS_MESH_PLY || format == BS_MESH_PLY_ASCII ||
@@ -23,14 +25,15 @@ bs_status bs_mesh_write(const bs_mesh *m, int format, const char *path)
         return BS_ERR_INVALID_ARG;
     if (format == BS_MESH_STL && m->ntri > UINT32_MAX)
         return BS_ERR_SIZE;
-    FILE *f = fopen(path, "wb");
-    if (f == NULL)
-        return BS_ERR_IO;
-    bsi_sink s = {f, NULL, 0, 0, 0};
+    bsi_out_file out;
+    bs_status st = bsi_out_open(path, &out);
+    if (st != BS_OK)
+        return st;
+    bsi_sink s = {out.f, NULL, 0, 0, 0};
     export_to(m, format, &s);
-    if (fclose(f) != 0)
-        s.err = 1;
-    return s.err ? BS_ERR_IO : BS_OK;
+    if (s.err)
+        errno = s.err;
+    return bsi_out_close(&out, !s.err);
 }
 
 bs_status bs_mesh_write_memory(const bs_mesh *m, int format, void *buf, size_t cap, size_t *size)

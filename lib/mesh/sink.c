@@ -1,13 +1,14 @@
 /* The byte sink the mesh writers share (mesh/sink.h). */
 #include "mesh/sink.h"
 
+#include <errno.h>
 #include <string.h>
 
 void bsi_sink_put(bsi_sink *s, const void *data, size_t n)
 {
     if (s->f != NULL) {
         if (!s->err && fwrite(data, 1, n, s->f) != n)
-            s->err = 1;
+            s->err = errno ? errno : EIO;
     } else if (s->buf != NULL) {
         if (s->len > s->cap || n > s->cap - s->len)
             s->err = 1;
@@ -27,7 +28,7 @@ void bsi_sink_double(bsi_sink *s, double x, int digits)
     char raw[64], out[64];
     int n = snprintf(raw, sizeof raw, "%.*g", digits, x);
     if (n < 0 || (size_t)n >= sizeof raw) {
-        s->err = 1;
+        s->err = EIO;
         return;
     }
     /* The C locale's decimal point may be ',' or several bytes: whatever is not part of a number

@@ -1,6 +1,7 @@
 /*
  * A byte sink for the mesh writers: a FILE, a caller buffer of cap bytes, or neither (only
- * counts). Writes past cap or failing writes set err; len counts every byte asked for. Private to
+ * counts). Writes past cap or failing writes set err (a failing file write to its errno); len
+ * counts every byte asked for. Private to
  * lib/mesh/; not installed.
  */
 #ifndef BEZSURF_MESH_SINK_H

@@ -137,18 +137,25 @@ typedef struct bad_cview {
     bs_cview v;
 } bad_cview;
 
-static bad_cview bad_in[6];
+enum { N_BAD_IN = 8, N_SPOIL = 7 };
+static bad_cview bad_in[N_BAD_IN];
+
+/* A stride whose (N-1) multiples fit in ptrdiff_t, but which moves the last of N elements out of the
+ * address space: backwards past address 0, or forwards past the end of any object. */
+#define WRAP_STRIDE ((ptrdiff_t)((PTRDIFF_MAX / (N - 1)) & ~(ptrdiff_t)7))
 
 static void make_bad_inputs(void)
 {
     const double *mis = (const double *)(const void *)((const char *)umis + 4);
-    bad_cview b[6] = {
+    bad_cview b[N_BAD_IN] = {
         {"NULL view data", BS_ERR_INVALID_ARG, {NULL, N, 0}},
         {"misaligned data", BS_ERR_INVALID_ARG, {mis, N, 0}},
         {"misaligned stride", BS_ERR_INVALID_ARG, {ugood, N, 12}},
         {"count too small", BS_ERR_SIZE, {ugood, N - 1, 0}},
         {"n x stride overflows", BS_ERR_SIZE, {ugood, SIZE_MAX, PTRDIFF_MAX / 2 + 1}},
         {"negative misaligned stride", BS_ERR_INVALID_ARG, {ugood + N - 1, N, -4}},
+        {"element address wraps", BS_ERR_SIZE, {ugood, N, -WRAP_STRIDE}},
+        {"element address wraps", BS_ERR_SIZE, {ugood, N, WRAP_STRIDE}},
     };
     memcpy(bad_in, b, sizeof b);
 }
@@ -161,13 +168,16 @@ static void spoil(int d, int c, int how)
     case 1: ov[d][c].data = (double *)(void *)((char *)ov[d][c].data + 4); break;
     case 2: ov[d][c].stride = 12; break;
     case 3: ov[d][c].count = N - 1; break;
+    case 5: ov[d][c].stride = -WRAP_STRIDE; break;
+    case 6: ov[d][c].stride = WRAP_STRIDE; break;
     default: ov[d][c].count = SIZE_MAX; ov[d][c].stride = PTRDIFF_MAX / 2 + 1; break;
     }
 }
-static const char *const spoil_cls[5] = {"NULL view data", "misaligned data", "misaligned stride",
-                                          "count too small", "n x stride overflows"};
-static const bs_status spoil_st[5] = {BS_ERR_INVALID_ARG, BS_ERR_INVALID_ARG, BS_ERR_INVALID_ARG, BS_ERR_SIZE,
-                                      BS_ERR_SIZE};
+static const char *const spoil_cls[N_SPOIL] = {"NULL view data", "misaligned data", "misaligned stride",
+                                                "count too small", "n x stride overflows",
+                                                "element address wraps", "element address wraps"};
+static const bs_status spoil_st[N_SPOIL] = {BS_ERR_INVALID_ARG, BS_ERR_INVALID_ARG, BS_ERR_INVALID_ARG, BS_ERR_SIZE,
+                                            BS_ERR_SIZE, BS_ERR_SIZE, BS_ERR_SIZE};
 
 /* Output spoiling needs reset() to run first: these macros do it inside the call expression. */
 static const bs_view *sp(int d, int c, int how)
@@ -234,7 +244,7 @@ static void test_evaluators(void)
         bs_surface_eval_normal(S3, N, bad_ids, &u, &v, ov[0], ov[3], kbuf + 1));
 
     /* every bad input view, as u and as v */
-    for (int k = 0; k < 6; k++) {
+    for (int k = 0; k < N_BAD_IN; k++) {
         const bad_cview *b = &bad_in[k];
         for (int which = 0; which < 2; which++) {
             const bs_cview *bu = which ? &u : &b->v, *bv = which ? &b->v : &v;
@@ -248,8 +258,18 @@ static void test_evaluators(void)
                 bs_surface_eval_normal(S3, N, ids, bu, bv, ov[0], ov[3], kbuf + 1));
         }
     }
+    /* two elements whose byte distance fits in ptrdiff_t, but whose second address does not exist */
+    {
+        const bs_cview back = {ugood, 2, -((ptrdiff_t)1 << 62)}, fwd = {ugood, 2, PTRDIFF_MAX - 7};
+        BAD("bs_patch_eval", "element address wraps", BS_ERR_SIZE, bs_patch_eval(P3, 2, &back, &v, ov[0], NULL, NULL));
+        BAD("bs_patch_eval", "element address wraps", BS_ERR_SIZE, bs_patch_eval(P3, 2, &u, &fwd, ov[0], NULL, NULL));
+        BAD("bs_patch_eval", "element address wraps", BS_ERR_SIZE,
+            (ov[0][1].stride = -((ptrdiff_t)1 << 62), ov[0][1].count = 2, bs_patch_eval(P3, 2, &u, &v, ov[0], NULL, NULL)));
+        BAD("bs_patch_eval", "element address wraps", BS_ERR_SIZE,
+            (ov[0][2].stride = PTRDIFF_MAX - 7, bs_patch_eval(P3, 2, &u, &v, ov[0], NULL, NULL)));
+    }
     /* every bad output view, in each output and coordinate */
-    for (int how = 0; how < 5; how++)
+    for (int how = 0; how < N_SPOIL; how++)
         for (int d = 0; d < 3; d++)
             for (int c = 0; c < 3; c++) {
                 const bs_view *o = NULL;
