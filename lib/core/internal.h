@@ -1,8 +1,8 @@
 /*
  * Core layer, shared with every layer above it: the patch object, the checks and accessors of
  * strided views, the table of all partials at one point (what queries build on), and files
- * written atomically. The
- * evaluation loops are the core's own business and live in core/kernels.h. Not installed.
+ * written atomically. The evaluation loops are the core's own business and live in
+ * core/kernels.h. Not installed.
  */
 #ifndef BEZSURF_CORE_INTERNAL_H
 #define BEZSURF_CORE_INTERNAL_H
