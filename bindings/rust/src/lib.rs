@@ -43,6 +43,7 @@ mod io;
 mod mesh;
 mod ops;
 mod patch;
+mod query;
 mod strided;
 mod surface;
 mod surface_eval;
@@ -55,6 +56,7 @@ pub use io::builtin_names;
 pub use mesh::{Mesh, MeshFormat, TessFlags, TESS_MAX_RATE};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
+pub use query::{Curvature, CurvatureKind};
 pub use strided::{PointsMut, Strided, StridedIter, StridedMut};
 pub use surface::{Iter, Surface};
 

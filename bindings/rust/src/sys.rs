@@ -56,6 +56,13 @@ pub const BS_NORMAL_LIMIT: c_uchar = 1;
 /// Normal kind: no normal exists; (0, 0, 0) was written (NaN for a NaN parameter).
 pub const BS_NORMAL_UNDEFINED: c_uchar = 2;
 
+/// Curvature kind: from the fundamental forms at the point (since 1.1).
+pub const BS_CURV_REGULAR: c_uchar = 0;
+/// Curvature kind: the limit along the line towards (1/2, 1/2) (since 1.1).
+pub const BS_CURV_LIMIT: c_uchar = 1;
+/// Curvature kind: no finite curvature; NaN was written (since 1.1).
+pub const BS_CURV_UNDEFINED: c_uchar = 2;
+
 /// The u direction (first index of the control net).
 pub const BS_DIR_U: c_int = 0;
 /// The v direction (second index of the control net).
@@ -524,5 +531,17 @@ extern "C" {
         index: *mut usize,
         local_u: *mut f64,
         local_v: *mut f64,
+    ) -> bs_status;
+    /// Curvatures and principal directions at n points of a 3-D patch (`bs_patch_eval_curvature`,
+    /// since 1.1).
+    pub fn bs_patch_eval_curvature(
+        p: *const bs_patch,
+        n: usize,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        curv: *const bs_view,
+        dmin: *const bs_view,
+        dmax: *const bs_view,
+        kind: *mut c_uchar,
     ) -> bs_status;
 }

@@ -19,6 +19,7 @@ const PROBE: &str = r#"
 #include "bezsurf/continuity.h"
 #include "bezsurf/mesh.h"
 #include "bezsurf/bspline.h"
+#include "bezsurf/query.h"
 
 #define ALIGNOF(T) offsetof(struct { char c; T t; }, t)
 #define SIZE(T) printf("size " #T " %zu\n", sizeof(T)); printf("align " #T " %zu\n", ALIGNOF(T))
@@ -49,6 +50,7 @@ int main(void)
     CONST(BS_MAX_DEGREE); CONST(BS_MAX_DIM);
     CONST(BS_NORMAL_REGULAR); CONST(BS_NORMAL_LIMIT); CONST(BS_NORMAL_UNDEFINED);
     CONST(BS_DIR_U); CONST(BS_DIR_V);
+    CONST(BS_CURV_REGULAR); CONST(BS_CURV_LIMIT); CONST(BS_CURV_UNDEFINED);
     CONST(BS_SIDE_V0); CONST(BS_SIDE_U1); CONST(BS_SIDE_V1); CONST(BS_SIDE_U0);
     CONST(BS_TESS_RELATIVE); CONST(BS_TESS_STRIPS); CONST(BS_TESS_MAX_RATE);
     CONST(BS_MESH_OBJ); CONST(BS_MESH_PLY); CONST(BS_MESH_PLY_ASCII); CONST(BS_MESH_STL);
@@ -153,7 +155,7 @@ fn sys_matches_the_c_header() {
         ("align size_t", align_of::<usize>() as i64),
         ("align ptrdiff_t", align_of::<isize>() as i64),
     ];
-    let consts: [(&str, i64); 30] = [
+    let consts: [(&str, i64); 33] = [
         ("BS_OK", sys::BS_OK as i64),
         ("BS_ERR_INVALID_ARG", sys::BS_ERR_INVALID_ARG as i64),
         ("BS_ERR_NO_MEMORY", sys::BS_ERR_NO_MEMORY as i64),
@@ -173,6 +175,9 @@ fn sys_matches_the_c_header() {
         ("BS_NORMAL_UNDEFINED", sys::BS_NORMAL_UNDEFINED as i64),
         ("BS_DIR_U", sys::BS_DIR_U as i64),
         ("BS_DIR_V", sys::BS_DIR_V as i64),
+        ("BS_CURV_REGULAR", sys::BS_CURV_REGULAR as i64),
+        ("BS_CURV_LIMIT", sys::BS_CURV_LIMIT as i64),
+        ("BS_CURV_UNDEFINED", sys::BS_CURV_UNDEFINED as i64),
         ("BS_SIDE_V0", sys::BS_SIDE_V0 as i64),
         ("BS_SIDE_U1", sys::BS_SIDE_U1 as i64),
         ("BS_SIDE_V1", sys::BS_SIDE_V1 as i64),
