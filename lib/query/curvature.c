@@ -42,8 +42,10 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
         }
         return;
     }
-    double theta = 0.5 * atan2(2.0 * b, a - c); /* the eigenvector of k_max */
-    double ct = cos(theta), st = sin(theta);
+    /* The eigenvector of k_max, (k_max - c, b) or (b, k_max - a), whichever row of
+     * [a - k_max, b; b, c - k_max] leaves the larger first entry (no cancellation, no trig). */
+    double half = 0.5 * (a - c), x = a >= c ? half + s : b, y = a >= c ? b : s - half;
+    double len = hypot(x, y), ct = x / len, st = y / len;
     for (int i = 0; i < 3; i++) { /* dmin x dmax = N, as e1 x e2 = N */
         out->dmax[i] = ct * e1[i] + st * e2[i];
         out->dmin[i] = st * e1[i] - ct * e2[i];

@@ -1,0 +1,99 @@
+/*
+ * Curvature benchmark: bs_patch_eval_curvature against bs_patch_eval_normal on the same points,
+ * measured in one run (the ratio is the figure; seconds vary from run to run). Workload: the 32
+ * patches of the built-in teapot, N pseudo-random (u,v) per patch, all outputs wanted.
+ * Usage: bench_curvature [points per patch] [seconds per measurement]
+ *        bench_curvature --once curvature|normal [points per patch]   (for callgrind)
+ */
+#define _POSIX_C_SOURCE 199309L /* clock_gettime */
+#include <bezsurf.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+typedef struct context {
+    const bs_surface *s;
+    size_t n;
+    double *u, *v, *out; /* 10 arrays of n doubles */
+    unsigned char *kind;
+} context;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int run(const context *cx, int curvature)
+{
+    bs_cview u = {cx->u, cx->n, 0}, v = {cx->v, cx->n, 0};
+    bs_view o[10];
+    for (int c = 0; c < 10; c++)
+        o[c] = (bs_view){cx->out + (size_t)c * cx->n, cx->n, 0};
+    for (size_t i = 0; i < bs_surface_count(cx->s); i++) {
+        const bs_patch *p = bs_surface_get(cx->s, i);
+        bs_status st = curvature ? bs_patch_eval_curvature(p, cx->n, &u, &v, o, o + 4, o + 7, cx->kind)
+                                 : bs_patch_eval_normal(p, cx->n, &u, &v, o, o + 3, cx->kind);
+        if (st != BS_OK)
+            return 0;
+    }
+    return 1;
+}
+
+static double measure(const context *cx, int curvature, double budget)
+{
+    double best = 1e300, end = now() + budget;
+    do {
+        double t0 = now();
+        if (!run(cx, curvature))
+            return -1.0;
+        double t = now() - t0;
+        best = t < best ? t : best;
+    } while (now() < end);
+    return best;
+}
+
+int main(int argc, char **argv)
+{
+    int once = argc > 1 && strcmp(argv[1], "--once") == 0;
+    context cx;
+    cx.n = (size_t)atol(argc > (once ? 3 : 1) ? argv[once ? 3 : 1] : "4096");
+    double budget = !once && argc > 2 ? atof(argv[2]) : 1.0;
+    bs_surface *s;
+    if (cx.n == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK)
+        return 1;
+    cx.s = s;
+    cx.u = malloc(cx.n * sizeof(double));
+    cx.v = malloc(cx.n * sizeof(double));
+    cx.out = malloc(10 * cx.n * sizeof(double));
+    cx.kind = malloc(cx.n);
+    if (!cx.u || !cx.v || !cx.out || !cx.kind)
+        return 1;
+    unsigned long long x = 12345;
+    for (size_t k = 0; k < cx.n; k++) { /* an LCG: the same points every run */
+        x = x * 6364136223846793005ull + 1442695040888963407ull;
+        cx.u[k] = (double)(x >> 11) * 0x1.0p-53;
+        x = x * 6364136223846793005ull + 1442695040888963407ull;
+        cx.v[k] = (double)(x >> 11) * 0x1.0p-53;
+    }
+    int ok;
+    if (once) {
+        ok = argc > 2 && run(&cx, strcmp(argv[2], "curvature") == 0);
+    } else {
+        double tn = measure(&cx, 0, budget), tc = measure(&cx, 1, budget);
+        ok = tn > 0 && tc > 0;
+        double pts = 32.0 * (double)cx.n;
+        printf("teapot, %zu random points per patch (best of %.1f s each)\n", cx.n, budget);
+        printf("  bs_patch_eval_normal     %8.1f ns/point\n", 1e9 * tn / pts);
+        printf("  bs_patch_eval_curvature  %8.1f ns/point   ratio %.2f (goal <= 3)\n", 1e9 * tc / pts, tc / tn);
+    }
+    free(cx.u);
+    free(cx.v);
+    free(cx.out);
+    free(cx.kind);
+    bs_surface_destroy(s);
+    return ok ? 0 : 1;
+}
