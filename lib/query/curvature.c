@@ -55,23 +55,32 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
 void bsi_curv_partials(const bs_patch *p, size_t n, const double *u, const double *v,
                        double *scratch, bsi_partials *q, unsigned char *kind)
 {
-    double *table = scratch + bsi_deriv_table_scratch(p, 2, 2); /* S^(a,b), a, b <= 2 */
-    static const int ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
-    for (size_t k = 0; k < n; k++) {
-        bsi_deriv_table(p, u[k], v[k], 2, 2, scratch, table);
-        for (int j = 0; j < 5; j++)
-            for (int c = 0; c < 3; c++)
-                q[k].d[j][c] = table[(ab[j][0] * 3 + ab[j][1]) * 3 + c];
-    }
-    /* The normal and its kind as bs_patch_eval_normal gives them (the sign convention). */
+    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
     bs_cview cu = {u, n, 0}, cv = {v, n, 0};
-    bs_view nv[3];
-    for (int c = 0; c < 3; c++) {
-        nv[c].data = &q[0].nrm[c];
-        nv[c].count = n;
-        nv[c].stride = (ptrdiff_t)sizeof(bsi_partials);
+    bs_view views[6][3]; /* S_u, S_v, S_uu, S_uv, S_vv, N, each through q's fields */
+    for (int j = 0; j < 6; j++)
+        for (int c = 0; c < 3; c++) {
+            views[j][c].data = j < 5 ? &q[0].d[j][c] : &q[0].nrm[c];
+            views[j][c].count = n;
+            views[j][c].stride = (ptrdiff_t)sizeof(bsi_partials);
+        }
+    if (!p->rational) {
+        /* the block evaluators (which allocate nothing for polynomial patches) */
+        (void)bs_patch_eval(p, n, &cu, &cv, NULL, views[0], views[1]);
+        for (int j = 2; j < 5; j++)
+            (void)bs_patch_eval_deriv(p, ab[j][0], ab[j][1], n, &cu, &cv, views[j]);
+    } else {
+        double *table = scratch + bsi_deriv_table_scratch(p, 2, 2); /* S^(a,b), a, b <= 2 */
+        for (size_t k = 0; k < n; k++) {
+            bsi_deriv_table(p, u[k], v[k], 2, 2, scratch, table);
+            for (int j = 0; j < 5; j++)
+                for (int c = 0; c < 3; c++)
+                    q[k].d[j][c] = table[(ab[j][0] * 3 + ab[j][1]) * 3 + (unsigned)c];
+        }
     }
-    (void)bs_patch_eval_normal(p, n, &cu, &cv, NULL, nv, kind); /* checked views: cannot fail */
+    /* The normal and its kind as bs_patch_eval_normal gives them (the sign convention). Every
+     * view was made here from valid memory: these calls cannot fail. */
+    (void)bs_patch_eval_normal(p, n, &cu, &cv, NULL, views[5], kind);
 }
 
 /* Diagonal of the bounding box of the control points. */
