@@ -56,7 +56,7 @@ typedef struct tess {
     /* scratch: grid parameters i/g per direction, vertex ids of one patch's grid points */
     double *pu, *pv;
     uint32_t *gid;
-    size_t nbad; /* vertices whose normal repair_normals must replace */
+    size_t nbad; /* vertices whose normal bsi_tess_repair_normals must replace */
     double *soa; /* 6 x GRID_CHUNK: positions and normals of a block of grid rows, by coordinate */
 } tess;
 

@@ -136,7 +136,7 @@ bs_status bsi_tess_evaluate(tess *t)
 void bsi_tess_repair_normals(tess *t)
 {
     if (t->nbad == 0)
-        return; /* evaluate() checked every vertex */
+        return; /* bsi_tess_evaluate() checked every vertex */
     size_t bad = 0;
     for (size_t k = 0; k < t->nvert; k++) {
         double *n = t->nrm + 3 * k;
