@@ -1,6 +1,6 @@
 /* Files the library writes: a temporary file beside the target, renamed over it only after a
  * complete, checked write, so that the target holds either its old content or the new one. */
-#define _POSIX_C_SOURCE 200809L
+#define _POSIX_C_SOURCE 200809L // NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp): POSIX feature-test macro
 
 #include "core/internal.h"
 

@@ -1,5 +1,5 @@
 /* Reading the .bpt text format (docs/bpt-format.md) from memory or from a file. */
-#define _POSIX_C_SOURCE 200809L
+#define _POSIX_C_SOURCE 200809L // NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp): POSIX feature-test macro
 
 #include "io/internal.h"
 
