@@ -8,8 +8,6 @@
 
 /* Each patch needs at least "0 0 x y z" and a separator before it: 10 bytes. */
 #define MIN_PATCH_BYTES 10
-/* Largest file read (a power of two times the first buffer): about 5 million bicubic patches. */
-#define BPT_FILE_MAX ((size_t)256 << 20)
 
 typedef struct reader {
     const char *text;
@@ -51,16 +49,11 @@ static int next_token(reader *r, size_t *start, size_t *tlen)
 /* Record the first error at byte offset `at` (on the current line) and return BS_ERR_PARSE. */
 static bs_status fail(reader *r, size_t at, const char *fmt, ...)
 {
-    if (r->err != NULL) {
-        r->err->line = r->line;
-        r->err->column = at - r->line_start + 1;
-        va_list ap;
-        va_start(ap, fmt);
-        /* a message cut to the buffer is fine; ap is started just above (the analyzer misses it) */
-        (void)vsnprintf(r->err->message, sizeof r->err->message, fmt, ap); // NOLINT(clang-analyzer-valist.Uninitialized)
-        va_end(ap);
-    }
-    return BS_ERR_PARSE;
+    va_list ap;
+    va_start(ap, fmt);
+    bs_status st = bsi_vfail(r->err, r->line, at - r->line_start + 1, fmt, ap);
+    va_end(ap);
+    return st;
 }
 
 /* A non-negative decimal integer no larger than max. */
@@ -72,20 +65,11 @@ static bs_status read_count(reader *r, const char *what, size_t max, size_t *val
     const char *t = r->text + start;
     if (tlen > 1 && t[0] == '-' && t[1] >= '0' && t[1] <= '9')
         return fail(r, start, "negative %s", what);
-    size_t v = 0;
-    int over = 0;
-    for (size_t k = 0; k < tlen; k++) {
-        if (t[k] < '0' || t[k] > '9')
-            return fail(r, start, "expected %s (a non-negative integer)", what);
-        size_t d = (size_t)(t[k] - '0');
-        if (over || v > (max - d) / 10)
-            over = 1; /* keep going only to validate the remaining digits */
-        else
-            v = v * 10 + d;
-    }
-    if (over)
+    int ok = bsi_parse_size(t, tlen, max, value);
+    if (ok == 0)
+        return fail(r, start, "expected %s (a non-negative integer)", what);
+    if (ok < 0)
         return fail(r, start, "%s too large (at most %zu here)", what, max);
-    *value = v;
     return BS_OK;
 }
 
@@ -201,56 +185,15 @@ bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_error *err,
     return BS_OK;
 }
 
-static void io_error(bs_parse_error *err, const char *what)
-{
-    if (err != NULL) {
-        err->line = 0;
-        err->column = 0;
-        (void)snprintf(err->message, sizeof err->message, "%s", what);
-    }
-}
-
 bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
     if (out != NULL)
         *out = NULL;
     if (path == NULL || out == NULL)
         return BS_ERR_INVALID_ARG;
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) {
-        io_error(err, "cannot open the file");
-        return BS_ERR_IO;
-    }
     char *buf = NULL;
-    size_t len = 0, cap = 0;
-    bs_status st = BS_OK;
-    for (;;) {
-        if (len == cap) {
-            if (cap >= BPT_FILE_MAX) { /* e.g. a device that never ends */
-                io_error(err, "file larger than 256 MiB");
-                st = BS_ERR_IO;
-                break;
-            }
-            size_t ncap = cap ? 2 * cap : 65536;
-            char *grown = realloc(buf, ncap);
-            if (grown == NULL) {
-                st = BS_ERR_NO_MEMORY;
-                break;
-            }
-            buf = grown;
-            cap = ncap;
-        }
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0) {
-            if (ferror(f)) {
-                io_error(err, "cannot read the file");
-                st = BS_ERR_IO;
-            }
-            break;
-        }
-    }
-    (void)fclose(f); /* a stream only read from has nothing left to report */
+    size_t len = 0;
+    bs_status st = bsi_read_file(path, err, &buf, &len);
     if (st == BS_OK)
         st = bs_surface_read_bpt(buf, len, err, out);
     free(buf);

@@ -7,6 +7,8 @@
 
 #include "core/internal.h"
 
+#include <stdarg.h>
+
 /* ---- .bpt numbers (lib/io/bpt_number.c): locale-independent decimal text ---- */
 #define BSI_NUMBER_MAX 400 /* longest number token accepted, in bytes */
 
@@ -18,6 +20,23 @@ int bsi_parse_double(const char *tok, size_t len, double *out);
 /* Write the shortest of "%.15g", "%.16g", "%.17g" that reads back to x exactly, with '.' as the
  * decimal point, into buf (room for 32 bytes); returns its length (NUL not counted). */
 size_t bsi_format_double(double x, char *buf);
+
+/* ---- shared by the readers and writers (lib/io/io_common.c) ---- */
+#define BSI_FILE_MAX ((size_t)256 << 20) /* largest file read into memory */
+
+/* Fill err (when not NULL) with line, column and the formatted message; return BS_ERR_PARSE. */
+bs_status bsi_fail(bs_parse_error *err, size_t line, size_t column, const char *fmt, ...);
+bs_status bsi_vfail(bs_parse_error *err, size_t line, size_t column, const char *fmt, va_list ap);
+/* Fill err with line 0, column 0 and the message (for BS_ERR_IO). */
+void bsi_io_error(bs_parse_error *err, const char *what);
+/* The whole token t[0..len) as a decimal integer of digits only: 1 and *value set when it is at
+ * most max, -1 when it is larger, 0 when it is not such an integer (empty, sign, other bytes). */
+int bsi_parse_size(const char *t, size_t len, size_t max, size_t *value);
+/* The bytes of a file (at most BSI_FILE_MAX), in a new buffer the caller frees. BS_ERR_IO (err
+ * filled) or BS_ERR_NO_MEMORY, nothing to free then. */
+bs_status bsi_read_file(const char *path, bs_parse_error *err, char **data, size_t *size);
+/* Create or truncate path and write size bytes: BS_OK or BS_ERR_IO. */
+bs_status bsi_write_file(const char *path, const char *data, size_t size);
 
 /* The built-in tea set's .bpt texts (teaset_data.c in the build tree, generated from data/ at build time). */
 typedef struct bsi_builtin {

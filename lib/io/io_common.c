@@ -1,0 +1,113 @@
+/* What the text readers and writers of lib/io/ share: parse errors with a position, decimal
+ * integers, whole files read into memory and written from memory. */
+#include "io/internal.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+bs_status bsi_vfail(bs_parse_error *err, size_t line, size_t column, const char *fmt, va_list ap)
+{
+    if (err != NULL) {
+        err->line = line;
+        err->column = column;
+        /* a message cut to the buffer is fine */
+        (void)vsnprintf(err->message, sizeof err->message, fmt, ap); // NOLINT(clang-analyzer-valist.Uninitialized)
+    }
+    return BS_ERR_PARSE;
+}
+
+bs_status bsi_fail(bs_parse_error *err, size_t line, size_t column, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    bs_status st = bsi_vfail(err, line, column, fmt, ap);
+    va_end(ap);
+    return st;
+}
+
+int bsi_parse_size(const char *t, size_t len, size_t max, size_t *value)
+{
+    if (len == 0)
+        return 0;
+    size_t v = 0;
+    int over = 0;
+    for (size_t k = 0; k < len; k++) {
+        if (t[k] < '0' || t[k] > '9')
+            return 0;
+        size_t d = (size_t)(t[k] - '0');
+        if (over || v > (max - d) / 10)
+            over = 1; /* keep going only to validate the remaining digits */
+        else
+            v = v * 10 + d;
+    }
+    if (over)
+        return -1;
+    *value = v;
+    return 1;
+}
+
+void bsi_io_error(bs_parse_error *err, const char *what)
+{
+    if (err != NULL) {
+        err->line = 0;
+        err->column = 0;
+        (void)snprintf(err->message, sizeof err->message, "%s", what);
+    }
+}
+
+bs_status bsi_read_file(const char *path, bs_parse_error *err, char **data, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) {
+        bsi_io_error(err, "cannot open the file");
+        return BS_ERR_IO;
+    }
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    bs_status st = BS_OK;
+    for (;;) {
+        if (len == cap) {
+            if (cap >= BSI_FILE_MAX) { /* e.g. a device that never ends */
+                bsi_io_error(err, "file larger than 256 MiB");
+                st = BS_ERR_IO;
+                break;
+            }
+            size_t ncap = cap ? 2 * cap : 65536;
+            char *grown = realloc(buf, ncap);
+            if (grown == NULL) {
+                st = BS_ERR_NO_MEMORY;
+                break;
+            }
+            buf = grown;
+            cap = ncap;
+        }
+        size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0) {
+            if (ferror(f)) {
+                bsi_io_error(err, "cannot read the file");
+                st = BS_ERR_IO;
+            }
+            break;
+        }
+    }
+    (void)fclose(f); /* a stream only read from has nothing left to report */
+    if (st != BS_OK) {
+        free(buf);
+        return st;
+    }
+    *data = buf;
+    *size = len;
+    return BS_OK;
+}
+
+bs_status bsi_write_file(const char *path, const char *data, size_t size)
+{
+    FILE *f = fopen(path, "wb");
+    if (f == NULL)
+        return BS_ERR_IO;
+    int ok = fwrite(data, 1, size, f) == size;
+    ok = (fclose(f) == 0) && ok;
+    return ok ? BS_OK : BS_ERR_IO;
+}
