@@ -187,15 +187,5 @@ bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_error *err,
 
 bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
-    if (out != NULL)
-        *out = NULL;
-    if (path == NULL || out == NULL)
-        return BS_ERR_INVALID_ARG;
-    char *buf = NULL;
-    size_t len = 0;
-    bs_status st = bsi_read_file(path, err, &buf, &len);
-    if (st == BS_OK)
-        st = bs_surface_read_bpt(buf, len, err, out);
-    free(buf);
-    return st;
+    return bsi_read_surface_file(path, err, out, bs_surface_read_bpt);
 }

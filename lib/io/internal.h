@@ -35,6 +35,17 @@ int bsi_parse_size(const char *t, size_t len, size_t max, size_t *value);
 /* The bytes of a file (at most BSI_FILE_MAX), in a new buffer the caller frees. BS_ERR_IO (err
  * filled) or BS_ERR_NO_MEMORY, nothing to free then. */
 bs_status bsi_read_file(const char *path, bs_parse_error *err, char **data, size_t *size);
+/* A reader of text in memory, and the same reader on a file's bytes: out set to NULL first, then
+ * BS_ERR_INVALID_ARG if path or out is NULL, bsi_read_file's statuses, or the reader's. */
+typedef bs_status (*bsi_text_reader)(const char *text, size_t len, bs_parse_error *err, bs_surface **out);
+bs_status bsi_read_surface_file(const char *path, bs_parse_error *err, bs_surface **out, bsi_text_reader read);
+/* An array appended to as the data is read (never sized from a declared count). */
+typedef struct bsi_growing {
+    void *data;
+    size_t n, cap; /* elements held, elements of room */
+} bsi_growing;
+/* Room for `more` further elements of elem bytes: BS_OK or BS_ERR_NO_MEMORY (g unchanged). */
+bs_status bsi_grow(bsi_growing *g, size_t elem, size_t more);
 /* Create or truncate path and write size bytes: BS_OK or BS_ERR_IO. */
 bs_status bsi_write_file(const char *path, const char *data, size_t size);
 

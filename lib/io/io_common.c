@@ -3,6 +3,7 @@
 #include "io/internal.h"
 
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -45,6 +46,24 @@ int bsi_parse_size(const char *t, size_t len, size_t max, size_t *value)
         return -1;
     *value = v;
     return 1;
+}
+
+bs_status bsi_grow(bsi_growing *g, size_t elem, size_t more)
+{
+    if (more <= g->cap - g->n)
+        return BS_OK;
+    size_t cap = g->cap ? g->cap : 16;
+    while (cap - g->n < more) {
+        if (cap > SIZE_MAX / 2 / elem)
+            return BS_ERR_NO_MEMORY;
+        cap *= 2;
+    }
+    void *p = realloc(g->data, cap * elem);
+    if (p == NULL)
+        return BS_ERR_NO_MEMORY;
+    g->data = p;
+    g->cap = cap;
+    return BS_OK;
 }
 
 void bsi_io_error(bs_parse_error *err, const char *what)
@@ -100,6 +119,21 @@ bs_status bsi_read_file(const char *path, bs_parse_error *err, char **data, size
     *data = buf;
     *size = len;
     return BS_OK;
+}
+
+bs_status bsi_read_surface_file(const char *path, bs_parse_error *err, bs_surface **out, bsi_text_reader read)
+{
+    if (out != NULL)
+        *out = NULL;
+    if (path == NULL || out == NULL)
+        return BS_ERR_INVALID_ARG;
+    char *buf = NULL;
+    size_t len = 0;
+    bs_status st = bsi_read_file(path, err, &buf, &len);
+    if (st == BS_OK)
+        st = read(buf, len, err, out);
+    free(buf);
+    return st;
 }
 
 bs_status bsi_write_file(const char *path, const char *data, size_t size)

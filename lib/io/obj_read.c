@@ -12,25 +12,20 @@
 enum { BODY_NONE, BODY_SURF, BODY_OTHER };
 enum { TYPE_NONE, TYPE_BEZIER, TYPE_BSPLINE, TYPE_OTHER };
 
-typedef struct growing { /* doubles or indices appended as they are read */
-    void *data;
-    size_t n, cap;
-} growing;
-
 typedef struct obj {
     const char *text;
     size_t len, pos;
     size_t line, line_start; /* 1-based line of pos and the offset of its first byte */
     bs_parse_error *err;
-    growing verts;           /* 4 doubles per vertex: x y z w */
+    bsi_growing verts;           /* 4 doubles per vertex: x y z w */
     int rat, type;           /* from the last cstype */
     size_t type_line;
     char type_name[16];
     size_t deg[2], ndeg;     /* from the last deg */
     int body;                /* inside surf ... end, or another element's body */
     size_t surf_line, surf_col, parm_line[2], parm_col[2];
-    growing refs;            /* 0-based vertex of each control vertex of the open surf */
-    growing parm[2];         /* parameter values along u and v */
+    bsi_growing refs;            /* 0-based vertex of each control vertex of the open surf */
+    bsi_growing parm[2];         /* parameter values along u and v */
     int have_parm[2];
     bs_surface *s;
 } obj;
@@ -106,21 +101,6 @@ static int token_is(const obj *o, size_t start, size_t tlen, const char *word)
     return tlen == strlen(word) && memcmp(o->text + start, word, tlen) == 0;
 }
 
-static bs_status grow(growing *g, size_t elem, size_t more)
-{
-    if (g->n + more <= g->cap)
-        return BS_OK;
-    size_t cap = g->cap ? g->cap : 16;
-    while (cap < g->n + more)
-        cap *= 2;
-    void *p = realloc(g->data, cap * elem);
-    if (p == NULL)
-        return BS_ERR_NO_MEMORY;
-    g->data = p;
-    g->cap = cap;
-    return BS_OK;
-}
-
 static bs_status parse_number(obj *o, size_t start, size_t tlen, const char *what, double *x)
 {
     int ok = bsi_parse_double(o->text + start, tlen, x);
@@ -162,7 +142,7 @@ static bs_status read_vertex(obj *o)
         return fail_at(o, o->pos, "%s", "a vertex needs x y z and an optional weight");
     if (n == 6)
         x[3] = 1.0;
-    bs_status st = grow(&o->verts, 4 * sizeof(double), 1);
+    bs_status st = bsi_grow(&o->verts, 4 * sizeof(double), 1);
     if (st != BS_OK)
         return st;
     memcpy((double *)o->verts.data + 4 * o->verts.n++, x, 4 * sizeof(double));
@@ -224,7 +204,7 @@ static bs_status read_ref(obj *o, size_t start, size_t tlen)
     idx = neg ? o->verts.n - idx : idx - 1;
     if (o->rat && !(((double *)o->verts.data)[4 * idx + 3] > 0.0))
         return fail_at(o, start, "%s", "weight of a rational surface's vertex must be positive");
-    bs_status st = grow(&o->refs, sizeof(size_t), 1);
+    bs_status st = bsi_grow(&o->refs, sizeof(size_t), 1);
     if (st == BS_OK)
         ((size_t *)o->refs.data)[o->refs.n++] = idx;
     return st;
@@ -279,7 +259,7 @@ static bs_status read_parm(obj *o, size_t kw)
     double x;
     bs_status st = BS_OK;
     while (st == BS_OK && next_token(o, &start, &tlen)) {
-        if ((st = parse_number(o, start, tlen, "a parameter value", &x)) == BS_OK && (st = grow(&o->parm[d], sizeof(double), 1)) == BS_OK)
+        if ((st = parse_number(o, start, tlen, "a parameter value", &x)) == BS_OK && (st = bsi_grow(&o->parm[d], sizeof(double), 1)) == BS_OK)
             ((double *)o->parm[d].data)[o->parm[d].n++] = x;
     }
     return st;
@@ -466,15 +446,5 @@ bs_status bs_surface_read_obj(const char *text, size_t len, bs_parse_error *err,
 
 bs_status bs_surface_read_obj_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
-    if (out != NULL)
-        *out = NULL;
-    if (path == NULL || out == NULL)
-        return BS_ERR_INVALID_ARG;
-    char *buf = NULL;
-    size_t len = 0;
-    bs_status st = bsi_read_file(path, err, &buf, &len);
-    if (st == BS_OK)
-        st = bs_surface_read_obj(buf, len, err, out);
-    free(buf);
-    return st;
+    return bsi_read_surface_file(path, err, out, bs_surface_read_obj);
 }
