@@ -24,6 +24,7 @@ typedef struct iges {
 typedef struct iges_stream {
     size_t first, nrec, width;
     size_t pos;                      /* next character, counted over the records' data columns */
+    int ended;                       /* the record delimiter has been read */
 } iges_stream;
 
 /* One parameter: its characters at stream positions start .. start+len-1 (a Hollerith string's
@@ -40,7 +41,8 @@ bs_status bsi_iges_records(iges *g);
 bs_status bsi_iges_global(iges *g);
 /* Fail at the record and column of stream position pos. */
 bs_status bsi_iges_fail_at(const iges *g, const iges_stream *s, size_t pos, const char *fmt, ...);
-/* The next field; BS_ERR_PARSE at the stream's end or on a malformed Hollerith string. */
+/* The next field; BS_ERR_PARSE after the record delimiter, at the stream's end or on a malformed
+ * Hollerith string. */
 bs_status bsi_iges_field(const iges *g, iges_stream *s, iges_field *f);
 /* The next field as a real (integers and D exponents accepted, an empty field is 0) or as an
  * integer in [lo, hi] (an empty field is 0); what names it in the error message. */

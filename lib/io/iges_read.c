@@ -34,8 +34,19 @@ static bs_status entity_stream(const iges *g, size_t de, long type, iges_stream 
     s->nrec = (size_t)lines;
     s->width = 64;
     s->pos = 0;
+    s->ended = 0;
     long t;
     return bsi_iges_int(g, s, "the entity type of the directory entry", type, type, &t);
+}
+
+/* The fields after those read, up to the record delimiter (optional pointers): checked, not used. */
+static bs_status rest(const iges *g, iges_stream *s)
+{
+    iges_field f;
+    bs_status st = BS_OK;
+    while (st == BS_OK && !s->ended)
+        st = bsi_iges_field(g, s, &f);
+    return st;
 }
 
 /* Apply the chain of 124 matrices starting at the transformation pointer of entity de. */
@@ -61,6 +72,8 @@ static bs_status transform(const iges *g, size_t de, double *ctrl, size_t n)
             return st;
         for (size_t k = 0; k < 12 && st == BS_OK; k++)
             st = bsi_iges_real(g, &s, "a matrix entry", &m[k], &f);
+        if (st == BS_OK)
+            st = rest(g, &s);
         for (size_t i = 0; i < n && st == BS_OK; i++) {
             double x[3] = {ctrl[3 * i], ctrl[3 * i + 1], ctrl[3 * i + 2]};
             for (size_t r = 0; r < 3; r++)
@@ -165,7 +178,7 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
         (st = read_reals(g, &s, vals, 3 * n, 0, "a control point coordinate")) != BS_OK)
         return st;
     size_t range_at = s.pos;
-    if ((st = read_reals(g, &s, vals, 4, 0, "the parameter range")) != BS_OK)
+    if ((st = read_reals(g, &s, vals, 4, 0, "the parameter range")) != BS_OK || (st = rest(g, &s)) != BS_OK)
         return st;
     const double *val = vals->data, *w = val + nku + nkv, *pts = w + n, *range = pts + 3 * n;
     double *ctrl = malloc(4 * n * sizeof(double)), *wt = ctrl + 3 * n;

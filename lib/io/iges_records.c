@@ -100,6 +100,8 @@ static void skip_blanks(const iges *g, iges_stream *s)
 bs_status bsi_iges_field(const iges *g, iges_stream *s, iges_field *f)
 {
     size_t total = s->nrec * s->width;
+    if (s->ended)
+        return bsi_iges_fail_at(g, s, s->pos - 1, "fewer parameters than the entity needs");
     skip_blanks(g, s);
     f->start = s->pos;
     f->hollerith = 0;
@@ -126,7 +128,7 @@ bs_status bsi_iges_field(const iges *g, iges_stream *s, iges_field *f)
     char d = at_pos(g, s, s->pos);
     if (d != g->pdelim && d != g->rdelim)
         return bsi_iges_fail_at(g, s, s->pos, "expected a delimiter after the Hollerith string");
-    f->last = d == g->rdelim;
+    f->last = s->ended = d == g->rdelim;
     s->pos++;
     return BS_OK;
 }
@@ -236,7 +238,7 @@ static bs_status read_delimiter(iges *g, iges_stream *s, char *delim, char fallb
 
 bs_status bsi_iges_global(iges *g)
 {
-    iges_stream s = {g->first[IGES_G], g->count[IGES_G], 72, 0};
+    iges_stream s = {g->first[IGES_G], g->count[IGES_G], 72, 0, 0};
     size_t total = s.nrec * s.width;
     bs_status st = read_delimiter(g, &s, &g->pdelim, ',');
     if (st != BS_OK)

@@ -48,6 +48,15 @@ typedef struct bsi_growing {
 bs_status bsi_grow(bsi_growing *g, size_t elem, size_t more);
 /* Create or truncate path and write size bytes: BS_OK or BS_ERR_IO. */
 bs_status bsi_write_file(const char *path, const char *data, size_t size);
+/* What the text writers accept: BS_ERR_INVALID_ARG for NULL, BS_ERR_DIMENSION for a surface of
+ * patches that are not 3-D (an empty one is fine), else BS_OK. */
+bs_status bsi_check_surface3(const bs_surface *s);
+/* A writer of text into a caller buffer (a bs_surface_write_* function), and the same text written
+ * to a file: BS_ERR_INVALID_ARG if path is NULL, then the writer's statuses on the size query,
+ * BS_ERR_NO_MEMORY, or bsi_write_file's. The whole text is built in memory before the file is
+ * opened, so a surface the writer refuses leaves no file. */
+typedef bs_status (*bsi_text_writer)(const bs_surface *s, char *buf, size_t cap, size_t *size);
+bs_status bsi_write_surface_file(const bs_surface *s, const char *path, bsi_text_writer write);
 
 /* The built-in tea set's .bpt texts (teaset_data.c in the build tree, generated from data/ at build time). */
 typedef struct bsi_builtin {

@@ -145,3 +145,30 @@ bs_status bsi_write_file(const char *path, const char *data, size_t size)
     ok = (fclose(f) == 0) && ok;
     return ok ? BS_OK : BS_ERR_IO;
 }
+
+bs_status bsi_check_surface3(const bs_surface *s)
+{
+    if (s == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (bs_surface_count(s) > 0 && bs_surface_dim(s) != 3)
+        return BS_ERR_DIMENSION;
+    return BS_OK;
+}
+
+bs_status bsi_write_surface_file(const bs_surface *s, const char *path, bsi_text_writer write)
+{
+    if (path == NULL)
+        return BS_ERR_INVALID_ARG;
+    size_t size = 0;
+    bs_status st = write(s, NULL, 0, &size);
+    if (st != BS_OK)
+        return st;
+    char *text = malloc(size);
+    if (text == NULL)
+        return BS_ERR_NO_MEMORY;
+    st = write(s, text, size, &size);
+    if (st == BS_OK)
+        st = bsi_write_file(path, text, size - 1);
+    free(text);
+    return st;
+}

@@ -292,7 +292,7 @@ static bs_status build_bezier(obj *o, double *ctrl, double *w)
         for (size_t k = 1; o->have_parm[d] && k <= seg[d]; k++)
             if (!(pv[k] > pv[k - 1]))
                 return fail_surf(o, d, "parameter values must increase");
-        if (seg[d] > (o->refs.n - 1) / (o->deg[d] ? o->deg[d] : 1))
+        if (o->refs.n == 0 || (o->deg[d] > 0 && seg[d] > (o->refs.n - 1) / o->deg[d]))
             return fail_surf(o, -1, "fewer control vertices than the degrees and parameter values need");
         cnt[d] = seg[d] * o->deg[d] + 1;
     }

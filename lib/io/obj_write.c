@@ -3,7 +3,6 @@
 #include "io/internal.h"
 #include "mesh/sink.h"
 
-#include <stdlib.h>
 
 #define REFS_PER_LINE 16 /* control vertices per line of a surf statement, then a continuation */
 
@@ -56,20 +55,11 @@ static void emit(const bs_surface *s, bsi_sink *o)
     }
 }
 
-static bs_status check_surface(const bs_surface *s)
-{
-    if (s == NULL)
-        return BS_ERR_INVALID_ARG;
-    if (bs_surface_count(s) > 0 && bs_surface_dim(s) != 3)
-        return BS_ERR_DIMENSION;
-    return BS_OK;
-}
-
 bs_status bs_surface_write_obj(const bs_surface *s, char *buf, size_t cap, size_t *size)
 {
     if (size == NULL)
         return BS_ERR_INVALID_ARG;
-    bs_status st = check_surface(s);
+    bs_status st = bsi_check_surface3(s);
     if (st != BS_OK)
         return st;
     bsi_sink measure = {NULL, NULL, 0, 0, 0};
@@ -86,22 +76,7 @@ bs_status bs_surface_write_obj(const bs_surface *s, char *buf, size_t cap, size_
     return BS_OK;
 }
 
-/* Built whole in memory first, then written by the one file helper of lib/io/. */
 bs_status bs_surface_write_obj_file(const bs_surface *s, const char *path)
 {
-    if (path == NULL)
-        return BS_ERR_INVALID_ARG;
-    bs_status st = check_surface(s);
-    if (st != BS_OK)
-        return st;
-    bsi_sink measure = {NULL, NULL, 0, 0, 0};
-    emit(s, &measure);
-    char *text = malloc(measure.len ? measure.len : 1);
-    if (text == NULL)
-        return BS_ERR_NO_MEMORY;
-    bsi_sink o = {NULL, (unsigned char *)text, measure.len, 0, 0};
-    emit(s, &o);
-    st = bsi_write_file(path, text, o.len);
-    free(text);
-    return st;
+    return bsi_write_surface_file(s, path, bs_surface_write_obj);
 }
