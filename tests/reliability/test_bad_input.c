@@ -1,7 +1,7 @@
 /* The bad-input matrix: every public function against every class of bad input that applies to it
  * (NULL handle, NULL views, short counts, n x stride overflow, misaligned data or strides, degrees
  * and dimensions out of range, NaN/Inf control points, weights and parameters, zero-length
- * intervals, truncated and hostile .bpt text). Each case checks the documented status, that every
+ * intervals, truncated and hostile .bpt, OBJ and IGES text). Each case checks the documented status, that every
  * caller buffer (sentinel-filled) is untouched on failure, and that new-handle outputs are NULL.
  * The program prints the size of the matrix it ran. */
 #include "harness.h"
@@ -666,6 +666,103 @@ static void test_hostile_bpt(void)
     BAD("bs_surface_read_bpt_file", "I/O failure", BS_ERR_IO, bs_surface_read_bpt_file("/", &perr, &hs));
 }
 
+/* Hostile OBJ and IGES texts: each one fails with its status and a position, no surface; the OBJ
+ * writer's bad arguments. */
+static void test_hostile_free_form(void)
+{
+    size_t ne_size = 0;
+    static const char *const obj[] = {
+        "v 0 0\n",
+        "v 0 nan 0\n",
+        "v 0 0,5 0\n",
+        "v 0 1e999 0\n",
+        "7 0 0\n",
+        "deg 65 1\n",
+        "deg 184467440737095516170 1\n",
+        "cstype nurbs\n",
+        "end\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 2\nend\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 -2\nend\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1\nend\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\n",
+        "v 0 0 0 0\ncstype rat bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nend\n",
+        "v 0 0 0\ncstype bspline\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nparm u 0 0 1 1\nparm v 1 1 0 0\nend\n",
+        "v 0 0 0\ncstype bspline\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nparm u 0 0 1 1 1\nparm v 0 0 1 1\nend\n",
+        "v 0 0 0\nv 1 0\0 0\n",
+    };
+    for (size_t k = 0; k < sizeof obj / sizeof obj[0]; k++) {
+        size_t len = strlen(obj[k]) + (k + 1 == sizeof obj / sizeof obj[0] ? 5 : 0);
+        BAD("bs_surface_read_obj", "truncated or hostile text", BS_ERR_PARSE, bs_surface_read_obj(obj[k], len, &perr, &hs));
+        NULLED(hs);
+        CHECKF(perr.line >= 1 && perr.column >= 1, "OBJ text %zu: no error position", k);
+    }
+    BAD("bs_surface_read_obj", "unsupported curve type", BS_ERR_UNSUPPORTED,
+        bs_surface_read_obj("v 0 0 0\ncstype taylor\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nend\n", 48, &perr, &hs));
+    CHECK(perr.line == 4 && perr.column == 1);
+    BAD("bs_surface_read_obj", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_obj("v 0 0 0\n", 8, NULL, NULL));
+    BAD("bs_surface_read_obj", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_obj(NULL, 5, NULL, &hs));
+    NULLED(hs);
+    BAD("bs_surface_read_obj_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_obj_file(NULL, NULL, &hs));
+    BAD("bs_surface_read_obj_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_obj_file("x", NULL, NULL));
+    BAD("bs_surface_read_obj_file", "I/O failure", BS_ERR_IO,
+        bs_surface_read_obj_file("/nonexistent-directory/x.obj", &perr, &hs));
+    NULLED(hs);
+    BAD("bs_surface_write_obj", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_obj(NULL, tbuf, sizeof tbuf, &ne_size));
+    BAD("bs_surface_write_obj", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_obj(S3, tbuf, sizeof tbuf, NULL));
+    BAD("bs_surface_write_obj", "count too small", BS_ERR_SIZE, bs_surface_write_obj(S3, tbuf, 10, &ne_size));
+    BAD("bs_surface_write_obj", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_obj(S2, tbuf, sizeof tbuf, &ne_size));
+    BAD("bs_surface_write_obj_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_obj_file(NULL, "x.obj"));
+    BAD("bs_surface_write_obj_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_obj_file(S3, NULL));
+    BAD("bs_surface_write_obj_file", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_obj_file(S2, "x.obj"));
+    BAD("bs_surface_write_obj_file", "I/O failure", BS_ERR_IO,
+        bs_surface_write_obj_file(S3, "/nonexistent-directory/x.obj"));
+
+    /* IGES: a valid file (S, G, D, P, T) spoiled record by record */
+    static const char good[] =
+        "                                                                        S0000001\n"
+        ",,;                                                                     G0000001\n"
+        "     128       1       0       0       0       0       0       000000000D0000001\n"
+        "     128       0       0       2       0                                D0000002\n"
+        "128,1,1,1,1,0,0,1,0,0,0,0,1,1,0,0,1,1,1,1,1,1,0,0,0,1,0,0,0,1,0,       1P0000001\n"
+        "1,1,1,0,1,0,1;                                                         1P0000002\n"
+        "S0000001G0000001D0000002P0000002                                        T0000001\n";
+    char t[sizeof good];
+    memcpy(t, good, sizeof good);
+    reset();
+    CHECK_STATUS(bs_surface_read_iges(t, sizeof t - 1, &perr, &hs), BS_OK);
+    CHECK(bs_surface_count(hs) == 1);
+    bs_surface_destroy(hs);
+    static const struct { size_t at; const char *with; } spoil[] = {
+        {0, ""}, {72, "C"}, {81 + 72, "X"}, {81 + 2, "H"}, {2 * 81 + 15, "7"}, {3 * 81 + 31, "9"},
+        {2 * 81 + 55, "4"}, {2 * 81 + 55, "1"}, {3 * 81 + 38, "10"}, {4 * 81, "126"}, {4 * 81 + 4, "0"},
+        {4 * 81 + 8, "99"}, {4 * 81 + 12, "3"}, {4 * 81 + 24, "-"}, {4 * 81 + 36, "0"}, {4 * 81 + 22, "x"},
+        {5 * 81 + 13, " "}, {5 * 81 + 6, "9"}, {4 * 81 + 38, "0"}, {6 * 81 - 1, "\n\n"}, {6 * 81, "x"},
+    };
+    for (size_t k = 0; k < sizeof spoil / sizeof spoil[0]; k++) {
+        char u[sizeof good + 4];
+        memcpy(u, t, sizeof t);
+        size_t len = sizeof t - 1;
+        if (k == 0)
+            len = 0;
+        else if (k == sizeof spoil / sizeof spoil[0] - 1)
+            len = 6 * 81; /* no T section */
+        else
+            memcpy(u + spoil[k].at, spoil[k].with, strlen(spoil[k].with));
+        BAD("bs_surface_read_iges", "truncated or hostile text", BS_ERR_PARSE, bs_surface_read_iges(u, len, &perr, &hs));
+        NULLED(hs);
+        CHECKF(perr.line >= 1 && perr.column >= 1, "IGES spoil %zu: no error position", k);
+    }
+    BAD("bs_surface_read_iges", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_iges(t, sizeof t - 1, NULL, NULL));
+    BAD("bs_surface_read_iges", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_iges(NULL, 5, NULL, &hs));
+    NULLED(hs);
+    BAD("bs_surface_read_iges_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_iges_file(NULL, NULL, &hs));
+    BAD("bs_surface_read_iges_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_iges_file("x", NULL, NULL));
+    BAD("bs_surface_read_iges_file", "I/O failure", BS_ERR_IO,
+        bs_surface_read_iges_file("/nonexistent-directory/x.igs", &perr, &hs));
+    NULLED(hs);
+    BAD("bs_surface_read_iges_file", "I/O failure", BS_ERR_IO, bs_surface_read_iges_file("/", &perr, &hs));
+}
+
 int main(void)
 {
     setup();
@@ -677,6 +774,7 @@ int main(void)
     test_constructions();
     test_surfaces();
     test_hostile_bpt();
+    test_hostile_free_form();
     test_meshes();
     bs_patch_destroy(P3);
     bs_patch_destroy(R3);
