@@ -387,9 +387,12 @@ static bs_status statement(obj *o)
         return fail_at(o, kw, "%s", "expected a statement keyword");
     if (token_is(o, kw, klen, "v"))
         return read_vertex(o);
-    if (token_is(o, kw, klen, "cstype"))
+    int cstype = token_is(o, kw, klen, "cstype"), deg = token_is(o, kw, klen, "deg");
+    if ((cstype || deg) && o->body == BODY_SURF) /* the open surface keeps its type and degrees */
+        return fail_at(o, kw, "%s", cstype ? "cstype before the end of the surface" : "deg before the end of the surface");
+    if (cstype)
         return read_cstype(o);
-    if (token_is(o, kw, klen, "deg"))
+    if (deg)
         return read_degree(o);
     if (token_is(o, kw, klen, "surf"))
         return read_surf(o, kw);

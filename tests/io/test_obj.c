@@ -258,6 +258,9 @@ static void test_errors(void)
     expect(V4 "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\nsurf 0 1 0 1 1 2 3 4\n", BS_ERR_PARSE, 8, 1, "two surf");
     expect(V4 "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\ncurv 0 1 1 2\n", BS_ERR_PARSE, 8, 1, "curv in surf");
     expect("end\n", BS_ERR_PARSE, 1, 1, "end alone");
+    expect(V4 "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\ndeg 2 2\nend\n", BS_ERR_PARSE, 8, 1, "deg in a body");
+    expect(V4 "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\n  cstype rat bezier\nend\n", BS_ERR_PARSE, 8, 3,
+           "cstype in a body");
     expect("parm u 0 1\n", BS_ERR_PARSE, 1, 1, "parm alone");
     expect(V4 "cstype rat bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\nend\nv 0 0 0 0\nsurf 0 1 0 1 1 2 3 5\nend\n",
            BS_ERR_PARSE, 10, 20, "zero weight");
