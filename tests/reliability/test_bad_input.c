@@ -465,6 +465,23 @@ static void test_constructions(void)
     NULLED(h[0]);
 }
 
+/* The bad arguments of a surface text writer and of its file twin. */
+typedef bs_status (*text_writer)(const bs_surface *, char *, size_t, size_t *);
+typedef bs_status (*file_writer)(const bs_surface *, const char *);
+static void writer_rows(const char *name, text_writer w, const char *file_name, file_writer wf)
+{
+    size_t ne = 99;
+    BAD(name, "NULL handle", BS_ERR_INVALID_ARG, w(NULL, tbuf, sizeof tbuf, &ne));
+    BAD(name, "NULL views", BS_ERR_INVALID_ARG, w(S3, tbuf, sizeof tbuf, NULL));
+    BAD(name, "count too small", BS_ERR_SIZE, w(S3, tbuf, 10, &ne));
+    BAD(name, "dim out of range", BS_ERR_DIMENSION, w(S2, tbuf, sizeof tbuf, &ne));
+    BAD(file_name, "NULL handle", BS_ERR_INVALID_ARG, wf(NULL, "x.out"));
+    BAD(file_name, "NULL views", BS_ERR_INVALID_ARG, wf(S3, NULL));
+    BAD(file_name, "dim out of range", BS_ERR_DIMENSION, wf(S2, "x.out"));
+    BAD(file_name, "I/O failure", BS_ERR_IO, wf(S3, "/nonexistent-directory/x.out"));
+    CHECK(ne == 99);
+}
+
 static void test_surfaces(void)
 {
     bs_edge_continuity edges[4];
@@ -497,15 +514,7 @@ static void test_surfaces(void)
         bs_surface_continuity(S3, 0, 4, edges, 4, &ne, open, 1, &no));
     CHECK(open[0].patch == 0x77777777u);
 
-    BAD("bs_surface_write_bpt", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_bpt(NULL, tbuf, sizeof tbuf, &ne));
-    BAD("bs_surface_write_bpt", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_bpt(S3, tbuf, sizeof tbuf, NULL));
-    BAD("bs_surface_write_bpt", "count too small", BS_ERR_SIZE, bs_surface_write_bpt(S3, tbuf, 10, &ne));
-    BAD("bs_surface_write_bpt", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_bpt(S2, tbuf, sizeof tbuf, &ne));
-    BAD("bs_surface_write_bpt_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_bpt_file(NULL, "x.bpt"));
-    BAD("bs_surface_write_bpt_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_bpt_file(S3, NULL));
-    BAD("bs_surface_write_bpt_file", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_bpt_file(S2, "x.bpt"));
-    BAD("bs_surface_write_bpt_file", "I/O failure", BS_ERR_IO,
-        bs_surface_write_bpt_file(S3, "/nonexistent-directory/x.bpt"));
+    writer_rows("bs_surface_write_bpt", bs_surface_write_bpt, "bs_surface_write_bpt_file", bs_surface_write_bpt_file);
     BAD("bs_surface_create_builtin", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_create_builtin(NULL, &hs));
     NULLED(hs);
     BAD("bs_surface_create_builtin", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_create_builtin("teapot", NULL));
@@ -666,11 +675,27 @@ static void test_hostile_bpt(void)
     BAD("bs_surface_read_bpt_file", "I/O failure", BS_ERR_IO, bs_surface_read_bpt_file("/", &perr, &hs));
 }
 
+/* The bad arguments of a text reader (good: a text it reads) and of its file twin. */
+typedef bs_status (*text_reader)(const char *, size_t, bs_parse_error *, bs_surface **);
+typedef bs_status (*file_reader)(const char *, bs_parse_error *, bs_surface **);
+static void reader_rows(const char *name, text_reader r, const char *file_name, file_reader rf, const char *good)
+{
+    BAD(name, "NULL handle", BS_ERR_INVALID_ARG, r(good, strlen(good), NULL, NULL));
+    BAD(name, "NULL views", BS_ERR_INVALID_ARG, r(NULL, 5, NULL, &hs));
+    NULLED(hs);
+    BAD(file_name, "NULL views", BS_ERR_INVALID_ARG, rf(NULL, NULL, &hs));
+    BAD(file_name, "NULL handle", BS_ERR_INVALID_ARG, rf("x", NULL, NULL));
+    BAD(file_name, "I/O failure", BS_ERR_IO, rf("/nonexistent-directory/x", &perr, &hs));
+    NULLED(hs);
+    CHECK(perr.line == 0 && perr.column == 0);
+    BAD(file_name, "I/O failure", BS_ERR_IO, rf("/", &perr, &hs));
+    NULLED(hs);
+}
+
 /* Hostile OBJ and IGES texts: each one fails with its status and a position, no surface; the OBJ
  * writer's bad arguments. */
 static void test_hostile_free_form(void)
 {
-    size_t ne_size = 0;
     static const char *const obj[] = {
         "v 0 0\n",
         "v 0 nan 0\n",
@@ -699,23 +724,9 @@ static void test_hostile_free_form(void)
     BAD("bs_surface_read_obj", "unsupported curve type", BS_ERR_UNSUPPORTED,
         bs_surface_read_obj("v 0 0 0\ncstype taylor\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nend\n", 48, &perr, &hs));
     CHECK(perr.line == 4 && perr.column == 1);
-    BAD("bs_surface_read_obj", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_obj("v 0 0 0\n", 8, NULL, NULL));
-    BAD("bs_surface_read_obj", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_obj(NULL, 5, NULL, &hs));
-    NULLED(hs);
-    BAD("bs_surface_read_obj_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_obj_file(NULL, NULL, &hs));
-    BAD("bs_surface_read_obj_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_obj_file("x", NULL, NULL));
-    BAD("bs_surface_read_obj_file", "I/O failure", BS_ERR_IO,
-        bs_surface_read_obj_file("/nonexistent-directory/x.obj", &perr, &hs));
-    NULLED(hs);
-    BAD("bs_surface_write_obj", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_obj(NULL, tbuf, sizeof tbuf, &ne_size));
-    BAD("bs_surface_write_obj", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_obj(S3, tbuf, sizeof tbuf, NULL));
-    BAD("bs_surface_write_obj", "count too small", BS_ERR_SIZE, bs_surface_write_obj(S3, tbuf, 10, &ne_size));
-    BAD("bs_surface_write_obj", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_obj(S2, tbuf, sizeof tbuf, &ne_size));
-    BAD("bs_surface_write_obj_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_obj_file(NULL, "x.obj"));
-    BAD("bs_surface_write_obj_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_obj_file(S3, NULL));
-    BAD("bs_surface_write_obj_file", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_obj_file(S2, "x.obj"));
-    BAD("bs_surface_write_obj_file", "I/O failure", BS_ERR_IO,
-        bs_surface_write_obj_file(S3, "/nonexistent-directory/x.obj"));
+    reader_rows("bs_surface_read_obj", bs_surface_read_obj, "bs_surface_read_obj_file", bs_surface_read_obj_file,
+                "v 0 0 0\n");
+    writer_rows("bs_surface_write_obj", bs_surface_write_obj, "bs_surface_write_obj_file", bs_surface_write_obj_file);
 
     /* IGES: a valid file (S, G, D, P, T) spoiled record by record */
     static const char good[] =
@@ -752,15 +763,8 @@ static void test_hostile_free_form(void)
         NULLED(hs);
         CHECKF(perr.line >= 1 && perr.column >= 1, "IGES spoil %zu: no error position", k);
     }
-    BAD("bs_surface_read_iges", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_iges(t, sizeof t - 1, NULL, NULL));
-    BAD("bs_surface_read_iges", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_iges(NULL, 5, NULL, &hs));
-    NULLED(hs);
-    BAD("bs_surface_read_iges_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_read_iges_file(NULL, NULL, &hs));
-    BAD("bs_surface_read_iges_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_read_iges_file("x", NULL, NULL));
-    BAD("bs_surface_read_iges_file", "I/O failure", BS_ERR_IO,
-        bs_surface_read_iges_file("/nonexistent-directory/x.igs", &perr, &hs));
-    NULLED(hs);
-    BAD("bs_surface_read_iges_file", "I/O failure", BS_ERR_IO, bs_surface_read_iges_file("/", &perr, &hs));
+    reader_rows("bs_surface_read_iges", bs_surface_read_iges, "bs_surface_read_iges_file", bs_surface_read_iges_file,
+                good);
 }
 
 int main(void)
