@@ -13,7 +13,8 @@
 static bs_status fail_de(const iges *g, size_t de, int f, const char *msg)
 {
     size_t rec = g->first[IGES_D] + de + (size_t)(f - 1) / 10;
-    return bsi_fail(g->err, rec + 1, (size_t)((f - 1) % 10) * 8 + 1, "%s", msg);
+    (void)bsi_fail(g->err, rec + 1, (size_t)((f - 1) % 10) * 8 + 1, "%s", msg);
+    return BS_ERR_PARSE;
 }
 
 /* The parameter data of the entity at D record de, its first field (the type) checked. */
@@ -151,10 +152,12 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
     iges_stream s;
     long form, v[9];
     bs_status st = bsi_iges_de_field(g, de, 15, &form);
-    if (st == BS_OK && (form < 0 || form > 9))
+    if (st != BS_OK)
+        return st;
+    if (form < 0 || form > 9)
         return fail_de(g, de, 15, "form number of entity 128 must be 0 to 9");
-    if (st == BS_OK)
-        st = entity_stream(g, de, 128, &s);
+    if ((st = entity_stream(g, de, 128, &s)) != BS_OK)
+        return st;
     size_t room = s.nrec * s.width; /* every field takes at least one character */
     static const char *const names[9] = {"K1", "K2", "the degree M1", "the degree M2", "PROP1 (closed in u)",
                                          "PROP2 (closed in v)", "PROP3 (polynomial)", "PROP4 (periodic in u)",
@@ -181,9 +184,10 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
     if ((st = read_reals(g, &s, vals, 4, 0, "the parameter range")) != BS_OK || (st = rest(g, &s)) != BS_OK)
         return st;
     const double *val = vals->data, *w = val + nku + nkv, *pts = w + n, *range = pts + 3 * n;
-    double *ctrl = malloc(4 * n * sizeof(double)), *wt = ctrl + 3 * n;
+    double *ctrl = malloc(4 * n * sizeof(double));
     if (ctrl == NULL)
         return BS_ERR_NO_MEMORY;
+    double *wt = ctrl + 3 * n;
     int rational = 0;
     for (size_t i = 0; i < cu; i++) /* the file lists the net with u varying fastest */
         for (size_t j = 0; j < cv; j++) {
@@ -194,7 +198,7 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
     st = transform(g, de, ctrl, n);
     bs_bspline b = {pu, pv, cu, cv, 3, val, val + nku, ctrl, rational ? wt : NULL};
     double dom[4] = {val[pu], val[cu], val[nku + pv], val[nku + cv]}, cut[4];
-    for (int d = 0; d < 2; d++) { /* the range within the knots' domain */
+    for (size_t d = 0; d < 2; d++) { /* the range within the knots' domain */
         cut[2 * d] = range[2 * d] > dom[2 * d] ? range[2 * d] : dom[2 * d];
         cut[2 * d + 1] = range[2 * d + 1] < dom[2 * d + 1] ? range[2 * d + 1] : dom[2 * d + 1];
         if (st == BS_OK && !(cut[2 * d + 1] > cut[2 * d]))

@@ -12,7 +12,8 @@
 
 static bs_status fail_rec(const iges *g, size_t rec, size_t col, const char *msg)
 {
-    return bsi_fail(g->err, rec + 1, col, "%s", msg);
+    (void)bsi_fail(g->err, rec + 1, col, "%s", msg);
+    return BS_ERR_PARSE;
 }
 
 bs_status bsi_iges_records(iges *g)
@@ -86,9 +87,9 @@ bs_status bsi_iges_fail_at(const iges *g, const iges_stream *s, size_t pos, cons
     size_t p = pos < total ? pos : total - 1;
     va_list ap;
     va_start(ap, fmt);
-    bs_status st = bsi_vfail(g->err, s->first + p / s->width + 1, p % s->width + 1 + (pos >= total), fmt, ap);
+    (void)bsi_vfail(g->err, s->first + p / s->width + 1, p % s->width + 1 + (pos >= total), fmt, ap);
     va_end(ap);
-    return st;
+    return BS_ERR_PARSE;
 }
 
 static void skip_blanks(const iges *g, iges_stream *s)
@@ -133,25 +134,32 @@ bs_status bsi_iges_field(const iges *g, iges_stream *s, iges_field *f)
     return BS_OK;
 }
 
-/* The field's characters into buf (NUL-terminated); 0 when longer than cap - 1. */
+/* The field's characters into buf (NUL-terminated), D exponents as E; 0 when longer than cap - 1. */
 static int copy_field(const iges *g, const iges_stream *s, const iges_field *f, char *buf, size_t cap)
 {
     if (f->len >= cap)
         return 0;
-    for (size_t k = 0; k < f->len; k++)
-        buf[k] = at_pos(g, s, f->start + k);
+    for (size_t k = 0; k < f->len; k++) {
+        char c = at_pos(g, s, f->start + k);
+        if (c == 'D' || c == 'd')
+            c = 'E'; /* FORTRAN's double-precision exponent */
+        buf[k] = c;
+    }
     buf[f->len] = '\0';
     return 1;
 }
 
-/* The next field, which must not end the parameters of the entity when more are needed. */
+/* The next field's text into buf, for a number: BS_ERR_PARSE for a Hollerith string or a field
+ * longer than BSI_NUMBER_MAX. */
 static bs_status number_field(const iges *g, iges_stream *s, const char *what, iges_field *f, char *buf)
 {
     bs_status st = bsi_iges_field(g, s, f);
     if (st != BS_OK)
         return st;
-    if (f->hollerith || !copy_field(g, s, f, buf, BSI_NUMBER_MAX + 1))
-        return bsi_iges_fail_at(g, s, f->start, "expected %s (a number)", what);
+    if (f->hollerith || !copy_field(g, s, f, buf, BSI_NUMBER_MAX + 1)) {
+        (void)bsi_iges_fail_at(g, s, f->start, "expected %s (a number)", what);
+        return BS_ERR_PARSE; /* as bsi_iges_fail_at, said here for the analyzer */
+    }
     return BS_OK;
 }
 
@@ -165,9 +173,6 @@ bs_status bsi_iges_real(const iges *g, iges_stream *s, const char *what, double 
         *x = 0.0;
         return BS_OK;
     }
-    for (size_t k = 0; k < f->len; k++)
-        if (buf[k] == 'D' || buf[k] == 'd')
-            buf[k] = 'E';
     int ok = bsi_parse_double(buf, f->len, x);
     if (ok <= 0)
         return bsi_iges_fail_at(g, s, f->start, ok == 0 ? "expected %s (a finite number)" : "%s out of range for a double",
