@@ -3,6 +3,9 @@
 //   surface NU NV          the breakpoints of one entity 128 as read (its parameter range cut at
 //   u-breaks...            the distinct knots), in the order of the file's entities
 //   v-breaks...
+//   bspline DU DV CU CV    the B-spline at full precision: degrees, pole counts,
+//   knots-u... knots-v...  flat knot vectors,
+//   pole X Y Z W           poles (transformed where the surface is) and weights, i along u outer
 //   point U V X Y Z        the surface (transformed where it is) at parameter (U,V), per OCCT
 // Build: only when OpenCASCADE is found (tests/io/CMakeLists.txt); run by hand:
 //   build/tests/occt_iges_gen tests/io/data/iges
@@ -102,6 +105,22 @@ void write_points(FILE *f, const Spec &s)
     for (double x : bv)
         std::fprintf(f, "%.17g ", x);
     std::fprintf(f, "\n");
+    // The B-spline itself at full precision (the file holds 9 digits): degrees, counts, flat
+    // knots, then the poles (transformed) and weights, i along u outer.
+    const Handle(Geom_BSplineSurface) &g = s.surf;
+    std::fprintf(f, "bspline %d %d %d %d\n", g->UDegree(), g->VDegree(), g->NbUPoles(), g->NbVPoles());
+    const TColStd_Array1OfReal &fu = g->UKnotSequence(), &fv = g->VKnotSequence();
+    for (int k = fu.Lower(); k <= fu.Upper(); k++)
+        std::fprintf(f, "%.17g ", fu(k));
+    std::fprintf(f, "\n");
+    for (int k = fv.Lower(); k <= fv.Upper(); k++)
+        std::fprintf(f, "%.17g ", fv(k));
+    std::fprintf(f, "\n");
+    for (int i = 1; i <= g->NbUPoles(); i++)
+        for (int j = 1; j <= g->NbVPoles(); j++) {
+            gp_Pnt p = g->Pole(i, j).Transformed(s.trsf);
+            std::fprintf(f, "pole %.17g %.17g %.17g %.17g\n", p.X(), p.Y(), p.Z(), g->Weight(i, j));
+        }
     for (int a = 0; a <= 6; a++)
         for (int b = 0; b <= 6; b++) {
             double u = s.u0 + (s.u1 - s.u0) * a / 6.0, v = s.v0 + (s.v1 - s.v0) * b / 6.0;
