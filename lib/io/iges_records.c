@@ -175,7 +175,8 @@ bs_status bsi_iges_real(const iges *g, iges_stream *s, const char *what, double 
     }
     int ok = bsi_parse_double(buf, f->len, x);
     if (ok <= 0)
-        return bsi_iges_fail_at(g, s, f->start, ok == 0 ? "expected %s (a finite number)" : "%s out of range for a double",
+        return bsi_iges_fail_at(g, s, f->start,
+                                ok == 0 ? "expected %s (a finite number)" : "%s out of range for a double",
                                 what);
     return BS_OK;
 }

@@ -15,17 +15,17 @@ enum { TYPE_NONE, TYPE_BEZIER, TYPE_BSPLINE, TYPE_OTHER };
 typedef struct obj {
     const char *text;
     size_t len, pos;
-    size_t line, line_start; /* 1-based line of pos and the offset of its first byte */
+    size_t line, line_start;  /* 1-based line of pos and the offset of its first byte */
     bs_parse_error *err;
-    bsi_growing verts;           /* 4 doubles per vertex: x y z w */
-    int rat, type;           /* from the last cstype */
+    bsi_growing verts;        /* 4 doubles per vertex: x y z w */
+    int rat, type;            /* from the last cstype */
     size_t type_line;
     char type_name[16];
-    size_t deg[2], ndeg;     /* from the last deg */
-    int body;                /* inside surf ... end, or another element's body */
+    size_t deg[2], ndeg;      /* from the last deg */
+    int body;                 /* inside surf ... end, or another element's body */
     size_t surf_line, surf_col, parm_line[2], parm_col[2];
-    bsi_growing refs;            /* 0-based vertex of each control vertex of the open surf */
-    bsi_growing parm[2];         /* parameter values along u and v */
+    bsi_growing refs;         /* 0-based vertex of each control vertex of the open surf */
+    bsi_growing parm[2];      /* parameter values along u and v */
     int have_parm[2];
     bs_surface *s;
 } obj;
@@ -217,8 +217,8 @@ static bs_status read_surf(obj *o, size_t kw)
     if (o->type == TYPE_NONE)
         return fail_at(o, kw, "%s", "surf before any cstype");
     if (o->type == TYPE_OTHER) {
-        (void)bsi_fail(o->err, o->line, kw - o->line_start + 1, "surface of type %s (cstype on line %zu) is not read",
-                 o->type_name, o->type_line);
+        (void)bsi_fail(o->err, o->line, kw - o->line_start + 1,
+                       "surface of type %s (cstype on line %zu) is not read", o->type_name, o->type_line);
         return BS_ERR_UNSUPPORTED;
     }
     if (o->ndeg != 2)
@@ -259,7 +259,10 @@ static bs_status read_parm(obj *o, size_t kw)
     double x;
     bs_status st = BS_OK;
     while (st == BS_OK && next_token(o, &start, &tlen)) {
-        if ((st = parse_number(o, start, tlen, "a parameter value", &x)) == BS_OK && (st = bsi_grow(&o->parm[d], sizeof(double), 1)) == BS_OK)
+        st = parse_number(o, start, tlen, "a parameter value", &x);
+        if (st == BS_OK)
+            st = bsi_grow(&o->parm[d], sizeof(double), 1);
+        if (st == BS_OK)
             ((double *)o->parm[d].data)[o->parm[d].n++] = x;
     }
     return st;
@@ -296,7 +299,7 @@ static bs_status build_bezier(obj *o, double *ctrl, double *w)
             return fail_surf(o, -1, "fewer control vertices than the degrees and parameter values need");
         cnt[d] = seg[d] * o->deg[d] + 1;
     }
-    if (cnt[0] * cnt[1] != o->refs.n) /* both below refs.n, so no overflow */
+    if (o->refs.n % cnt[0] != 0 || o->refs.n / cnt[0] != cnt[1])
         return fail_surf(o, -1, "number of control vertices does not match the degrees and parameter values");
     size_t p = o->deg[0], q = o->deg[1];
     for (size_t a = 0; a < seg[0]; a++)
@@ -333,7 +336,7 @@ static bs_status build_bspline(obj *o, double *ctrl, double *w)
             return fail_surf(o, d, "too few knots for the degree");
         cnt[d] = o->parm[d].n - o->deg[d] - 1;
     }
-    if (cnt[0] > o->refs.n || cnt[0] * cnt[1] != o->refs.n)
+    if (o->refs.n % cnt[0] != 0 || o->refs.n / cnt[0] != cnt[1])
         return fail_surf(o, -1, "number of control vertices does not match the knots and degrees");
     for (size_t i = 0; i < cnt[0]; i++)
         for (size_t j = 0; j < cnt[1]; j++) {
@@ -389,7 +392,7 @@ static bs_status statement(obj *o)
         return read_vertex(o);
     int cstype = token_is(o, kw, klen, "cstype"), deg = token_is(o, kw, klen, "deg");
     if ((cstype || deg) && o->body == BODY_SURF) /* the open surface keeps its type and degrees */
-        return fail_at(o, kw, "%s", cstype ? "cstype before the end of the surface" : "deg before the end of the surface");
+        return fail_at(o, kw, "%s before the end of the surface", cstype ? "cstype" : "deg");
     if (cstype)
         return read_cstype(o);
     if (deg)

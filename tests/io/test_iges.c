@@ -298,7 +298,8 @@ static void test_errors(void)
         SPOIL(t[at + 3] = '0', 6, at - 5 * L + 4, "zero weight");
     }
     SPOIL(memcpy(t + 6 * L + strcspn(good + 6 * L, ";"), ",", 1), 7, 65, "no record delimiter");
-    SPOIL(memcpy(t + 6 * L + strcspn(good + 6 * L, ";") - 3, "3,1", 3), 7, strcspn(good + 6 * L, ";") - 6, "range outside");
+    SPOIL(memcpy(t + 6 * L + strcspn(good + 6 * L, ";") - 3, "3,1", 3), 7, strcspn(good + 6 * L, ";") - 6,
+          "range outside");
     SPOIL(memcpy(t + 5 * L + 2, "8,9999999,9999999", 17), 6, 5, "huge declared counts");
     SPOIL(memcpy(t + 6 * L + strcspn(good + 6 * L, ";") - 4, ";   ", 4), 7, strcspn(good + 6 * L, ";") - 3,
           "parameters end early");
