@@ -16,10 +16,19 @@ static bs_status fail_rec(const iges *g, size_t rec, size_t col, const char *msg
     return BS_ERR_PARSE;
 }
 
+/* Blanks only (or a DOS end-of-file mark). */
+static int blank(const char *t, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (t[k] != ' ' && t[k] != '\t' && t[k] != '\x1a')
+            return 0;
+    return 1;
+}
+
 bs_status bsi_iges_records(iges *g)
 {
     static const char letters[IGES_SECTIONS + 1] = "SGDPT";
-    size_t off = 0;
+    size_t off = 0, skipped = 0;
     int sec = 0;
     while (off < g->len) {
         size_t end = off;
@@ -28,7 +37,12 @@ bs_status bsi_iges_records(iges *g)
         size_t n = end - off;
         if (n > 0 && g->text[end - 1] == '\r')
             n--;
-        size_t r = g->nrec;
+        size_t r = g->nrec + skipped; /* for errors: stored records all come before skipped lines */
+        if (g->count[IGES_T] > 0 && blank(g->text + off, n)) { /* blank lines after the end */
+            off = end + (end < g->len);
+            skipped++;
+            continue;
+        }
         if (memchr(g->text + off, '\0', n) != NULL)
             return fail_rec(g, r, (size_t)((const char *)memchr(g->text + off, '\0', n) - (g->text + off)) + 1,
                             "NUL byte in a record");

@@ -305,9 +305,16 @@ static void test_errors(void)
           "parameters end early");
 #undef SPOIL
     expect_error("", 1, 1, "empty input");
+    bs_parse_error err;
+    memcpy(t, good, glen + 1);
+    memcpy(t + glen, "\n  \n\x1a", 6); /* blank lines after the T section are fine */
+    CHECK_STATUS(bs_surface_read_iges(t, glen + 5, NULL, &s), BS_OK);
+    bs_surface_destroy(s);
+    memcpy(t + glen, "\nx\n", 4); /* anything else is not */
+    CHECK_STATUS(bs_surface_read_iges(t, glen + 3, &err, &s), BS_ERR_PARSE);
+    CHECKF(err.line == 10 && err.column == 2, "at %zu:%zu", err.line, err.column);
     memcpy(t, good, glen + 1);
     t[100] = '\0';
-    bs_parse_error err;
     CHECK_STATUS(bs_surface_read_iges(t, glen, &err, &s), BS_ERR_PARSE);
     CHECK(err.line == 2 && err.column == 20 && s == NULL);
     CHECK_STATUS(bs_surface_read_iges(NULL, 0, &err, &s), BS_ERR_PARSE);
