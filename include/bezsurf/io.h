@@ -92,7 +92,7 @@ BS_API bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path
  * (u varies fastest in the list), `parm u|v ...`, `end`, negative (relative) vertex indices, `\`
  * line continuation and `#` comments. A Bezier surface with several parameter values per direction
  * gives one patch per segment; a B-spline surface one patch per knot span (through
- * bs_surface_add_bspline()). Polygons, groups, display and rendering statements, curves and
+ * bs_surface_add_bspline()) of its `surf` parameter range (spans the range cuts are cut). Polygons, groups, display and rendering statements, curves and
  * trimming statements are skipped (a trimmed surface is read whole). docs/formats.md gives the
  * exact subset. A text without surfaces gives an empty surface.
  * @param[in]  text  the bytes; may be NULL only when len is 0.

@@ -86,46 +86,6 @@ static bs_status transform(const iges *g, size_t de, double *ctrl, size_t n)
     return st;
 }
 
-/* The span patches of b on the part of them inside range (u0 u1 v0 v1), appended to out. */
-static bs_status add_range(const bs_bspline *b, const double *range, bs_surface *out)
-{
-    size_t nu, nv, count;
-    bs_status st = bs_bspline_span_count(b, &nu, &nv);
-    if (st != BS_OK)
-        return st;
-    bs_surface *t;
-    double *spans = malloc(4 * nu * nv * sizeof(double));
-    if (spans == NULL)
-        return BS_ERR_NO_MEMORY;
-    if ((st = bs_surface_create(&t)) != BS_OK) {
-        free(spans);
-        return st;
-    }
-    st = bs_surface_add_bspline(t, b, spans, 4 * nu * nv, &count);
-    for (size_t k = 0; k < count && st == BS_OK; k++) {
-        const double *sp = spans + 4 * k;
-        double a0 = sp[0] > range[0] ? sp[0] : range[0], a1 = sp[1] < range[1] ? sp[1] : range[1];
-        double b0 = sp[2] > range[2] ? sp[2] : range[2], b1 = sp[3] < range[3] ? sp[3] : range[3];
-        if (!(a1 > a0 && b1 > b0))
-            continue;
-        const bs_patch *p = bs_surface_get(t, k);
-        if (a0 == sp[0] && a1 == sp[1] && b0 == sp[2] && b1 == sp[3]) {
-            st = bs_surface_add(out, p, NULL);
-            continue;
-        }
-        bs_patch *q;
-        double du = sp[1] - sp[0], dv = sp[3] - sp[2];
-        st = bs_patch_subpatch(p, (a0 - sp[0]) / du, (a1 - sp[0]) / du, (b0 - sp[2]) / dv, (b1 - sp[2]) / dv, &q);
-        if (st == BS_OK) {
-            st = bs_surface_add(out, q, NULL);
-            bs_patch_destroy(q);
-        }
-    }
-    bs_surface_destroy(t);
-    free(spans);
-    return st;
-}
-
 /* The next n reals of the entity into vals; knots (kind 1) must not decrease, weights (kind 2)
  * must be positive. */
 static bs_status read_reals(const iges *g, iges_stream *s, bsi_growing *vals, size_t n, int kind, const char *what)
@@ -205,7 +165,7 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
             st = bsi_iges_fail_at(g, &s, range_at, "parameter range empty or outside the knots' domain");
     }
     if (st == BS_OK)
-        st = add_range(&b, cut, out);
+        st = bsi_add_bspline_range(out, &b, cut);
     free(ctrl);
     if (st == BS_ERR_DOMAIN)
         return fail_de(g, de, 2, "knots repeated more than degree + 1 times or an empty domain");

@@ -48,6 +48,11 @@ typedef struct bsi_growing {
 bs_status bsi_grow(bsi_growing *g, size_t elem, size_t more);
 /* Create or truncate path and write size bytes: BS_OK or BS_ERR_IO. */
 bs_status bsi_write_file(const char *path, const char *data, size_t size);
+/* Append the Bezier patches of B-spline b (3-D) restricted to range u0 u1 v0 v1, which must lie in
+ * its knot domain with u0 < u1 and v0 < v1: the spans inside it whole, the spans it cuts cut by
+ * bs_patch_subpatch, the others left out. The statuses of bs_surface_add_bspline and
+ * bs_patch_subpatch; out may hold some of the patches on failure. */
+bs_status bsi_add_bspline_range(bs_surface *out, const bs_bspline *b, const double *range);
 /* What the text writers accept: BS_ERR_INVALID_ARG for NULL, BS_ERR_DIMENSION for a surface of
  * patches that are not 3-D (an empty one is fine), else BS_OK. */
 bs_status bsi_check_surface3(const bs_surface *s);

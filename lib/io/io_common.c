@@ -1,6 +1,9 @@
 /* What the text readers and writers of lib/io/ share: parse errors with a position, decimal
- * integers, whole files read into memory and written from memory. */
+ * integers, growing arrays, whole files read into memory and written from memory, a B-spline
+ * restricted to a parameter range. */
 #include "io/internal.h"
+
+#include <bezsurf/bspline.h>
 
 #include <stdarg.h>
 #include <stdint.h>
@@ -170,5 +173,44 @@ bs_status bsi_write_surface_file(const bs_surface *s, const char *path, bsi_text
     if (st == BS_OK)
         st = bsi_write_file(path, text, size - 1);
     free(text);
+    return st;
+}
+
+bs_status bsi_add_bspline_range(bs_surface *out, const bs_bspline *b, const double *range)
+{
+    size_t nu, nv, count;
+    bs_status st = bs_bspline_span_count(b, &nu, &nv);
+    if (st != BS_OK)
+        return st;
+    bs_surface *t;
+    double *spans = malloc(4 * nu * nv * sizeof(double));
+    if (spans == NULL)
+        return BS_ERR_NO_MEMORY;
+    if ((st = bs_surface_create(&t)) != BS_OK) {
+        free(spans);
+        return st;
+    }
+    st = bs_surface_add_bspline(t, b, spans, 4 * nu * nv, &count);
+    for (size_t k = 0; k < count && st == BS_OK; k++) {
+        const double *sp = spans + 4 * k;
+        double a0 = sp[0] > range[0] ? sp[0] : range[0], a1 = sp[1] < range[1] ? sp[1] : range[1];
+        double b0 = sp[2] > range[2] ? sp[2] : range[2], b1 = sp[3] < range[3] ? sp[3] : range[3];
+        if (!(a1 > a0 && b1 > b0))
+            continue;
+        const bs_patch *p = bs_surface_get(t, k);
+        if (a0 == sp[0] && a1 == sp[1] && b0 == sp[2] && b1 == sp[3]) {
+            st = bs_surface_add(out, p, NULL);
+            continue;
+        }
+        bs_patch *q;
+        double du = sp[1] - sp[0], dv = sp[3] - sp[2];
+        st = bs_patch_subpatch(p, (a0 - sp[0]) / du, (a1 - sp[0]) / du, (b0 - sp[2]) / dv, (b1 - sp[2]) / dv, &q);
+        if (st == BS_OK) {
+            st = bs_surface_add(out, q, NULL);
+            bs_patch_destroy(q);
+        }
+    }
+    bs_surface_destroy(t);
+    free(spans);
     return st;
 }

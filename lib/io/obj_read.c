@@ -24,6 +24,7 @@ typedef struct obj {
     size_t deg[2], ndeg;      /* from the last deg */
     int body;                 /* inside surf ... end, or another element's body */
     size_t surf_line, surf_col, parm_line[2], parm_col[2];
+    double range[4];          /* s0 s1 t0 t1 of the open surf */
     bsi_growing refs;         /* 0-based vertex of each control vertex of the open surf */
     bsi_growing parm[2];      /* parameter values along u and v */
     int have_parm[2];
@@ -230,9 +231,8 @@ static bs_status read_surf(obj *o, size_t kw)
     o->have_parm[0] = o->have_parm[1] = 0;
     static const char *const range[4] = {"s0", "s1", "t0", "t1"};
     bs_status st = BS_OK;
-    double x;
     for (size_t k = 0; k < 4 && st == BS_OK; k++)
-        st = read_number(o, range[k], &x);
+        st = read_number(o, range[k], &o->range[k]);
     size_t start, tlen;
     while (st == BS_OK && next_token(o, &start, &tlen))
         st = read_ref(o, start, tlen);
@@ -346,9 +346,8 @@ static bs_status build_bspline(obj *o, double *ctrl, double *w)
         }
     bs_bspline b = {o->deg[0], o->deg[1], cnt[0], cnt[1], 3, o->parm[0].data, o->parm[1].data, ctrl,
                     o->rat ? w : NULL};
-    bs_status st = bs_surface_add_bspline(o->s, &b, NULL, 0, NULL);
-    if (st == BS_ERR_DOMAIN) {
-        size_t nu, nv;
+    size_t nu, nv;
+    if (bs_bspline_span_count(&b, &nu, &nv) != BS_OK) {
         bs_bspline bu = b; /* the direction at fault: u checked alone (as both directions) */
         bu.knots_v = b.knots_u;
         bu.deg_v = b.deg_u;
@@ -356,6 +355,16 @@ static bs_status build_bspline(obj *o, double *ctrl, double *w)
         int d = bs_bspline_span_count(&bu, &nu, &nv) == BS_OK ? 1 : 0;
         return fail_surf(o, d, "knots must not decrease, repeat more than degree + 1 times, or leave an empty domain");
     }
+    /* the surf statement's range s0 s1 t0 t1, within the knots' domain */
+    const double *ku = b.knots_u, *kv = b.knots_v;
+    double dom[4] = {ku[b.deg_u], ku[b.count_u], kv[b.deg_v], kv[b.count_v]}, cut[4];
+    for (size_t d = 0; d < 4; d += 2) {
+        cut[d] = o->range[d] > dom[d] ? o->range[d] : dom[d];
+        cut[d + 1] = o->range[d + 1] < dom[d + 1] ? o->range[d + 1] : dom[d + 1];
+        if (!(cut[d + 1] > cut[d]))
+            return fail_surf(o, -1, "the surf range is empty or outside the knots' domain");
+    }
+    bs_status st = bsi_add_bspline_range(o->s, &b, cut);
     if (st == BS_ERR_NONFINITE)
         return fail_surf(o, -1, "weight times coordinate overflows");
     if (st == BS_ERR_SIZE)

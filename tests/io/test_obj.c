@@ -157,8 +157,8 @@ static void test_bezier_segments(void)
     bs_surface_destroy(s);
 }
 
-/* OBJ text for a B-spline (dim 3): its vertices, then the surface. */
-static char *bspline_text(const bs_bspline *b)
+/* OBJ text for a B-spline (dim 3): its vertices, then the surface over range s0 s1 t0 t1. */
+static char *bspline_text(const bs_bspline *b, const double *range)
 {
     size_t cap = 256 + 128 * b->count_u * b->count_v + 32 * (b->count_u + b->count_v + 2 * BS_MAX_DEGREE);
     char *s = malloc(cap);
@@ -169,8 +169,8 @@ static char *bspline_text(const bs_bspline *b)
             len += (size_t)snprintf(s + len, cap - len, "v %.17g %.17g %.17g %.17g\n", c[0], c[1], c[2],
                                     b->weights ? b->weights[i * b->count_v + j] : 1.0);
         }
-    len += (size_t)snprintf(s + len, cap - len, "cstype %sbspline\ndeg %zu %zu\nsurf 0 1 0 1", b->weights ? "rat " : "",
-                            b->deg_u, b->deg_v);
+    len += (size_t)snprintf(s + len, cap - len, "cstype %sbspline\ndeg %zu %zu\nsurf %.17g %.17g %.17g %.17g",
+                            b->weights ? "rat " : "", b->deg_u, b->deg_v, range[0], range[1], range[2], range[3]);
     for (size_t k = 0; k < b->count_u * b->count_v; k++)
         len += (size_t)snprintf(s + len, cap - len, " %zu", k + 1);
     len += (size_t)snprintf(s + len, cap - len, "\nparm u");
@@ -193,8 +193,9 @@ static void test_bspline(void)
     for (size_t k = 0; k < 7 * 4; k++)
         w[k] = bs_test_rand(&rng, 0.25, 4);
     for (int rational = 0; rational < 2; rational++) {
-        bs_bspline b = {3, 2, 7, 4, 3, ku, kv, c, rational ? w : NULL}; /* v unclamped */
-        char *t = bspline_text(&b);
+        bs_bspline b = {3, 2, 7, 4, 3, ku, kv, c, rational ? w : NULL}; /* v unclamped: domain [0, 2] */
+        double whole[4] = {-1, 5, 0, 2}; /* beyond the domain in u: cut at it */
+        char *t = bspline_text(&b, whole);
         bs_surface *got = NULL, *want = NULL;
         bs_parse_error err = {0, 0, ""};
         CHECKF(parse(t, &err, &got) == BS_OK, "%zu:%zu %s", err.line, err.column, err.message);
@@ -202,7 +203,34 @@ static void test_bspline(void)
         CHECK_STATUS(bs_surface_add_bspline(want, &b, NULL, 0, NULL), BS_OK);
         CHECKF(surface_same_bits(got, want) && bs_surface_count(got) == 3 * 2, "rational %d", rational);
         bs_surface_destroy(got);
+        free(t);
+
+        /* over a sub-range: the spans it cuts are cut, evaluated against the whole B-spline */
+        double sub[4] = {0.5, 3.0, 0.25, 2};
+        t = bspline_text(&b, sub);
+        CHECKF(parse(t, &err, &got) == BS_OK, "%zu:%zu %s", err.line, err.column, err.message);
+        CHECK(bs_surface_count(got) == 3 * 2);
+        double worst = 0;
+        size_t nu = 3, nv = 2;
+        const double bu[4] = {0.5, 1, 2.5, 3}, bv[3] = {0.25, 0.5, 2};
+        for (size_t k = 0; got && k < nu * nv; k++)
+            for (int a = 0; a <= 4; a++)
+                for (int e = 0; e <= 4; e++) {
+                    size_t i = k / nv, j = k % nv, index;
+                    double u = bu[i] + (bu[i + 1] - bu[i]) * a / 4.0, v = bv[j] + (bv[j + 1] - bv[j]) * e / 4.0;
+                    double lu, lv, x[3], y[3];
+                    CHECK(patch_point(bs_surface_get(got, k), a / 4.0, e / 4.0, x));
+                    CHECK(bs_bspline_locate(&b, u, v, &index, &lu, &lv) == BS_OK &&
+                          patch_point(bs_surface_get(want, index), lu, lv, y));
+                    for (int d = 0; d < 3; d++)
+                        worst = fmax(worst, fabs(x[d] - y[d]));
+                }
+        CHECKF(worst < 1e-12, "sub-range differs by %g", worst);
+        bs_surface_destroy(got);
         bs_surface_destroy(want);
+        free(t);
+        t = bspline_text(&b, (double[4]){5, 6, 0, 2}); /* outside the domain */
+        CHECK(parse(t, &err, &got) == BS_ERR_PARSE && got == NULL && err.line == 7 * 4 + 3);
         free(t);
     }
 }

@@ -196,7 +196,7 @@ class Surface(Handle):
     @classmethod
     def read_obj(cls, text: Union[str, bytes]) -> "Surface":
         """Parse the free-form surfaces of Wavefront OBJ text (Bezier and B-spline, rational or
-        not) into Bezier patches (docs/formats.md). Raises ParseError with ``line`` and
+        not; a B-spline over its ``surf`` range) into Bezier patches (docs/formats.md). Raises ParseError with ``line`` and
         ``column`` when the text is malformed, UnsupportedError (its ``detail`` naming the line)
         for bmatrix, cardinal and taylor surfaces."""
         return cls._read_text(LIB.bs_surface_read_obj, text)
