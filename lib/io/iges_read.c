@@ -135,6 +135,7 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
         return bsi_iges_fail_at(g, &s, at, "more control points than the parameter data can hold");
     size_t n = cu * cv, nku = cu + pu + 1, nkv = cv + pv + 1;
     vals->n = 0;
+    size_t knots_at = s.pos; /* just after the delimiter before the first knot */
     if ((st = read_reals(g, &s, vals, nku, 1, "a knot of u")) != BS_OK ||
         (st = read_reals(g, &s, vals, nkv, 1, "a knot of v")) != BS_OK ||
         (st = read_reals(g, &s, vals, n, 2, "a weight")) != BS_OK ||
@@ -157,6 +158,9 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
         }
     st = transform(g, de, ctrl, n);
     bs_bspline b = {pu, pv, cu, cv, 3, val, val + nku, ctrl, rational ? wt : NULL};
+    size_t nu, nv;
+    if (st == BS_OK && bs_bspline_span_count(&b, &nu, &nv) != BS_OK)
+        st = BS_ERR_DOMAIN; /* knots repeated too often or an empty domain, before the range */
     double dom[4] = {val[pu], val[cu], val[nku + pv], val[nku + cv]}, cut[4];
     for (size_t d = 0; d < 2; d++) { /* the range within the knots' domain */
         cut[2 * d] = range[2 * d] > dom[2 * d] ? range[2 * d] : dom[2 * d];
@@ -168,7 +172,7 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
         st = bsi_add_bspline_range(out, &b, cut);
     free(ctrl);
     if (st == BS_ERR_DOMAIN)
-        return fail_de(g, de, 2, "knots repeated more than degree + 1 times or an empty domain");
+        return bsi_iges_fail_at(g, &s, knots_at, "knots repeated more than degree + 1 times or an empty domain");
     if (st == BS_ERR_NONFINITE)
         return fail_de(g, de, 7, "a control point (transformed, times its weight) is not finite");
     if (st == BS_ERR_SIZE)

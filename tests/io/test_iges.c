@@ -292,6 +292,7 @@ static void test_errors(void)
     SPOIL(t[5 * L + 12] = '2', 6, 13, "PROP1 = 2");
     SPOIL(t[5 * L + 22] = 'z', 6, 23, "knot not a number");
     SPOIL(t[5 * L + 28] = '0', 6, 29, "decreasing knots");
+    SPOIL(t[5 * L + 36] = '0', 6, 23, "a knot repeated more than degree + 1 times");
     {
         char *w = strstr(good + 5 * L, ",1,1,1,1,1,1,");
         size_t at = w ? (size_t)(w - good) : 0;
