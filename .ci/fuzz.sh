@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Build the libFuzzer targets with clang in their own build tree, replay the committed seed corpora,
-# then fuzz each target for N seconds (default 120) and print its execution count.
+# then fuzz each target for N seconds (default 120; the OBJ and IGES readers' targets for at most
+# 60 seconds each) and print its execution count.
 #   .ci/fuzz.sh [seconds]        FUZZ_BUILD=dir to choose the build tree (default build-fuzz)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,16 +10,18 @@ seconds=${1:-120}
 build=${FUZZ_BUILD:-$root/build-fuzz}
 CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
   -DBS_BUILD_TOOLS=OFF >/dev/null
-cmake --build "$build" -j2 --target fuzz_bpt fuzz_api
-for target in fuzz_bpt fuzz_api; do
+cmake --build "$build" -j2 --target fuzz_bpt fuzz_api fuzz_obj fuzz_iges
+for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges; do
+  budget=$seconds
+  case $target in fuzz_obj | fuzz_iges) if [ "$budget" -gt 60 ]; then budget=60; fi ;; esac
   seeds=$root/tests/fuzz/corpus/$target
   work=$build/corpus-$target
   mkdir -p "$work" "$build/artifacts"
   echo "== $target: replay $(ls "$seeds" | wc -l) seeds"
   "$build/tests/$target" -runs=0 "$seeds" 2>&1 | tail -n 1
-  echo "== $target: fuzz ${seconds}s"
+  echo "== $target: fuzz ${budget}s"
   log=$build/$target.log
-  if ! "$build/tests/$target" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
+  if ! "$build/tests/$target" -max_total_time="$budget" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" "$work" "$seeds" >"$log" 2>&1; then
     tail -n 60 "$log"
     echo "== $target: FAILED (the input is saved in $build/artifacts)"
@@ -26,5 +29,5 @@ for target in fuzz_bpt fuzz_api; do
   fi
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -n 1)
-  echo "== $target: $execs executions in ${seconds}s, $cov, corpus $(ls "$work" | wc -l) files"
+  echo "== $target: $execs executions in ${budget}s, $cov, corpus $(ls "$work" | wc -l) files"
 done

@@ -1,21 +1,13 @@
 /* Reading the .bpt text format (docs/bpt-format.md) from memory or from a file. */
-#define _POSIX_C_SOURCE 200809L // NOLINT(bugprone-reserved-identifier,cert-dcl37-c,cert-dcl51-cpp): POSIX feature-test macro
-
 #include "io/internal.h"
 
-#include <errno.h>
-#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 /* Each patch needs at least "0 0 x y z" and a separator before it: 10 bytes. */
 #define MIN_PATCH_BYTES 10
-/* Largest file read (a power of two times the first buffer): about 5 million bicubic patches. */
-#define BPT_FILE_MAX ((size_t)256 << 20)
 
 typedef struct reader {
     const char *text;
@@ -57,16 +49,11 @@ static int next_token(reader *r, size_t *start, size_t *tlen)
 /* Record the first error at byte offset `at` (on the current line) and return BS_ERR_PARSE. */
 static bs_status fail(reader *r, size_t at, const char *fmt, ...)
 {
-    if (r->err != NULL) {
-        r->err->line = r->line;
-        r->err->column = at - r->line_start + 1;
-        va_list ap;
-        va_start(ap, fmt);
-        /* a message cut to the buffer is fine; ap is started just above (the analyzer misses it) */
-        (void)vsnprintf(r->err->message, sizeof r->err->message, fmt, ap); // NOLINT(clang-analyzer-valist.Uninitialized)
-        va_end(ap);
-    }
-    return BS_ERR_PARSE;
+    va_list ap;
+    va_start(ap, fmt);
+    bs_status st = bsi_vfail(r->err, r->line, at - r->line_start + 1, fmt, ap);
+    va_end(ap);
+    return st;
 }
 
 /* A non-negative decimal integer no larger than max. */
@@ -78,20 +65,11 @@ static bs_status read_count(reader *r, const char *what, size_t max, size_t *val
     const char *t = r->text + start;
     if (tlen > 1 && t[0] == '-' && t[1] >= '0' && t[1] <= '9')
         return fail(r, start, "negative %s", what);
-    size_t v = 0;
-    int over = 0;
-    for (size_t k = 0; k < tlen; k++) {
-        if (t[k] < '0' || t[k] > '9')
-            return fail(r, start, "expected %s (a non-negative integer)", what);
-        size_t d = (size_t)(t[k] - '0');
-        if (over || v > (max - d) / 10)
-            over = 1; /* keep going only to validate the remaining digits */
-        else
-            v = v * 10 + d;
-    }
-    if (over)
+    int ok = bsi_parse_size(t, tlen, max, value);
+    if (ok == 0)
+        return fail(r, start, "expected %s (a non-negative integer)", what);
+    if (ok < 0)
         return fail(r, start, "%s too large (at most %zu here)", what, max);
-    *value = v;
     return BS_OK;
 }
 
@@ -207,105 +185,7 @@ bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_error *err,
     return BS_OK;
 }
 
-static void io_error(bs_parse_error *err, const char *what)
-{
-    if (err != NULL) {
-        err->line = 0;
-        err->column = 0;
-        (void)snprintf(err->message, sizeof err->message, "%s", what);
-    }
-}
-
-/* Open path for reading if it is a regular file. Opening does not wait (a FIFO without a writer
- * would block a plain open), and anything else is refused before a byte is read: a FIFO, a device
- * or a socket could block the reads or never end. NULL with err and errno set on failure. */
-static FILE *open_regular(const char *path, bs_parse_error *err)
-{
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) {
-        int e = errno;
-        io_error(err, "cannot open the file");
-        errno = e;
-        return NULL;
-    }
-    struct stat st;
-    if (fstat(fd, &st) != 0) {
-        int e = errno;
-        (void)close(fd);
-        io_error(err, "cannot open the file");
-        errno = e;
-        return NULL;
-    }
-    if (!S_ISREG(st.st_mode)) {
-        (void)close(fd);
-        io_error(err, S_ISDIR(st.st_mode)    ? "not a regular file (a directory)"
-                      : S_ISFIFO(st.st_mode) ? "not a regular file (a FIFO)"
-                      : S_ISSOCK(st.st_mode) ? "not a regular file (a socket)"
-                                             : "not a regular file (a device)");
-        errno = S_ISDIR(st.st_mode) ? EISDIR : 0;
-        return NULL;
-    }
-    /* regular files never block: the flag changes nothing for them and may stay set */
-    FILE *f = fdopen(fd, "rb");
-    if (f == NULL) {
-        int e = errno;
-        (void)close(fd);
-        io_error(err, "cannot open the file");
-        errno = e;
-    }
-    return f;
-}
-
 bs_status bs_surface_read_bpt_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
-    if (out != NULL)
-        *out = NULL;
-    if (path == NULL || out == NULL)
-        return BS_ERR_INVALID_ARG;
-    FILE *f = open_regular(path, err);
-    if (f == NULL)
-        return BS_ERR_IO;
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    bs_status st = BS_OK;
-    for (;;) {
-        if (len == cap) {
-            if (cap >= BPT_FILE_MAX) { /* full: only the end of the file may follow */
-                char extra;
-                if (fread(&extra, 1, 1, f) == 0) {
-                    if (ferror(f)) {
-                        io_error(err, "cannot read the file");
-                        st = BS_ERR_IO;
-                    }
-                    break;
-                }
-                io_error(err, "file larger than 256 MiB");
-                errno = EFBIG;
-                st = BS_ERR_IO;
-                break;
-            }
-            size_t ncap = cap ? 2 * cap : 65536;
-            char *grown = realloc(buf, ncap);
-            if (grown == NULL) {
-                st = BS_ERR_NO_MEMORY;
-                break;
-            }
-            buf = grown;
-            cap = ncap;
-        }
-        size_t got = fread(buf + len, 1, cap - len, f);
-        len += got;
-        if (got == 0) {
-            if (ferror(f)) {
-                io_error(err, "cannot read the file");
-                st = BS_ERR_IO;
-            }
-            break;
-        }
-    }
-    (void)fclose(f); /* a stream only read from has nothing left to report */
-    if (st == BS_OK)
-        st = bs_surface_read_bpt(buf, len, err, out);
-    free(buf);
-    return st;
+    return bsi_read_surface_file(path, err, out, bs_surface_read_bpt);
 }

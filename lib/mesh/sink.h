@@ -1,8 +1,8 @@
 /*
- * A byte sink for the mesh writers: a FILE, a caller buffer of cap bytes, or neither (only
- * counts). Writes past cap or failing writes set err (a failing file write to its errno); len
- * counts every byte asked for. Private to
- * lib/mesh/; not installed.
+ * A byte sink for the mesh writers (and the OBJ surface writer of lib/io/): a FILE, a caller
+ * buffer of cap bytes, or neither (only counts). Writes past cap or failing writes set err (a
+ * failing file write to its errno); len counts every byte asked for. Private to the library;
+ * not installed.
  */
 #ifndef BEZSURF_MESH_SINK_H
 #define BEZSURF_MESH_SINK_H

@@ -248,6 +248,39 @@ static bs_status op_write_bpt(void)
 static const char *tmp_path;
 static bs_status op_write_bpt_file(void) { return bs_surface_write_bpt_file(TEAPOT, tmp_path); }
 
+/* A rational B-spline and a two-segment Bezier surface: both conversions of the OBJ reader. */
+static const char obj_text[] = "v 0 0 0\nv 1 0 0 2\nv 0 1 0\nv 1 1 0\nv 2 0 1\nv 2 1 1\n"
+                               "cstype rat bspline\ndeg 1 1\nsurf 0 2 0 1 1 2 5 3 4 6\n"
+                               "parm u 0 0 1 2 2\nparm v 0 0 1 1\nend\n"
+                               "cstype bezier\ndeg 1 1\nsurf 0 2 0 1 1 2 5 \\\n 3 4 6\nparm u 0 1 2\nend\n";
+
+static bs_status op_read_obj(void)
+{
+    bs_surface *s = (bs_surface *)(void *)HSENT;
+    bs_status st = bs_surface_read_obj(obj_text, sizeof obj_text - 1, NULL, &s);
+    if (st != BS_OK)
+        CHECK(s == NULL);
+    else
+        CHECK(bs_surface_count(s) == 4);
+    bs_surface_destroy(s == (bs_surface *)(void *)HSENT ? NULL : s);
+    return st;
+}
+
+static bs_status op_write_obj_file(void) { return bs_surface_write_obj_file(TEAPOT, tmp_path); }
+
+/* An OpenCASCADE file of a B-spline over a sub-range of its knots: spans cut by sub-patches. */
+static bs_status op_read_iges_file(void)
+{
+    bs_surface *s = (bs_surface *)(void *)HSENT;
+    bs_status st = bs_surface_read_iges_file(BS_IGES_FIXTURE, NULL, &s);
+    if (st != BS_OK)
+        CHECK(s == NULL);
+    else
+        CHECK(bs_surface_count(s) == 6);
+    bs_surface_destroy(s == (bs_surface *)(void *)HSENT ? NULL : s);
+    return st;
+}
+
 static bs_status op_continuity(void)
 {
     bs_edge_continuity e[64];
@@ -351,6 +384,9 @@ static const op ops[] = {
     {"bs_surface_write_bpt", op_write_bpt, 1},
     {"bs_surface_write_bpt_file", op_write_bpt_file, 0},
     {"bs_surface_add_bspline", op_add_bspline, 0},
+    {"bs_surface_read_obj", op_read_obj, 0},
+    {"bs_surface_write_obj_file", op_write_obj_file, 0},
+    {"bs_surface_read_iges_file", op_read_iges_file, 0},
     {"bs_surface_continuity", op_continuity, 0},
     {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
     {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},

@@ -2,6 +2,7 @@
  * still read and written with '.', and round trips stay exact. Skipped (exit 77) when no such
  * locale is installed. */
 #include "harness.h"
+#include "surface_check.h"
 
 #include <bezsurf.h>
 
@@ -11,11 +12,7 @@
 
 int main(void)
 {
-    static const char *const names[] = {"de_DE.UTF-8", "de_DE.utf8", "de_DE", "de_DE@euro", "fr_FR.UTF-8"};
-    const char *found = NULL;
-    for (size_t k = 0; k < sizeof names / sizeof names[0] && !found; k++)
-        if (setlocale(LC_ALL, names[k]) != NULL && strcmp(localeconv()->decimal_point, ",") == 0)
-            found = names[k];
+    const char *found = switch_to_comma_locale();
     if (found == NULL) {
         printf("test_bpt_locale: skipped, no locale with a decimal comma is installed\n");
         return 77;

@@ -83,6 +83,9 @@ static void test_failed_writes(const bs_surface *teapot, const bs_mesh *m)
     errno = 0;
     CHECK_STATUS(bs_surface_write_bpt_file(teapot, in_dir("old.bpt")), BS_ERR_IO);
     CHECKF(errno == EFBIG, ".bpt: errno %d, expected EFBIG", errno);
+    errno = 0;
+    CHECK_STATUS(bs_surface_write_obj_file(teapot, in_dir("old.bpt")), BS_ERR_IO);
+    CHECKF(errno == EFBIG, "OBJ: errno %d, expected EFBIG", errno);
     for (int k = 0; k < 4; k++) {
         errno = 0;
         CHECK_STATUS(bs_mesh_write(m, formats[k], in_dir("old.mesh")), BS_ERR_IO);
@@ -107,6 +110,11 @@ static void test_replaced_whole(const bs_surface *teapot, const bs_mesh *m)
     bs_surface_destroy(back);
     struct stat st;
     CHECK(stat(in_dir("keep.bpt"), &st) == 0 && (st.st_mode & 0777) == 0640);
+    CHECK_STATUS(bs_surface_write_obj_file(teapot, in_dir("keep.bpt")), BS_OK);
+    CHECK_STATUS(bs_surface_read_obj_file(in_dir("keep.bpt"), NULL, &back), BS_OK);
+    CHECK(bs_surface_count(back) == 32);
+    bs_surface_destroy(back);
+    CHECK(stat(in_dir("keep.bpt"), &st) == 0 && (st.st_mode & 0777) == 0640);
     CHECK_STATUS(bs_mesh_write(m, BS_MESH_STL, in_dir("keep.bpt")), BS_OK);
     CHECK(stat(in_dir("keep.bpt"), &st) == 0 && (size_t)st.st_size == 84 + 50 * bs_mesh_triangle_count(m));
     CHECKF(entries() == before, "a write left %d files behind", entries() - before);
@@ -119,6 +127,7 @@ static void test_not_regular(const bs_surface *teapot, const bs_mesh *m)
     CHECK(mkdir(in_dir("sub"), 0755) == 0);
     CHECK_STATUS(bs_surface_write_bpt_file(teapot, in_dir("sub")), BS_ERR_IO);
     CHECK_STATUS(bs_mesh_write(m, BS_MESH_OBJ, in_dir("sub")), BS_ERR_IO);
+    CHECK_STATUS(bs_surface_write_obj_file(teapot, in_dir("sub")), BS_ERR_IO);
     struct stat st;
     CHECK(stat(in_dir("sub"), &st) == 0 && S_ISDIR(st.st_mode));
     CHECK_STATUS(bs_surface_read_bpt_file(in_dir("sub"), &err, &s), BS_ERR_IO);
@@ -129,6 +138,10 @@ static void test_not_regular(const bs_surface *teapot, const bs_mesh *m)
     s = (bs_surface *)(void *)&path;
     CHECK_STATUS(bs_surface_read_bpt_file(in_dir("fifo"), &err, &s), BS_ERR_IO);
     CHECK(s == NULL && strstr(err.message, "not a regular file") != NULL);
+    CHECK_STATUS(bs_surface_read_obj_file(in_dir("fifo"), &err, &s), BS_ERR_IO);
+    CHECK_STATUS(bs_surface_read_iges_file(in_dir("fifo"), &err, &s), BS_ERR_IO);
+    CHECK(s == NULL && strstr(err.message, "not a regular file") != NULL);
+    CHECK_STATUS(bs_surface_write_obj_file(teapot, in_dir("fifo")), BS_ERR_IO);
     CHECK_STATUS(bs_surface_write_bpt_file(teapot, in_dir("fifo")), BS_ERR_IO);
     CHECK_STATUS(bs_mesh_write(m, BS_MESH_PLY, in_dir("fifo")), BS_ERR_IO);
     alarm(0);

@@ -1,7 +1,7 @@
 /* The bad-input matrix: every public function against every class of bad input that applies to it
  * (NULL handle, NULL views, short counts, n x stride overflow, misaligned data or strides, degrees
  * and dimensions out of range, NaN/Inf control points, weights and parameters, zero-length
- * intervals, truncated and hostile .bpt text). Each case checks the documented status, that every
+ * intervals, truncated and hostile .bpt, OBJ and IGES text). Each case checks the documented status, that every
  * caller buffer (sentinel-filled) is untouched on failure, and that new-handle outputs are NULL.
  * The program prints the size of the matrix it ran. */
 #include "harness.h"
@@ -485,6 +485,23 @@ static void test_constructions(void)
     NULLED(h[0]);
 }
 
+/* The bad arguments of a surface text writer and of its file twin. */
+typedef bs_status (*text_writer)(const bs_surface *, char *, size_t, size_t *);
+typedef bs_status (*file_writer)(const bs_surface *, const char *);
+static void writer_rows(const char *name, text_writer w, const char *file_name, file_writer wf)
+{
+    size_t ne = 99;
+    BAD(name, "NULL handle", BS_ERR_INVALID_ARG, w(NULL, tbuf, sizeof tbuf, &ne));
+    BAD(name, "NULL views", BS_ERR_INVALID_ARG, w(S3, tbuf, sizeof tbuf, NULL));
+    BAD(name, "count too small", BS_ERR_SIZE, w(S3, tbuf, 10, &ne));
+    BAD(name, "dim out of range", BS_ERR_DIMENSION, w(S2, tbuf, sizeof tbuf, &ne));
+    BAD(file_name, "NULL handle", BS_ERR_INVALID_ARG, wf(NULL, "x.out"));
+    BAD(file_name, "NULL views", BS_ERR_INVALID_ARG, wf(S3, NULL));
+    BAD(file_name, "dim out of range", BS_ERR_DIMENSION, wf(S2, "x.out"));
+    BAD(file_name, "I/O failure", BS_ERR_IO, wf(S3, "/nonexistent-directory/x.out"));
+    CHECK(ne == 99);
+}
+
 static void test_surfaces(void)
 {
     bs_edge_continuity edges[4];
@@ -517,15 +534,7 @@ static void test_surfaces(void)
         bs_surface_continuity(S3, 0, 4, edges, 4, &ne, open, 1, &no));
     CHECK(open[0].patch == 0x77777777u);
 
-    BAD("bs_surface_write_bpt", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_bpt(NULL, tbuf, sizeof tbuf, &ne));
-    BAD("bs_surface_write_bpt", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_bpt(S3, tbuf, sizeof tbuf, NULL));
-    BAD("bs_surface_write_bpt", "count too small", BS_ERR_SIZE, bs_surface_write_bpt(S3, tbuf, 10, &ne));
-    BAD("bs_surface_write_bpt", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_bpt(S2, tbuf, sizeof tbuf, &ne));
-    BAD("bs_surface_write_bpt_file", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_write_bpt_file(NULL, "x.bpt"));
-    BAD("bs_surface_write_bpt_file", "NULL views", BS_ERR_INVALID_ARG, bs_surface_write_bpt_file(S3, NULL));
-    BAD("bs_surface_write_bpt_file", "dim out of range", BS_ERR_DIMENSION, bs_surface_write_bpt_file(S2, "x.bpt"));
-    BAD("bs_surface_write_bpt_file", "I/O failure", BS_ERR_IO,
-        bs_surface_write_bpt_file(S3, "/nonexistent-directory/x.bpt"));
+    writer_rows("bs_surface_write_bpt", bs_surface_write_bpt, "bs_surface_write_bpt_file", bs_surface_write_bpt_file);
     BAD("bs_surface_create_builtin", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_create_builtin(NULL, &hs));
     NULLED(hs);
     BAD("bs_surface_create_builtin", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_create_builtin("teapot", NULL));
@@ -686,6 +695,98 @@ static void test_hostile_bpt(void)
     BAD("bs_surface_read_bpt_file", "I/O failure", BS_ERR_IO, bs_surface_read_bpt_file("/", &perr, &hs));
 }
 
+/* The bad arguments of a text reader (good: a text it reads) and of its file twin. */
+typedef bs_status (*text_reader)(const char *, size_t, bs_parse_error *, bs_surface **);
+typedef bs_status (*file_reader)(const char *, bs_parse_error *, bs_surface **);
+static void reader_rows(const char *name, text_reader r, const char *file_name, file_reader rf, const char *good)
+{
+    BAD(name, "NULL handle", BS_ERR_INVALID_ARG, r(good, strlen(good), NULL, NULL));
+    BAD(name, "NULL views", BS_ERR_INVALID_ARG, r(NULL, 5, NULL, &hs));
+    NULLED(hs);
+    BAD(file_name, "NULL views", BS_ERR_INVALID_ARG, rf(NULL, NULL, &hs));
+    BAD(file_name, "NULL handle", BS_ERR_INVALID_ARG, rf("x", NULL, NULL));
+    BAD(file_name, "I/O failure", BS_ERR_IO, rf("/nonexistent-directory/x", &perr, &hs));
+    NULLED(hs);
+    CHECK(perr.line == 0 && perr.column == 0);
+    BAD(file_name, "I/O failure", BS_ERR_IO, rf("/", &perr, &hs));
+    NULLED(hs);
+}
+
+/* Hostile OBJ and IGES texts: each one fails with its status and a position, no surface; the OBJ
+ * writer's bad arguments. */
+static void test_hostile_free_form(void)
+{
+    static const char *const obj[] = {
+        "v 0 0\n",
+        "v 0 nan 0\n",
+        "v 0 0,5 0\n",
+        "v 0 1e999 0\n",
+        "7 0 0\n",
+        "deg 65 1\n",
+        "deg 184467440737095516170 1\n",
+        "cstype nurbs\n",
+        "end\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 2\nend\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 -2\nend\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1\nend\n",
+        "v 0 0 0\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\n",
+        "v 0 0 0 0\ncstype rat bezier\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nend\n",
+        "v 0 0 0\ncstype bspline\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nparm u 0 0 1 1\nparm v 1 1 0 0\nend\n",
+        "v 0 0 0\ncstype bspline\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nparm u 0 0 1 1 1\nparm v 0 0 1 1\nend\n",
+        "v 0 0 0\nv 1 0\0 0\n",
+    };
+    for (size_t k = 0; k < sizeof obj / sizeof obj[0]; k++) {
+        size_t len = strlen(obj[k]) + (k + 1 == sizeof obj / sizeof obj[0] ? 5 : 0);
+        BAD("bs_surface_read_obj", "truncated or hostile text", BS_ERR_PARSE, bs_surface_read_obj(obj[k], len, &perr, &hs));
+        NULLED(hs);
+        CHECKF(perr.line >= 1 && perr.column >= 1, "OBJ text %zu: no error position", k);
+    }
+    BAD("bs_surface_read_obj", "unsupported curve type", BS_ERR_UNSUPPORTED,
+        bs_surface_read_obj("v 0 0 0\ncstype taylor\ndeg 1 1\nsurf 0 1 0 1 1 1 1 1\nend\n", 48, &perr, &hs));
+    CHECK(perr.line == 4 && perr.column == 1);
+    reader_rows("bs_surface_read_obj", bs_surface_read_obj, "bs_surface_read_obj_file", bs_surface_read_obj_file,
+                "v 0 0 0\n");
+    writer_rows("bs_surface_write_obj", bs_surface_write_obj, "bs_surface_write_obj_file", bs_surface_write_obj_file);
+
+    /* IGES: a valid file (S, G, D, P, T) spoiled record by record */
+    static const char good[] =
+        "                                                                        S0000001\n"
+        ",,;                                                                     G0000001\n"
+        "     128       1       0       0       0       0       0       000000000D0000001\n"
+        "     128       0       0       2       0                                D0000002\n"
+        "128,1,1,1,1,0,0,1,0,0,0,0,1,1,0,0,1,1,1,1,1,1,0,0,0,1,0,0,0,1,0,       1P0000001\n"
+        "1,1,1,0,1,0,1;                                                         1P0000002\n"
+        "S0000001G0000001D0000002P0000002                                        T0000001\n";
+    char t[sizeof good];
+    memcpy(t, good, sizeof good);
+    reset();
+    CHECK_STATUS(bs_surface_read_iges(t, sizeof t - 1, &perr, &hs), BS_OK);
+    CHECK(bs_surface_count(hs) == 1);
+    bs_surface_destroy(hs);
+    static const struct { size_t at; const char *with; } spoil[] = {
+        {0, ""}, {72, "C"}, {81 + 72, "X"}, {81 + 2, "H"}, {2 * 81 + 15, "7"}, {3 * 81 + 31, "9"},
+        {2 * 81 + 55, "4"}, {2 * 81 + 55, "1"}, {3 * 81 + 38, "10"}, {4 * 81, "126"}, {4 * 81 + 4, "0"},
+        {4 * 81 + 8, "99"}, {4 * 81 + 12, "3"}, {4 * 81 + 24, "-"}, {4 * 81 + 36, "0"}, {4 * 81 + 22, "x"},
+        {5 * 81 + 13, " "}, {5 * 81 + 6, "9"}, {4 * 81 + 38, "0"}, {6 * 81 - 1, "\n\n"}, {6 * 81, "x"},
+    };
+    for (size_t k = 0; k < sizeof spoil / sizeof spoil[0]; k++) {
+        char u[sizeof good + 4];
+        memcpy(u, t, sizeof t);
+        size_t len = sizeof t - 1;
+        if (k == 0)
+            len = 0;
+        else if (k == sizeof spoil / sizeof spoil[0] - 1)
+            len = 6 * 81; /* no T section */
+        else
+            memcpy(u + spoil[k].at, spoil[k].with, strlen(spoil[k].with));
+        BAD("bs_surface_read_iges", "truncated or hostile text", BS_ERR_PARSE, bs_surface_read_iges(u, len, &perr, &hs));
+        NULLED(hs);
+        CHECKF(perr.line >= 1 && perr.column >= 1, "IGES spoil %zu: no error position", k);
+    }
+    reader_rows("bs_surface_read_iges", bs_surface_read_iges, "bs_surface_read_iges_file", bs_surface_read_iges_file,
+                good);
+}
+
 int main(void)
 {
     setup();
@@ -697,6 +798,7 @@ int main(void)
     test_constructions();
     test_surfaces();
     test_hostile_bpt();
+    test_hostile_free_form();
     test_meshes();
     bs_patch_destroy(P3);
     bs_patch_destroy(R3);

@@ -167,11 +167,17 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_mesh_copy_strips", (HANDLE, IDS, c_size_t, IDS, c_size_t), STATUS),
     ("bs_mesh_write", (HANDLE, c_int, c_char_p), STATUS),
     ("bs_mesh_write_memory", (HANDLE, c_int, c_void_p, c_size_t, SIZE_OUT), STATUS),
-    # io.h: the .bpt format and the built-in tea set
+    # io.h: the .bpt format, OBJ free-form and IGES surfaces, the built-in tea set
     ("bs_surface_read_bpt", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
     ("bs_surface_read_bpt_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
     ("bs_surface_write_bpt", (HANDLE, c_void_p, c_size_t, SIZE_OUT), STATUS),
     ("bs_surface_write_bpt_file", (HANDLE, c_char_p), STATUS),
+    ("bs_surface_read_obj", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_read_obj_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_write_obj", (HANDLE, c_void_p, c_size_t, SIZE_OUT), STATUS),
+    ("bs_surface_write_obj_file", (HANDLE, c_char_p), STATUS),
+    ("bs_surface_read_iges", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_surface_read_iges_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
     ("bs_surface_create_builtin", (c_char_p, HANDLE_OUT), STATUS),
     ("bs_builtin_name", (c_size_t,), c_char_p),
 )

@@ -10,7 +10,7 @@ from . import _args as A
 from . import _buffers as B
 from ._buffers import Point, PointOrPoints, Points
 from ._enums import SIDES, Side
-from ._errors import BezsurfError, BezsurfIOError, ParseError, io_error
+from ._errors import BezsurfError, BezsurfIOError, ParseError, UnsupportedError, io_error
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
@@ -75,6 +75,9 @@ def _located(exc: BezsurfError, err: CParseError, filename: Optional[str] = None
                           err.line or None, err.column or None, filename)
     if isinstance(exc, BezsurfIOError):
         return io_error(exc.code, exc.message, exc.function, reason, exc.errno, filename)
+    if isinstance(exc, UnsupportedError) and err.line:
+        return UnsupportedError(exc.code, exc.message, exc.function,
+                                f"line {err.line}, column {err.column}: {reason}")
     return exc
 
 
@@ -122,9 +125,8 @@ class Surface(Handle):
         return cls._wrap(out.value)
 
     @classmethod
-    def from_bpt(cls, text: Union[str, bytes]) -> "Surface":
-        """Parse .bpt text (str or bytes) into a new surface of 3-D patches.
-        Raises ParseError with ``line``, ``column`` and ``detail`` when the text is malformed."""
+    def _read_text(cls, reader: Any, text: Union[str, bytes]) -> "Surface":
+        """A new surface from text through a C reader of (text, len, err, out)."""
         if isinstance(text, str):
             data = text.encode("utf-8")
         elif isinstance(text, (bytes, bytearray, memoryview)):
@@ -134,43 +136,99 @@ class Surface(Handle):
         err = CParseError()
         out = ctypes.c_void_p()
         try:
-            LIB.bs_surface_read_bpt(data, len(data), ctypes.byref(err), ctypes.byref(out))
+            reader(data, len(data), ctypes.byref(err), ctypes.byref(out))
         except BezsurfError as exc:
             raise _located(exc, err) from None
         return cls._wrap(out.value)
+
+    @classmethod
+    def _read_file(cls, reader: Any, path: A.PathArg) -> "Surface":
+        """A new surface from a file through a C reader of (path, err, out)."""
+        name = A.path(path)
+        err = CParseError()
+        out = ctypes.c_void_p()
+        ctypes.set_errno(0)
+        try:
+            reader(name, ctypes.byref(err), ctypes.byref(out))
+        except BezsurfError as exc:
+            raise _located(exc, err, os.fsdecode(name)) from None
+        return cls._wrap(out.value)
+
+    def _write_text(self, writer: Any) -> str:
+        """The text a C writer of (surface, buf, cap, size) produces."""
+        size = ctypes.c_size_t()
+        writer(self._ptr, None, 0, ctypes.byref(size))
+        buf = ctypes.create_string_buffer(size.value)
+        writer(self._ptr, buf, size.value, ctypes.byref(size))
+        return buf.value.decode("ascii")
+
+    def _write_file(self, writer: Any, path: A.PathArg) -> None:
+        """Write a file through a C writer of (surface, path)."""
+        name = A.path(path)
+        ctypes.set_errno(0)
+        try:
+            writer(self._ptr, name)
+        except BezsurfIOError as exc:
+            raise _with_file(exc, os.fsdecode(name)) from None
+
+    @classmethod
+    def from_bpt(cls, text: Union[str, bytes]) -> "Surface":
+        """Parse .bpt text (str or bytes) into a new surface of 3-D patches.
+        Raises ParseError with ``line``, ``column`` and ``detail`` when the text is malformed."""
+        return cls._read_text(LIB.bs_surface_read_bpt, text)
 
     @classmethod
     def load(cls, path: A.PathArg) -> "Surface":
         """Read a .bpt file. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``,
         e.g. a FileNotFoundError) when it cannot be read and ParseError (with line, column and
         filename) when it is malformed."""
-        name = A.path(path)
-        err = CParseError()
-        out = ctypes.c_void_p()
-        ctypes.set_errno(0)
-        try:
-            LIB.bs_surface_read_bpt_file(name, ctypes.byref(err), ctypes.byref(out))
-        except BezsurfError as exc:
-            raise _located(exc, err, os.fsdecode(name)) from None
-        return cls._wrap(out.value)
+        return cls._read_file(LIB.bs_surface_read_bpt_file, path)
 
     def to_bpt(self) -> str:
         """The surface as .bpt text; numbers read back bit for bit (3-D patches only)."""
-        size = ctypes.c_size_t()
-        LIB.bs_surface_write_bpt(self._ptr, None, 0, ctypes.byref(size))
-        buf = ctypes.create_string_buffer(size.value)
-        LIB.bs_surface_write_bpt(self._ptr, buf, size.value, ctypes.byref(size))
-        return buf.value.decode("ascii")
+        return self._write_text(LIB.bs_surface_write_bpt)
 
     def save(self, path: A.PathArg) -> None:
         """Write the surface as a .bpt file (created or truncated). Raises BezsurfIOError (an
         OSError with ``errno`` and ``filename``) when the file cannot be written."""
-        name = A.path(path)
-        ctypes.set_errno(0)
-        try:
-            LIB.bs_surface_write_bpt_file(self._ptr, name)
-        except BezsurfIOError as exc:
-            raise _with_file(exc, os.fsdecode(name)) from None
+        self._write_file(LIB.bs_surface_write_bpt_file, path)
+
+    @classmethod
+    def read_obj(cls, text: Union[str, bytes]) -> "Surface":
+        """Parse the free-form surfaces of Wavefront OBJ text (Bezier and B-spline, rational or
+        not; a B-spline over its ``surf`` range) into Bezier patches (docs/formats.md). Raises ParseError with ``line`` and
+        ``column`` when the text is malformed, UnsupportedError (its ``detail`` naming the line)
+        for bmatrix, cardinal and taylor surfaces."""
+        return cls._read_text(LIB.bs_surface_read_obj, text)
+
+    @classmethod
+    def load_obj(cls, path: A.PathArg) -> "Surface":
+        """Read an OBJ file's free-form surfaces (as :meth:`read_obj`). Raises BezsurfIOError
+        when it cannot be read."""
+        return cls._read_file(LIB.bs_surface_read_obj_file, path)
+
+    def to_obj(self) -> str:
+        """The surface as OBJ free-form text, one ``cstype [rat] bezier`` surface per patch;
+        reads back bit for bit (3-D patches only)."""
+        return self._write_text(LIB.bs_surface_write_obj)
+
+    def save_obj(self, path: A.PathArg) -> None:
+        """Write the surface as an OBJ file (created or truncated). Raises BezsurfIOError when
+        the file cannot be written."""
+        self._write_file(LIB.bs_surface_write_obj_file, path)
+
+    @classmethod
+    def read_iges(cls, text: Union[str, bytes]) -> "Surface":
+        """Parse IGES 5.3 text: every rational B-spline surface (entity 128), with its
+        transformations (entity 124), restricted to its parameter range, as Bezier patches
+        (docs/formats.md). Raises ParseError with ``line`` (the record's line) and ``column``."""
+        return cls._read_text(LIB.bs_surface_read_iges, text)
+
+    @classmethod
+    def load_iges(cls, path: A.PathArg) -> "Surface":
+        """Read an IGES file (as :meth:`read_iges`). Raises BezsurfIOError when it cannot be
+        read."""
+        return cls._read_file(LIB.bs_surface_read_iges_file, path)
 
     def add(self, patch: Patch) -> int:
         """Append a copy of ``patch``; returns its index (patch id). Raises IncompatibleError if

@@ -1,4 +1,4 @@
-//! The .bpt text format and the built-in tea set.
+//! The .bpt text format, OBJ free-form and IGES surfaces, and the built-in tea set.
 
 use std::ffi::{CStr, CString};
 use std::os::raw::c_char;
@@ -46,6 +46,7 @@ fn read_with(
     if code < 0 {
         return Err(match code {
             sys::BS_ERR_PARSE | sys::BS_ERR_IO => Error::with_parse_error(code, &err),
+            sys::BS_ERR_UNSUPPORTED if err.line > 0 => Error::with_parse_error(code, &err),
             _ => Error::from_code(code),
         });
     }
@@ -53,7 +54,51 @@ fn read_with(
     Ok(unsafe { Surface::from_raw(out) })
 }
 
+type TextReader = unsafe extern "C" fn(
+    *const c_char,
+    usize,
+    *mut sys::bs_parse_error,
+    *mut *mut sys::bs_surface,
+) -> sys::bs_status;
+type FileReader = unsafe extern "C" fn(
+    *const c_char,
+    *mut sys::bs_parse_error,
+    *mut *mut sys::bs_surface,
+) -> sys::bs_status;
+type TextWriter =
+    unsafe extern "C" fn(*const sys::bs_surface, *mut c_char, usize, *mut usize) -> sys::bs_status;
+type FileWriter = unsafe extern "C" fn(*const sys::bs_surface, *const c_char) -> sys::bs_status;
+
+fn read_text(reader: TextReader, text: &[u8]) -> Result<Surface> {
+    // SAFETY: text holds len bytes; err and out are valid.
+    read_with(|err, out| unsafe { reader(text.as_ptr() as *const c_char, text.len(), err, out) })
+}
+
+fn read_file(reader: FileReader, path: &Path) -> Result<Surface> {
+    let path = c_path(path)?;
+    // SAFETY: path is NUL-terminated; err and out are valid.
+    read_with(|err, out| unsafe { reader(path.as_ptr(), err, out) })
+}
+
 impl Surface {
+    fn write_text(&self, writer: TextWriter) -> Result<String> {
+        let mut size = 0usize;
+        // SAFETY: a NULL buffer asks for the size only.
+        check(unsafe { writer(self.as_ptr(), ptr::null_mut(), 0, &mut size) })?;
+        let mut buf = vec![0u8; size];
+        // SAFETY: buf holds size bytes.
+        check(unsafe { writer(self.as_ptr(), buf.as_mut_ptr() as *mut c_char, size, &mut size) })?;
+        buf.truncate(size.saturating_sub(1)); // the final NUL
+                                              // The writers produce ASCII only.
+        Ok(String::from_utf8_lossy(&buf).into_owned())
+    }
+
+    fn write_file(&self, writer: FileWriter, path: &Path) -> Result<()> {
+        let path = c_path(path)?;
+        // SAFETY: self is live; path is NUL-terminated.
+        check(unsafe { writer(self.as_ptr(), path.as_ptr()) })
+    }
+
     /// Parses .bpt text (`bs_surface_read_bpt`) into a surface of 3-D patches. `Parse` errors
     /// carry the line, column and reason.
     ///
@@ -71,41 +116,70 @@ impl Surface {
     /// # Ok::<(), bezsurf::Error>(())
     /// ```
     pub fn read_bpt(text: impl AsRef<[u8]>) -> Result<Surface> {
-        let text = text.as_ref();
-        // SAFETY: text holds len bytes; err and out are valid.
-        read_with(|err, out| unsafe {
-            sys::bs_surface_read_bpt(text.as_ptr() as *const c_char, text.len(), err, out)
-        })
+        read_text(sys::bs_surface_read_bpt, text.as_ref())
     }
 
     /// Reads a .bpt file (`bs_surface_read_bpt_file`); `Io` if it cannot be read.
     pub fn read_bpt_file(path: impl AsRef<Path>) -> Result<Surface> {
-        let path = c_path(path.as_ref())?;
-        // SAFETY: path is NUL-terminated; err and out are valid.
-        read_with(|err, out| unsafe { sys::bs_surface_read_bpt_file(path.as_ptr(), err, out) })
+        read_file(sys::bs_surface_read_bpt_file, path.as_ref())
     }
 
     /// The surface as .bpt text (`bs_surface_write_bpt`); reading it back gives every control
     /// point and weight bit for bit. `Dimension` if the patches are not 3-D.
     pub fn write_bpt(&self) -> Result<String> {
-        let mut size = 0usize;
-        // SAFETY: a NULL buffer asks for the size only.
-        check(unsafe { sys::bs_surface_write_bpt(self.as_ptr(), ptr::null_mut(), 0, &mut size) })?;
-        let mut buf = vec![0u8; size];
-        // SAFETY: buf holds size bytes.
-        check(unsafe {
-            sys::bs_surface_write_bpt(self.as_ptr(), buf.as_mut_ptr() as *mut c_char, size, &mut size)
-        })?;
-        buf.truncate(size.saturating_sub(1)); // the final NUL
-                                              // The writer produces ASCII only.
-        Ok(String::from_utf8_lossy(&buf).into_owned())
+        self.write_text(sys::bs_surface_write_bpt)
     }
 
     /// Writes the surface as a .bpt file (`bs_surface_write_bpt_file`); `Io` on failure.
     pub fn write_bpt_file(&self, path: impl AsRef<Path>) -> Result<()> {
-        let path = c_path(path.as_ref())?;
-        // SAFETY: self is live; path is NUL-terminated.
-        check(unsafe { sys::bs_surface_write_bpt_file(self.as_ptr(), path.as_ptr()) })
+        self.write_file(sys::bs_surface_write_bpt_file, path.as_ref())
+    }
+
+    /// Parses the free-form surfaces of OBJ text (`bs_surface_read_obj`, docs/formats.md):
+    /// Bezier and B-spline surfaces, rational or not, as Bezier patches. `Parse` errors carry the
+    /// line, column and reason; bmatrix, cardinal and taylor surfaces are `Unsupported`, with the
+    /// position too.
+    ///
+    /// ```
+    /// use bezsurf::Surface;
+    ///
+    /// let cup = Surface::builtin("teacup")?;
+    /// let back = Surface::read_obj(cup.write_obj()?)?;
+    /// assert_eq!(back, cup); // bit for bit
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn read_obj(text: impl AsRef<[u8]>) -> Result<Surface> {
+        read_text(sys::bs_surface_read_obj, text.as_ref())
+    }
+
+    /// Reads an OBJ file's free-form surfaces (`bs_surface_read_obj_file`); `Io` if it cannot be
+    /// read.
+    pub fn read_obj_file(path: impl AsRef<Path>) -> Result<Surface> {
+        read_file(sys::bs_surface_read_obj_file, path.as_ref())
+    }
+
+    /// The surface as OBJ free-form text (`bs_surface_write_obj`), one `cstype [rat] bezier`
+    /// surface per patch; reading it back gives every control point and weight bit for bit.
+    /// `Dimension` if the patches are not 3-D.
+    pub fn write_obj(&self) -> Result<String> {
+        self.write_text(sys::bs_surface_write_obj)
+    }
+
+    /// Writes the surface as an OBJ file (`bs_surface_write_obj_file`); `Io` on failure.
+    pub fn write_obj_file(&self, path: impl AsRef<Path>) -> Result<()> {
+        self.write_file(sys::bs_surface_write_obj_file, path.as_ref())
+    }
+
+    /// Parses IGES text (`bs_surface_read_iges`, docs/formats.md): every rational B-spline
+    /// surface (entity 128), with its transformations (entity 124), restricted to its parameter
+    /// range, as Bezier patches. `Parse` errors carry the record's line and the column.
+    pub fn read_iges(text: impl AsRef<[u8]>) -> Result<Surface> {
+        read_text(sys::bs_surface_read_iges, text.as_ref())
+    }
+
+    /// Reads an IGES file (`bs_surface_read_iges_file`); `Io` if it cannot be read.
+    pub fn read_iges_file(path: impl AsRef<Path>) -> Result<Surface> {
+        read_file(sys::bs_surface_read_iges_file, path.as_ref())
     }
 
     /// One of the built-in surfaces (`bs_surface_create_builtin`): "teapot", "teacup" or

@@ -507,6 +507,41 @@ extern "C" {
     ) -> bs_status;
     /// Writes the surface as a .bpt file.
     pub fn bs_surface_write_bpt_file(s: *const bs_surface, path: *const c_char) -> bs_status;
+    /// Parses `len` bytes of OBJ text (its free-form surfaces) into a new surface; `err` as for `bs_surface_read_bpt`, also on `BS_ERR_UNSUPPORTED`.
+    pub fn bs_surface_read_obj(
+        text: *const c_char,
+        len: usize,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_surface,
+    ) -> bs_status;
+    /// Reads an OBJ file's free-form surfaces into a new surface.
+    pub fn bs_surface_read_obj_file(
+        path: *const c_char,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_surface,
+    ) -> bs_status;
+    /// Writes the surface as NUL-terminated OBJ free-form text into `buf` of `cap` bytes (NULL asks for the size, NUL included).
+    pub fn bs_surface_write_obj(
+        s: *const bs_surface,
+        buf: *mut c_char,
+        cap: usize,
+        size: *mut usize,
+    ) -> bs_status;
+    /// Writes the surface as an OBJ file.
+    pub fn bs_surface_write_obj_file(s: *const bs_surface, path: *const c_char) -> bs_status;
+    /// Parses `len` bytes of IGES text (its entities 128) into a new surface; `err` as for `bs_surface_read_bpt`.
+    pub fn bs_surface_read_iges(
+        text: *const c_char,
+        len: usize,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_surface,
+    ) -> bs_status;
+    /// Reads an IGES file's entities 128 into a new surface.
+    pub fn bs_surface_read_iges_file(
+        path: *const c_char,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_surface,
+    ) -> bs_status;
     /// Creates the built-in surface `name` ("teapot", "teacup", "teaspoon").
     pub fn bs_surface_create_builtin(name: *const c_char, out: *mut *mut bs_surface) -> bs_status;
     /// Name of built-in surface `i`, or NULL past the last.
