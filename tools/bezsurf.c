@@ -1,4 +1,4 @@
-/* bezsurf: inspect and evaluate Bezier surfaces (.bpt files or the built-in tea set).
+/* bezsurf: inspect and evaluate Bezier surfaces (.bpt, OBJ or IGES files, or the built-in tea set).
  * Usage: bezsurf COMMAND [OPTIONS] [FILE]; see docs/cli.md. */
 #include "cmds.h"
 
@@ -12,12 +12,14 @@ static const cli_command commands[] = {
     {"continuity", "C0 gap, G1 angle and C1 test across each shared edge", cmd_continuity},
     {"tessellate", "triangle mesh of the surface to an OBJ, PLY or STL file", cmd_tessellate},
     {"render",     "shaded picture of the surface to a PNG file", cmd_render},
+    {"convert",    "the surface to another file format (.bpt, OBJ)", cmd_convert},
 };
 
 static void usage(FILE *f)
 {
     fprintf(f, "usage: bezsurf COMMAND [OPTIONS] [FILE]\n"
-               "Inspect Bezier surfaces read from a .bpt FILE ('-' for standard input);\n"
+               "Inspect Bezier surfaces read from a FILE ('-' for standard input): .bpt, OBJ\n"
+               "free-form (.obj) or IGES (.igs, .iges), by its extension or --from bpt|obj|iges;\n"
                "without FILE the built-in teapot is used (--builtin NAME picks another).\n\n"
                "commands:\n");
     for (size_t k = 0; k < sizeof commands / sizeof commands[0]; k++)

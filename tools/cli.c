@@ -56,6 +56,14 @@ int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, in
         fputs(usage, stdout);
         return cli_finish(cmd);
     }
+    if (strcmp(a, "--from") == 0) {
+        if (*i + 1 >= argc)
+            return cli_usage_error(cmd, "--from needs a format (bpt, obj, iges)", NULL);
+        if (cli_format_named(argv[*i + 1]) == NULL)
+            return cli_usage_error(cmd, "unknown input format (bpt, obj, iges)", argv[*i + 1]);
+        in->format = argv[++*i];
+        return CLI_NEXT;
+    }
     if (a[0] == '-' && a[1] != '\0')
         return CLI_NOT_COMMON;
     if (in->given)
@@ -88,7 +96,7 @@ const char *cli_input_name(const cli_input *in)
     return strcmp(in->path, "-") == 0 ? "<stdin>" : in->path;
 }
 
-static int read_stdin(const char *cmd, bs_surface **out)
+static int read_stdin(const char *cmd, const cli_format *fmt, bs_surface **out)
 {
     size_t len = 0, cap = 0;
     char *buf = NULL;
@@ -119,9 +127,9 @@ static int read_stdin(const char *cmd, bs_surface **out)
         return cli_fail(cmd, CLI_INPUT, "<stdin>: cannot read: %s", strerror(errno));
     }
     bs_parse_error err;
-    bs_status st = bs_surface_read_bpt(buf, len, &err, out);
+    bs_status st = fmt->read(buf, len, &err, out);
     free(buf);
-    if (st == BS_ERR_PARSE)
+    if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED)
         return cli_fail(cmd, CLI_INPUT, "<stdin>:%zu:%zu: %s", err.line, err.column, err.message);
     if (st != BS_OK)
         return cli_fail(cmd, CLI_INTERNAL, "<stdin>: %s", bs_status_string(st));
@@ -138,12 +146,18 @@ int cli_load(const char *cmd, const cli_input *in, bs_surface **out)
             return cli_fail(cmd, CLI_INPUT, "no built-in surface named '%s' (teapot, teacup, teaspoon)", name);
         return st == BS_OK ? CLI_OK : cli_fail(cmd, CLI_INTERNAL, "%s", bs_status_string(st));
     }
+    /* --from, else the file's extension, else .bpt (the format of standard input too) */
+    const cli_format *fmt = in->format ? cli_format_named(in->format) : NULL;
+    if (fmt == NULL && strcmp(in->path, "-") != 0)
+        fmt = cli_format_of_path(in->path);
+    if (fmt == NULL)
+        fmt = cli_format_named("bpt");
     if (strcmp(in->path, "-") == 0)
-        return read_stdin(cmd, out);
+        return read_stdin(cmd, fmt, out);
     bs_parse_error err;
     errno = 0;
-    bs_status st = bs_surface_read_bpt_file(in->path, &err, out);
-    if (st == BS_ERR_PARSE)
+    bs_status st = fmt->read_file(in->path, &err, out);
+    if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED)
         return cli_fail(cmd, CLI_INPUT, "%s:%zu:%zu: %s", in->path, err.line, err.column, err.message);
     if (st == BS_ERR_IO) /* the library's reason, and the system's where a system call failed */
         return cli_fail(cmd, CLI_INPUT, "%s: %s%s%s", in->path, err.message, errno ? ": " : "",

@@ -259,7 +259,7 @@ static int select_patches(const render_opts *o, const bs_surface *s, bs_surface 
 
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot", 0}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
+    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
                      (size_t)-1};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)

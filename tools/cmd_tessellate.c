@@ -47,7 +47,7 @@ static int format_of_path(const char *path)
 
 int cmd_tessellate(int argc, char **argv)
 {
-    cli_input in = {NULL, "teapot", 0};
+    cli_input in = {NULL, "teapot", 0, NULL};
     const char *output = NULL;
     int format = -1, mode = 0 /* 0 relative, 1 absolute, 2 uniform */, flags = 0;
     double tol = 1e-3;

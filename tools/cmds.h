@@ -26,14 +26,30 @@ int cmd_eval(int argc, char **argv);
 int cmd_continuity(int argc, char **argv);
 int cmd_tessellate(int argc, char **argv);
 int cmd_render(int argc, char **argv);
+int cmd_convert(int argc, char **argv);
+
+/* ---- surface file formats (tools/formats.c) ---- */
+typedef struct cli_format {
+    const char *name; /* bpt, obj, iges */
+    const char *exts; /* the file extensions that select it, space-separated */
+    bs_status (*read)(const char *text, size_t len, bs_parse_error *err, bs_surface **out);
+    bs_status (*read_file)(const char *path, bs_parse_error *err, bs_surface **out);
+    bs_status (*write_file)(const bs_surface *s, const char *path); /* NULL: read only */
+} cli_format;
+/* The format of this name (igs is iges); NULL if none. */
+const cli_format *cli_format_named(const char *name);
+/* The format a file's extension selects (case ignored); NULL if none. */
+const cli_format *cli_format_of_path(const char *path);
 
 /* ---- helpers (tools/cli.c) ---- */
 
-/* Where the surface comes from: a .bpt file, "-" for standard input, or a built-in name. */
+/* Where the surface comes from: a file (.bpt, OBJ or IGES), "-" for standard input, or a built-in
+ * name. */
 typedef struct cli_input {
     const char *path;    /* NULL: built-in */
     const char *builtin; /* used when path is NULL; "teapot" by default */
     int given;           /* a FILE or --builtin was given (a second one is a usage error) */
+    const char *format;  /* --from FORMAT; NULL: the file's extension (.bpt when none matches) */
 } cli_input;
 
 /* 1 if arg is -h or --help. */
@@ -45,8 +61,8 @@ int cli_usage_error(const char *cmd, const char *msg, const char *arg);
 /* What cli_common_arg returns when the subcommand is to go on parsing (exit codes are >= 0). */
 #define CLI_NEXT       (-1) /* argv[*i] (and its value) taken: go on with argv[*i + 1] */
 #define CLI_NOT_COMMON (-2) /* argv[*i] is an option of the subcommand's own */
-/* The arguments every subcommand takes: --builtin NAME (-b NAME), -h/--help (prints usage to
- * stdout) and the input FILE (an argument not starting with '-', or "-"; at most one). Returns
+/* The arguments every subcommand takes: --builtin NAME (-b NAME), --from FORMAT, -h/--help
+ * (prints usage to stdout) and the input FILE (an argument not starting with '-', or "-"; at most one). Returns
  * CLI_NEXT, CLI_NOT_COMMON, or else the exit code the subcommand must return at once. */
 int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in);
 /* Default output name: the input file's name without directory and extension, or the built-in's

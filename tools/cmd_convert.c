@@ -1,0 +1,77 @@
+/* bezsurf convert: a surface from one file format to another. */
+#include "cmds.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static const char usage[] =
+    "usage: bezsurf convert [--from FORMAT] [--to FORMAT] IN OUT\n"
+    "       bezsurf convert --builtin NAME [--to FORMAT] OUT\n"
+    "Read the surface in IN ('-': standard input) and write it to OUT. Formats: bpt and obj\n"
+    "(read and written), iges (read only); each is taken from the file's extension (.bpt,\n"
+    ".obj, .igs or .iges) unless --from or --to names it. OUT is replaced only once it is\n"
+    "written completely.\n"
+    "  -b, --builtin NAME    teapot, teacup or teaspoon instead of IN\n"
+    "      --from FORMAT     the input's format: bpt, obj or iges\n"
+    "      --to FORMAT       the output's format: bpt or obj\n"
+    "  -h, --help            this text\n";
+
+int cmd_convert(int argc, char **argv)
+{
+    const char *cmd = argv[0], *pos[2] = {NULL, NULL}, *to = NULL;
+    size_t npos = 0;
+    cli_input in = {NULL, "teapot", 0, NULL};
+    for (int i = 1; i < argc; i++) {
+        if (cli_is_help(argv[i])) {
+            fputs(usage, stdout);
+            return cli_finish(cmd);
+        }
+        if (strcmp(argv[i], "--to") == 0) {
+            if (i + 1 >= argc)
+                return cli_usage_error(cmd, "--to needs a format", NULL);
+            to = argv[++i];
+        } else if (strcmp(argv[i], "--from") == 0 || strcmp(argv[i], "--builtin") == 0 ||
+                   strcmp(argv[i], "-b") == 0) {
+            int r = cli_common_arg(cmd, usage, argc, argv, &i, &in);
+            if (r != CLI_NEXT)
+                return r;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            return cli_usage_error(cmd, "unknown option", argv[i]);
+        } else if (npos == 2) {
+            return cli_usage_error(cmd, "more than IN and OUT", argv[i]);
+        } else {
+            pos[npos++] = argv[i];
+        }
+    }
+    size_t need = in.given ? 1 : 2; /* a built-in takes IN's place */
+    if (npos != need)
+        return cli_usage_error(cmd, need == 2 ? "needs IN and OUT" : "needs OUT (and no IN with --builtin)",
+                               NULL);
+    if (need == 2) {
+        in.path = pos[0];
+        in.given = 1;
+    }
+    const char *out = pos[need - 1];
+    const cli_format *fmt = to ? cli_format_named(to) : cli_format_of_path(out);
+    if (fmt == NULL)
+        return to ? cli_usage_error(cmd, "unknown format (bpt, obj)", to)
+                  : cli_usage_error(cmd, "no format for this extension: use --to (bpt, obj)", out);
+    if (fmt->write_file == NULL)
+        return cli_usage_error(cmd, "this format is read, not written", fmt->name);
+    int rc = cli_check_output(cmd, out);
+    if (rc != CLI_OK)
+        return rc;
+    bs_surface *s;
+    if ((rc = cli_load(cmd, &in, &s)) != CLI_OK)
+        return rc;
+    bs_status st = fmt->write_file(s, out);
+    size_t np = bs_surface_count(s);
+    bs_surface_destroy(s);
+    if (st == BS_ERR_IO)
+        return cli_fail_write(cmd, out);
+    if (st != BS_OK)
+        return cli_fail(cmd, st == BS_ERR_NO_MEMORY ? CLI_INTERNAL : CLI_INPUT, "%s: %s", out,
+                        bs_status_string(st));
+    printf("%s: %zu patches (%s)\n", out, np, fmt->name);
+    return cli_finish(cmd);
+}
