@@ -49,6 +49,9 @@ for f in nurbs_cylinder bicubic_knots transformed subrange trimmed_face; do
     expect 0 "info $f.igs" -- "$tool" info "$iges/$f.igs"
     expect 0 "convert $f.igs" -- "$tool" convert "$iges/$f.igs" "$work/$f.bpt"
 done
+# a closed NURBS (the vase): its seam and knot lines shared, only the two rims open
+expect 0 "info vase.igs" -- "$tool" info "$iges/vase.igs"
+check "grep -q 'patches: 15' '$work/out' && grep -q 'shared edges: 27' '$work/out' && grep -q 'open edges: 6' '$work/out'" "the vase's patches and edges"
 expect 0 "eval on IGES" -- "$tool" eval --point 0 0 0 "$iges/nurbs_cylinder.igs"
 check "grep -q '^0 0 0 2 0 0' '$work/out'" "the cylinder's corner is (2, 0, 0)"
 expect 0 "tessellate IGES" -- "$tool" tessellate -u 4 -o "$work/cyl.stl" "$iges/nurbs_cylinder.igs"
