@@ -74,7 +74,7 @@ static char *make_iges(const char *global, const ent *e, size_t n)
         put_lines(&t, d, 72, "", 'D', &seq_d);
     }
     for (size_t k = 0; k < n; k++) {
-        char tail[16];
+        char tail[24];
         snprintf(tail, sizeof tail, " %7zu", 2 * k + 1);
         put_lines(&t, e[k].params, 64, tail, 'P', &seq_p);
     }

@@ -93,12 +93,24 @@ static inline double falling(size_t m, unsigned k)
     return r;
 }
 
-/* The documented accuracy bound (docs/accuracy.md) for d^(k+l)S/du^k dv^l. */
+/* k! m^k: the factor of rational patches, whose derivatives do not vanish past the degree. */
+static inline double rational_factor(size_t m, unsigned k)
+{
+    double r = 1.0;
+    for (unsigned i = 1; i <= k; i++)
+        r *= (double)i * (double)m;
+    return r;
+}
+
+/* The documented accuracy bound (docs/accuracy.md) for d^(k+l)S/du^k dv^l, before its floor:
+ * m!/(m-k)! n!/(n-l)! for polynomial patches, k! m^k l! n^l for rational ones (from 1.1). */
 static inline double accuracy_bound(const tnet *t, unsigned k, unsigned l)
 {
     size_t np = (t->m + 1) * (t->n + 1);
+    double fk = t->w ? rational_factor(t->m, k) : falling(t->m, k);
+    double fl = t->w ? rational_factor(t->n, l) : falling(t->n, l);
     double b = 2.0 * (double)(t->m + t->n + 1) * EPS * max_abs(t->ctrl, np * t->dim) *
-               ldexp(1.0, (int)(k + l)) * fmax(falling(t->m, k), 1.0) * fmax(falling(t->n, l), 1.0);
+               ldexp(1.0, (int)(k + l)) * fmax(fk, 1.0) * fmax(fl, 1.0);
     if (t->w != NULL) {
         double lo = INFINITY, hi = 0.0;
         for (size_t i = 0; i < np; i++) {
