@@ -3,28 +3,7 @@
 # usage: test_cli.sh TOOL DATA_DIR WORK_DIR
 tool=$1 data=$2 work=$3
 mkdir -p "$work" || exit 1
-fails=0 checks=0
-
-# expect CODE DESCRIPTION -- command...: run, keep stdout/stderr in $out/$err, compare the exit code.
-expect() {
-    code=$1 what=$2
-    shift 3
-    "$@" >"$work/out" 2>"$work/err"
-    got=$?
-    checks=$((checks + 1))
-    if [ "$got" -ne "$code" ]; then
-        fails=$((fails + 1))
-        echo "FAIL: $what: exit $got, expected $code"; cat "$work/err"
-    fi
-}
-# has FILE PATTERN DESCRIPTION: grep for a fixed string.
-has() {
-    checks=$((checks + 1))
-    if ! grep -qF -- "$2" "$work/$1"; then
-        fails=$((fails + 1))
-        echo "FAIL: $3: '$2' not in $1:"; cat "$work/$1"
-    fi
-}
+. "$(dirname "$0")/assert.sh"
 
 expect 1 "no command" -- "$tool"
 has err "usage: bezsurf" "usage on stderr"

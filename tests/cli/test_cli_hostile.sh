@@ -6,28 +6,9 @@
 # usage: test_cli_hostile.sh TOOL PNG_CHECK HOSTILE_DIR WORK_DIR
 tool=$1 pngcheck=$2 hostile=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" || exit 1
-fails=0 checks=0
+. "$(dirname "$0")/assert.sh"
 limit=60
 
-expect() {
-    code=$1 what=$2
-    shift 3
-    timeout $limit "$@" >"$work/out" 2>"$work/err"
-    got=$?
-    checks=$((checks + 1))
-    if [ "$got" -ne "$code" ]; then
-        fails=$((fails + 1))
-        echo "FAIL: $what: exit $got, expected $code"; cat "$work/err"
-    fi
-}
-check() {
-    checks=$((checks + 1))
-    if ! eval "$1"; then
-        fails=$((fails + 1))
-        echo "FAIL: $2"
-        cat "$work/err"
-    fi
-}
 # no temporary file left in the work directory
 no_tmp() { check "[ -z \"\$(ls -A '$work' | grep '^\.bezsurf-')\" ]" "$1: temporary file left behind"; }
 

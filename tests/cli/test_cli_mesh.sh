@@ -4,26 +4,7 @@
 # usage: test_cli_mesh.sh TOOL PNG_CHECK DATA_DIR WORK_DIR
 tool=$1 pngcheck=$2 data=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" || exit 1
-fails=0 checks=0
-
-expect() {
-    code=$1 what=$2
-    shift 3
-    "$@" >"$work/out" 2>"$work/err"
-    got=$?
-    checks=$((checks + 1))
-    if [ "$got" -ne "$code" ]; then
-        fails=$((fails + 1))
-        echo "FAIL: $what: exit $got, expected $code"; cat "$work/err"
-    fi
-}
-check() {
-    checks=$((checks + 1))
-    if ! eval "$1"; then
-        fails=$((fails + 1))
-        echo "FAIL: $2"
-    fi
-}
+. "$(dirname "$0")/assert.sh"
 
 for cmd in tessellate render; do
     expect 0 "$cmd --help" -- "$tool" $cmd --help
