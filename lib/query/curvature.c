@@ -8,22 +8,13 @@
 #include <math.h>
 #include <stdlib.h>
 
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void cross3(const double *a, const double *b, double *out)
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
 void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
 {
     const double *su = q->d[0], *sv = q->d[1], *nrm = q->nrm;
-    double e = dot3(su, su), f = dot3(su, sv), cr[3];
-    cross3(su, sv, cr);
-    double w = dot3(cr, cr), rw = sqrt(w), ru = sqrt(e);
-    double l = dot3(q->d[2], nrm), m = dot3(q->d[3], nrm), nn = dot3(q->d[4], nrm);
+    double e = bsi_dot3(su, su), f = bsi_dot3(su, sv), cr[3];
+    bsi_cross3(su, sv, cr);
+    double w = bsi_dot3(cr, cr), rw = sqrt(w), ru = sqrt(e);
+    double l = bsi_dot3(q->d[2], nrm), m = bsi_dot3(q->d[3], nrm), nn = bsi_dot3(q->d[4], nrm);
     /* The shape operator in the frame e1 = S_u/|S_u|, e2 = N x e1 (a symmetric matrix [a b; b c]):
      * no cancellation between the principal curvatures, unlike H +- sqrt(H^2 - K). */
     double a = l / e, b = (m * e - f * l) / (e * rw), c = (f * f * l / e - 2.0 * f * m + e * nn) / w;
@@ -33,7 +24,7 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
     out->k[2] = mean - s;
     out->k[3] = mean + s;
     double e1[3] = {su[0] / ru, su[1] / ru, su[2] / ru}, e2[3];
-    cross3(nrm, e1, e2);
+    bsi_cross3(nrm, e1, e2);
     double scale = fabs(out->k[2]) + fabs(out->k[3]) + inv_d;
     if (2.0 * s <= 1e-10 * scale) { /* umbilic or planar: (dmin, dmax, N) = (e1, e2, N) */
         for (int i = 0; i < 3; i++) {

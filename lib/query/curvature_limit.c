@@ -28,12 +28,10 @@ static double extrapolate(const double *f, double *err)
     return best;
 }
 
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 /* Unit a, or 0 if a is (numerically) zero against the scale len. */
 static int unit3(const double *a, double len, double *out)
 {
-    double n = sqrt(dot3(a, a));
+    double n = sqrt(bsi_dot3(a, a));
     if (!(n > 1e-12 * len))
         return 0;
     for (int i = 0; i < 3; i++)
@@ -44,15 +42,12 @@ static int unit3(const double *a, double len, double *out)
 /* dmin from a tangent estimate t (projected onto the plane of nrm), dmax = nrm x dmin. */
 static int frame(const double *t, const double *nrm, bsi_curv *out)
 {
-    double p[3], tn = dot3(t, nrm);
+    double p[3], tn = bsi_dot3(t, nrm);
     for (int i = 0; i < 3; i++)
         p[i] = t[i] - tn * nrm[i];
     if (!unit3(p, 1.0, out->dmin))
         return 0;
-    const double *a = nrm, *b = out->dmin;
-    out->dmax[0] = a[1] * b[2] - a[2] * b[1];
-    out->dmax[1] = a[2] * b[0] - a[0] * b[2];
-    out->dmax[2] = a[0] * b[1] - a[1] * b[0];
+    bsi_cross3(nrm, out->dmin, out->dmax);
     return 1;
 }
 
@@ -77,7 +72,7 @@ unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double
             return BS_CURV_UNDEFINED;
         bsi_curv_regular(&q[j], inv_d, &c[j]);
         /* principal directions are lines: keep each sample's sign next to the first's */
-        double smin = dot3(c[j].dmin, c[0].dmin) < 0.0 ? -1.0 : 1.0;
+        double smin = bsi_dot3(c[j].dmin, c[0].dmin) < 0.0 ? -1.0 : 1.0;
         for (int i = 0; i < 3; i++)
             c[j].dmin[i] *= smin;
     }

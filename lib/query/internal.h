@@ -7,6 +7,18 @@
 
 #include "surface/internal.h"
 
+static inline double bsi_dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void bsi_cross3(const double *a, const double *b, double *out)
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
 /* Curvature at one point: K, H, k_min, k_max, and the principal directions. */
 typedef struct bsi_curv {
     double k[4]; /* K, H, k_min, k_max */
