@@ -2,7 +2,6 @@
 #include "io/internal.h"
 
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 /* Appends to buf while there is room and counts every byte, so one routine both measures and writes. */
@@ -29,15 +28,6 @@ static void put_double(sink *o, double x)
 {
     char tmp[32];
     put(o, tmp, bsi_format_double(x, tmp));
-}
-
-static bs_status check_surface(const bs_surface *s)
-{
-    if (s == NULL)
-        return BS_ERR_INVALID_ARG;
-    if (bs_surface_count(s) > 0 && bs_surface_dim(s) != 3)
-        return BS_ERR_DIMENSION;
-    return BS_OK;
 }
 
 /* The text without a final NUL; o->len is its length even when it did not fit. */
@@ -71,7 +61,7 @@ bs_status bs_surface_write_bpt(const bs_surface *s, char *buf, size_t cap, size_
 {
     if (size == NULL)
         return BS_ERR_INVALID_ARG;
-    bs_status st = check_surface(s);
+    bs_status st = bsi_check_surface3(s);
     if (st != BS_OK)
         return st;
     sink measure = {NULL, 0, 0};
@@ -90,23 +80,5 @@ bs_status bs_surface_write_bpt(const bs_surface *s, char *buf, size_t cap, size_
 
 bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path)
 {
-    if (path == NULL)
-        return BS_ERR_INVALID_ARG;
-    bs_status st = check_surface(s);
-    if (st != BS_OK)
-        return st;
-    sink o = {NULL, 0, 0};
-    emit(s, &o);
-    o.cap = o.len;
-    o.len = 0;
-    o.buf = malloc(o.cap ? o.cap : 1);
-    if (o.buf == NULL)
-        return BS_ERR_NO_MEMORY;
-    emit(s, &o);
-    bsi_out_file out;
-    st = bsi_out_open(path, &out);
-    if (st == BS_OK)
-        st = bsi_out_close(&out, fwrite(o.buf, 1, o.len, out.f) == o.len);
-    free(o.buf);
-    return st;
+    return bsi_write_surface_file(s, path, bs_surface_write_bpt); /* atomic, as every writer */
 }
