@@ -144,9 +144,9 @@ static bs_status span_patch(const bs_bspline *b, const double *rows, size_t ncoo
     return bs_patch_create(pu, pv, dim, ctrl, b->weights ? weights : NULL, out);
 }
 
-/* Every patch of b, in order, into patches[0 .. nu * nv). */
+/* Every patch of b, in order, into patches[0 .. nu * nv); su and sv: the spans' first knots. */
 static bs_status make_patches(const bs_bspline *b, const bsi_knots *ku, const bsi_knots *kv,
-                              bs_patch **patches)
+                              const size_t *su, const size_t *sv, bs_patch **patches)
 {
     size_t ncoord = b->dim + (b->weights != NULL), pu = b->deg_u, pv = b->deg_v;
     size_t nnet = (pu + 1) * (pv + 1);
@@ -155,12 +155,7 @@ static bs_status make_patches(const bs_bspline *b, const bsi_knots *ku, const bs
     double *net = malloc(nnet * ncoord * sizeof(double));
     double *ctrl = malloc(nnet * b->dim * sizeof(double));
     double *weights = malloc(nnet * sizeof(double));
-    size_t *su = malloc(ku->nspan * sizeof(size_t)), *sv = malloc(kv->nspan * sizeof(size_t));
-    bs_status st = h && rows && net && ctrl && weights && su && sv ? BS_OK : BS_ERR_NO_MEMORY;
-    if (st == BS_OK) {
-        bsi_knots_spans(ku, su);
-        bsi_knots_spans(kv, sv);
-    }
+    bs_status st = h && rows && net && ctrl && weights ? BS_OK : BS_ERR_NO_MEMORY;
     size_t made = 0;
     for (size_t a = 0; st == BS_OK && a < ku->nspan; a++) {
         /* the Bezier rows of u-span a, column by column of the net */
@@ -180,8 +175,6 @@ static bs_status make_patches(const bs_bspline *b, const bsi_knots *ku, const bs
     free(net);
     free(ctrl);
     free(weights);
-    free(su);
-    free(sv);
     return st;
 }
 
@@ -202,32 +195,28 @@ bs_status bs_surface_add_bspline(bs_surface *s, const bs_bspline *b, double *spa
     if ((spans != NULL && spans_cap / 4 < np) || np > UINT32_MAX - bs_surface_count(s))
         return BS_ERR_SIZE;
     bs_patch **patches = malloc(np * sizeof(*patches)); // NOLINT(bugprone-sizeof-expression): an array of pointers
-    if (patches == NULL)
-        return BS_ERR_NO_MEMORY;
-    st = make_patches(b, &ku, &kv, patches);
-    if (st == BS_OK && (st = bsi_surface_adopt(s, patches, np)) != BS_OK)
-        for (size_t k = 0; k < np; k++)
-            bs_patch_destroy(patches[k]);
-    free(patches);
-    if (st != BS_OK)
-        return st;
-    if (spans != NULL) {
-        size_t k = 0;
-        for (size_t i = ku.deg; i < ku.count; i++) {
-            if (!(ku.t[i] < ku.t[i + 1]))
-                continue;
-            for (size_t j = kv.deg; j < kv.count; j++) {
-                if (!(kv.t[j] < kv.t[j + 1]))
-                    continue;
-                spans[4 * k] = ku.t[i];
-                spans[4 * k + 1] = ku.t[i + 1];
-                spans[4 * k + 2] = kv.t[j];
-                spans[4 * k + 3] = kv.t[j + 1];
-                k++;
-            }
-        }
+    size_t *su = malloc(ku.nspan * sizeof(size_t)), *sv = malloc(kv.nspan * sizeof(size_t));
+    st = patches && su && sv ? BS_OK : BS_ERR_NO_MEMORY;
+    if (st == BS_OK) {
+        bsi_knots_spans(&ku, su);
+        bsi_knots_spans(&kv, sv);
+        st = make_patches(b, &ku, &kv, su, sv, patches);
+        if (st == BS_OK && (st = bsi_surface_adopt(s, patches, np)) != BS_OK)
+            for (size_t k = 0; k < np; k++)
+                bs_patch_destroy(patches[k]);
     }
-    if (count != NULL)
+    for (size_t a = 0; st == BS_OK && spans != NULL && a < ku.nspan; a++)
+        for (size_t bv = 0; bv < kv.nspan; bv++) {
+            double *sp = spans + 4 * (a * kv.nspan + bv);
+            sp[0] = ku.t[su[a]];
+            sp[1] = ku.t[su[a] + 1];
+            sp[2] = kv.t[sv[bv]];
+            sp[3] = kv.t[sv[bv] + 1];
+        }
+    if (st == BS_OK && count != NULL)
         *count = np;
-    return BS_OK;
+    free(patches);
+    free(su);
+    free(sv);
+    return st;
 }
