@@ -79,6 +79,71 @@ BS_API bs_status bs_surface_tessellate_uniform(const bs_surface *s, size_t nu, s
 BS_API bs_status bs_surface_tessellate_adaptive(const bs_surface *s, double tolerance, int flags,
                                                 bs_mesh **out);
 
+/** Tessellation method (bs_tess_options.method): nu x nv segments per patch, as
+ *  bs_surface_tessellate_uniform(). @since 1.1 */
+#define BS_TESS_UNIFORM 0
+/** Tessellation method: one segment count per patch and direction from a bound on its second
+ *  derivatives, as bs_surface_tessellate_adaptive(). @since 1.1 */
+#define BS_TESS_PER_PATCH 1
+/** Tessellation method: recursive subdivision of each patch into a quadtree of sub-patches, split
+ *  where a flatness bound exceeds the tolerance (docs/tessellation.md). @since 1.1 */
+#define BS_TESS_SUBDIVIDE 2
+
+/**
+ * Options of bs_surface_tessellate() and bs_surface_tessellate_count(). Its first field is its
+ * own size, so fields can be appended in later minor versions: always fill it with
+ * bs_tess_options_init() and then change the fields you need. @since 1.1
+ */
+typedef struct bs_tess_options {
+    size_t size;          /**< sizeof(bs_tess_options), set by bs_tess_options_init() */
+    int method;           /**< BS_TESS_UNIFORM (default), BS_TESS_PER_PATCH or BS_TESS_SUBDIVIDE */
+    int flags;            /**< 0 or a combination of BS_TESS_RELATIVE and BS_TESS_STRIPS */
+    size_t nu;            /**< BS_TESS_UNIFORM: segments along u per patch, 1..BS_TESS_MAX_RATE (default 16) */
+    size_t nv;            /**< BS_TESS_UNIFORM: segments along v per patch (default 16) */
+    double tolerance;     /**< the other methods: as in bs_surface_tessellate_adaptive() (default
+                               1e-3 with BS_TESS_RELATIVE unset) */
+    size_t max_vertices;  /**< budget: more vertices is BS_ERR_SIZE before any large allocation;
+                               0 = only the 32-bit index limit (default) */
+    size_t max_triangles; /**< budget on triangles, as max_vertices */
+} bs_tess_options;
+
+/**
+ * @brief Fill an options struct with the defaults (uniform 16 x 16, tolerance 1e-3, no budget).
+ * @param[out] o  the options; NULL is a no-op.
+ * @since 1.1
+ */
+BS_API void bs_tess_options_init(bs_tess_options *o);
+
+/**
+ * @brief Tessellate a 3-D surface as the options say, refusing before any large allocation when
+ * the mesh would exceed a budget or the 32-bit index space.
+ * @param[in]  s    the surface (dim 3).
+ * @param[in]  o    the options, filled by bs_tess_options_init().
+ * @param[out] out  receives the mesh (NULL on failure); release with bs_mesh_destroy().
+ * @return BS_OK; BS_ERR_INVALID_ARG if s, o or out is NULL, o->size is smaller than the 1.1
+ *         struct, or the method or flags are unknown; BS_ERR_DIMENSION as the 1.0 tessellators;
+ *         BS_ERR_DOMAIN for a rate or tolerance out of range; BS_ERR_SIZE when the mesh would have
+ *         more vertices or triangles than a budget allows or than 32-bit indices can address;
+ *         BS_ERR_NO_MEMORY.
+ * @since 1.1
+ */
+BS_API bs_status bs_surface_tessellate(const bs_surface *s, const bs_tess_options *o, bs_mesh **out);
+
+/**
+ * @brief The vertex and triangle counts bs_surface_tessellate() would produce with the same
+ * arguments, computed without building the mesh (memory O(number of patches), plus the quadtree for
+ * BS_TESS_SUBDIVIDE). Budgets are not applied, so a caller can see how far over they are.
+ * @param[in]  s          the surface (dim 3).
+ * @param[in]  o          the options.
+ * @param[out] vertices   NULL or receives the vertex count.
+ * @param[out] triangles  NULL or receives the triangle count.
+ * @return as bs_surface_tessellate(), except that budgets give no error; BS_ERR_SIZE only when a
+ *         count does not fit in size_t.
+ * @since 1.1
+ */
+BS_API bs_status bs_surface_tessellate_count(const bs_surface *s, const bs_tess_options *o,
+                                             size_t *vertices, size_t *triangles);
+
 /**
  * @brief Release a mesh.
  * @param[in] m  the mesh; NULL is a no-op.

@@ -1,12 +1,16 @@
 /**
  * @file
- * libbezsurf geometric queries (from 1.1): curvature of a patch. Closest points and ray
- * intersection will join this header. Include <bezsurf.h> rather than this file.
+ * libbezsurf geometric queries (from 1.1): curvature of a patch, certified closest points on a
+ * patch, and a locator (bounding-volume hierarchy) for closest points and ray intersection on a
+ * whole surface. Include <bezsurf.h> rather than this file.
  */
 #ifndef BEZSURF_QUERY_H
 #define BEZSURF_QUERY_H
 
 #include "core.h"
+#include "surface.h"
+
+#include <stdint.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -57,6 +61,108 @@ BS_API bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_c
                                          const bs_cview *v, const bs_view *curv,
                                          const bs_view *dmin, const bs_view *dmax,
                                          unsigned char *kind);
+
+/**
+ * @brief The globally closest point of a patch to each of n query points.
+ *
+ * Any dimension. The answer is global over the whole domain [0,1]^2, boundary included: the
+ * distance returned is at most the exact minimum of |S(u,v) - q| plus tau = 1e-9 (D + d), D the
+ * diagonal of the bounding box of the control points and d the exact minimum. Where several points
+ * are equally close, any of them. `pos` is bit for bit what bs_patch_eval() gives at `uv`, and
+ * `dist` is |pos - q| rounded. A query point with a NaN or infinite coordinate gives NaN in every
+ * output of that point. Algorithm and cost: docs/queries.md.
+ *
+ * Views, NULL and n = 0 follow the rules of bs_patch_eval(); nothing is written when a check fails.
+ * @param[in]  p     the patch.
+ * @param[in]  n     number of query points.
+ * @param[in]  q     dim views of n query coordinates.
+ * @param[out] uv    NULL or 2 views receiving the parameters of the closest points.
+ * @param[out] dist  NULL or 1 view receiving the distances.
+ * @param[out] pos   NULL or dim views receiving the closest points.
+ * @return BS_OK; BS_ERR_INVALID_ARG if p is NULL, q is NULL with n > 0, or a view's data is NULL or
+ *         misaligned; BS_ERR_SIZE if a view holds fewer than n elements; BS_ERR_NO_MEMORY.
+ * @since 1.1
+ */
+BS_API bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
+                                        const bs_view *uv, const bs_view *dist, const bs_view *pos);
+
+/**
+ * Opaque, immutable acceleration structure over a surface for closest points and rays. It keeps
+ * its own copy of what it needs, so the surface may be changed or destroyed afterwards, and any
+ * number of threads may query one locator at once. @since 1.1
+ */
+typedef struct bs_locator bs_locator;
+
+/**
+ * @brief Build a locator (a bounding-volume hierarchy over the patches and their sub-patches) for a
+ * surface. Memory: docs/queries.md gives the bytes per patch.
+ * @param[in]  s    the surface (any dimension; rays need dimension 3). An empty surface gives a
+ *                  locator on which every query misses (distance +Inf, patch UINT32_MAX).
+ * @param[out] out  receives the locator (NULL on failure); release with bs_locator_destroy().
+ * @return BS_OK; BS_ERR_INVALID_ARG if s or out is NULL; BS_ERR_NO_MEMORY.
+ * @since 1.1
+ */
+BS_API bs_status bs_locator_create(const bs_surface *s, bs_locator **out);
+
+/**
+ * @brief Release a locator.
+ * @param[in] L  the locator; NULL is a no-op.
+ * @since 1.1
+ */
+BS_API void bs_locator_destroy(bs_locator *L);
+
+/**
+ * @brief Dimension of the locator's surface.
+ * @param[in] L  the locator, or NULL.
+ * @return the dimension; 0 for NULL or an empty surface.
+ * @since 1.1
+ */
+BS_API size_t bs_locator_dim(const bs_locator *L);
+
+/**
+ * @brief The globally closest point of the whole surface to each of n query points, with the
+ * guarantee of bs_patch_closest_point() (D now the diagonal of the surface's control points).
+ * @param[in]  L      the locator.
+ * @param[in]  n      number of query points.
+ * @param[in]  q      dim views of n query coordinates.
+ * @param[out] patch  NULL or n patch ids of the answers (UINT32_MAX where there is none: a NaN
+ *                    query or an empty surface).
+ * @param[out] uv     NULL or 2 views receiving the parameters.
+ * @param[out] dist   NULL or 1 view receiving the distances.
+ * @param[out] pos    NULL or dim views receiving the closest points.
+ * @return as bs_patch_closest_point(), with L in place of p.
+ * @since 1.1
+ */
+BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview *q,
+                                          uint32_t *patch, const bs_view *uv, const bs_view *dist,
+                                          const bs_view *pos);
+
+/**
+ * @brief The first hit of each of n rays o + t d with the surface, t in [t_min, t_max].
+ *
+ * A reported hit point S(u,v) lies within tau = 1e-9 D of the ray and t within tau/|d| of the
+ * exact first hit. No ray whose exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or
+ * answered with a later hit, including rays through shared edges, corners and poles. Tangent and
+ * grazing hits may be reported or not. On a miss: patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN
+ * or Inf in o, d or the range, or d = 0, is a miss with t = NaN. Normals follow the rule of
+ * bs_patch_eval_normal() (limit normals at poles).
+ * @param[in]  L       the locator (dimension 3).
+ * @param[in]  n       number of rays.
+ * @param[in]  org     3 views: ray origins.
+ * @param[in]  dir     3 views: directions, any non-zero length.
+ * @param[in]  trange  NULL for (0, +Inf), or 2 views: t_min, t_max.
+ * @param[out] patch   NULL or n patch ids; UINT32_MAX where the ray misses.
+ * @param[out] uv      NULL or 2 views.
+ * @param[out] t       NULL or 1 view: the ray parameter of the hit.
+ * @param[out] nrm     NULL or 3 views: the unit normal at the hit.
+ * @return BS_OK; BS_ERR_INVALID_ARG if L is NULL, org or dir is NULL with n > 0, or a view's data
+ *         is NULL or misaligned; BS_ERR_DIMENSION if the surface is not 3-D (and not empty);
+ *         BS_ERR_SIZE if a view holds fewer than n elements; BS_ERR_NO_MEMORY.
+ * @since 1.1
+ */
+BS_API bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *org,
+                                      const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
+                                      const bs_view *uv, const bs_view *t, const bs_view *nrm);
 
 #ifdef __cplusplus
 }

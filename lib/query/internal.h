@@ -45,4 +45,13 @@ void bsi_curv_partials(const bs_patch *p, size_t n, const double *u, const doubl
 unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double nrm[3],
                              double inv_d, double *scratch, bsi_curv *out);
 
+/* Closest point of one patch to a finite point q (p->dim coordinates), certified global to
+ * tau = 1e-9 (D + d) (D from the patch, or the caller's larger D: pass it in d_scale, 0 = the
+ * patch's own). *best_d2 is the squared distance to beat (INFINITY when there is none yet): when
+ * the patch has a point closer than that, uv and *best_d2 receive the answer and 1 is returned;
+ * otherwise 0 and both are left alone, so a caller can run it over several patches and keep the
+ * best. Returns -1 when out of memory. Thread-safe; uses no global state. (lib/query/closest.c) */
+int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, double *best_d2,
+                          double uv[2]);
+
 #endif
