@@ -79,6 +79,17 @@ static inline size_t uf_find(size_t *parent, size_t x)
     return r;
 }
 
+/* Merge the sets of a and b; the root stays the lowest element. */
+static inline void uf_union(size_t *parent, size_t a, size_t b)
+{
+    a = uf_find(parent, a);
+    b = uf_find(parent, b);
+    if (a < b)
+        parent[b] = a;
+    else if (b < a)
+        parent[a] = b;
+}
+
 /* Slot of sample k (0..e) of side s of patch p. */
 static inline size_t side_slot(const patch_plan *pl, int s, size_t k)
 {
@@ -120,12 +131,25 @@ static inline void grid_params(double *dst, size_t n)
 
 /* Rates (ru, rv) of patch p meeting tolerance tol by the second-difference bound (tess_plan.c). */
 void bsi_tess_adaptive_rates(const bs_patch *p, double tol, size_t *ru, size_t *rv);
+/* Largest control-point coordinate of the surface: sides are shared within 1e-9 of it. */
+double bsi_tess_max_abs_coord(const bs_surface *s);
 /* Plan the sampling from the rates in t->plan: side counts, slots, merges, vertex ids. */
 bs_status bsi_tess_plan(tess *t);
 /* Parameters, positions, normals and patch ids of every vertex (tess_sample.c). */
 bs_status bsi_tess_evaluate(tess *t);
 /* Replace normals the surface does not define (or that are not unit) by the adjacent triangles'. */
 void bsi_tess_repair_normals(tess *t);
+/* A triangle corner: vertex id and its (u,v) on the triangle's patch. */
+typedef struct bsi_corner { uint32_t id; double u, v; } bsi_corner;
+/* Append triangle a b c into reserved room, oriented counter-clockwise in (u,v) when asked, as a
+ * strip of its own; dropped when a pole makes it degenerate (a repeated vertex). */
+void bsi_tess_emit(tess *t, uint32_t patch, bsi_corner a, bsi_corner b, bsi_corner c, int orient);
+/* Positions, normals and kinds of vertices first .. first + n - 1 of patch p from their (u,v) in
+ * t->uv, with their patch id; counts the normals to repair (tess_sample.c). */
+bs_status bsi_tess_eval_list(tess *t, uint32_t p, size_t first, size_t n);
+/* Hand the arrays of a finished tessellation (status st) to a new mesh, or free them on failure
+ * (tessellate.c). */
+bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out);
 /* Reserve the output arrays, then emit every patch's triangles (tess_emit.c). */
 bs_status bsi_tess_triangulate(tess *t);
 /* Shrink the corner list to the corners actually listed. */

@@ -38,8 +38,7 @@ static uint32_t grid_vertex(const tess *t, const patch_plan *pl, size_t i, size_
     return (uint32_t)(pl->inner0 + (i - 1) * (pl->gv - 1) + (j - 1));
 }
 
-/* A triangle corner: vertex id and its (u,v) on the triangle's patch. */
-typedef struct corner { uint32_t id; double u, v; } corner;
+typedef bsi_corner corner;
 
 static corner grid_corner(const tess *t, const patch_plan *pl, size_t i, size_t j)
 {
@@ -88,8 +87,7 @@ static int emit_plain(tess *t, uint32_t patch, corner a, corner b, corner c)
     return 1;
 }
 
-/* emit_plain, oriented counter-clockwise in (u,v) when asked, as a strip of its own. */
-static void emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orient)
+void bsi_tess_emit(tess *t, uint32_t patch, corner a, corner b, corner c, int orient)
 {
     if (orient) {
         double area = (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
@@ -214,11 +212,11 @@ static void emit_ring_side(tess *t, uint32_t patch, const patch_plan *pl, int s)
             outer = mo <= mi;
         }
         if (outer) {
-            emit(t, patch, o0, side_corner(t, pl, s, i + 1), in0, 1);
+            bsi_tess_emit(t, patch, o0, side_corner(t, pl, s, i + 1), in0, 1);
             i++;
         } else {
             corner in1 = along_u ? grid_corner(t, pl, gi + 1, gj) : grid_corner(t, pl, gi, gj + 1);
-            emit(t, patch, o0, in0, in1, 1);
+            bsi_tess_emit(t, patch, o0, in0, in1, 1);
             j++;
         }
     }

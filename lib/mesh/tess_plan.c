@@ -7,16 +7,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-static void uf_union(size_t *parent, size_t a, size_t b)
-{
-    a = uf_find(parent, a);
-    b = uf_find(parent, b);
-    if (a < b)
-        parent[b] = a;
-    else if (b < a)
-        parent[a] = b;
-}
-
 /* Second-difference bounds of the net: |S_uu| <= muu, |S_uv| <= muv, |S_vv| <= mvv everywhere. */
 static void curvature_bounds(const bs_patch *p, double *muu, double *muv, double *mvv)
 {
@@ -69,7 +59,7 @@ static size_t rate_for(double mdir, double mmix, double tol)
     return r >= (double)BS_TESS_MAX_RATE ? BS_TESS_MAX_RATE : (size_t)r;
 }
 
-static double max_abs_coord(const bs_surface *s)
+double bsi_tess_max_abs_coord(const bs_surface *s)
 {
     double mx = 0.0;
     for (size_t i = 0; i < bs_surface_count(s); i++) {
@@ -92,7 +82,7 @@ void bsi_tess_adaptive_rates(const bs_patch *p, double tol, size_t *ru, size_t *
 bs_status bsi_tess_plan(tess *t)
 {
     size_t np = t->np;
-    bs_status st = bsi_topology_build(t->s, 1e-9 * max_abs_coord(t->s), &t->topo);
+    bs_status st = bsi_topology_build(t->s, 1e-9 * bsi_tess_max_abs_coord(t->s), &t->topo);
     if (st != BS_OK)
         return st;
     size_t nslot = 0;

@@ -58,6 +58,27 @@ static void triple_views(double *x, size_t first, size_t n, bs_view out[3])
     }
 }
 
+bs_status bsi_tess_eval_list(tess *t, uint32_t p, size_t first, size_t n)
+{
+    for (size_t id = first; id < first + n; id++)
+        t->vpatch[id] = p;
+    if (n == 0)
+        return BS_OK;
+    ptrdiff_t s2 = (ptrdiff_t)(2 * sizeof(double));
+    bs_view pos[3], nrm[3];
+    bs_cview cu = {t->uv + 2 * first, n, s2}, cv = {t->uv + 2 * first + 1, n, s2};
+    triple_views(t->pos, first, n, pos);
+    triple_views(t->nrm, first, n, nrm);
+    bs_status st = bs_patch_eval_normal(bs_surface_get(t->s, p), n, &cu, &cv, pos, nrm, t->kind + first);
+    if (st != BS_OK)
+        return st;
+    for (size_t id = first; id < first + n; id++) {
+        const double *nr = t->nrm + 3 * id;
+        t->nbad += (size_t)normal_bad(t->kind[id], nr[0], nr[1], nr[2]);
+    }
+    return BS_OK;
+}
+
 /* Parameters of every vertex, then positions and normals patch by patch: the patch's own side
  * samples (vertices vert0..inner0-1) as a list, its interior grid in one grid call. */
 bs_status bsi_tess_evaluate(tess *t)
@@ -88,23 +109,10 @@ bs_status bsi_tess_evaluate(tess *t)
                 uint32_t id = t->slot_vert[slot];
                 side_param(pl, s, k, &t->uv[2 * (size_t)id], &t->uv[2 * (size_t)id + 1]);
             }
-        for (size_t id = pl->vert0; id < pl->inner0; id++)
-            t->vpatch[id] = (uint32_t)p;
-        size_t n = pl->inner0 - pl->vert0;
-        ptrdiff_t s2 = (ptrdiff_t)(2 * sizeof(double));
+        bs_status st = bsi_tess_eval_list(t, (uint32_t)p, pl->vert0, pl->inner0 - pl->vert0);
+        if (st != BS_OK)
+            return st;
         bs_view pos[3], nrm[3];
-        if (n > 0) {
-            bs_cview cu = {t->uv + 2 * pl->vert0, n, s2}, cv = {t->uv + 2 * pl->vert0 + 1, n, s2};
-            triple_views(t->pos, pl->vert0, n, pos);
-            triple_views(t->nrm, pl->vert0, n, nrm);
-            bs_status st = bs_patch_eval_normal(patch, n, &cu, &cv, pos, nrm, t->kind + pl->vert0);
-            if (st != BS_OK)
-                return st;
-            for (size_t id = pl->vert0; id < pl->inner0; id++) {
-                const double *nr = t->nrm + 3 * id;
-                t->nbad += (size_t)normal_bad(t->kind[id], nr[0], nr[1], nr[2]);
-            }
-        }
         size_t ni = pl->gu - 1, nj = pl->gv - 1;
         if (ni == 0 || nj == 0)
             continue;
@@ -122,7 +130,7 @@ bs_status bsi_tess_evaluate(tess *t)
                 pos[c].count = nrm[c].count = npt;
                 pos[c].stride = nrm[c].stride = (ptrdiff_t)sizeof(double);
             }
-            bs_status st = bs_patch_eval_grid(patch, nr, &gu, nj, &gv, pos, NULL, NULL, nrm, t->kind + first);
+            st = bs_patch_eval_grid(patch, nr, &gu, nj, &gv, pos, NULL, NULL, nrm, t->kind + first);
             if (st != BS_OK)
                 return st;
             store_block(t, (uint32_t)p, first, i0, nr, nj);

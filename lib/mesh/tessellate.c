@@ -71,6 +71,11 @@ static bs_status run(tess *t, bs_mesh **out)
         st = bsi_tess_triangulate(t);
     if (st == BS_OK)
         st = bsi_tess_trim_corners(t);
+    return bsi_tess_finish(t, st, out);
+}
+
+bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out)
+{
     bs_mesh *m = NULL;
     if (st == BS_OK && t->strips)
         UPUT(t->sstart, (uint32_t)t->sidx.n);
