@@ -25,6 +25,8 @@ static const char usage[] =
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
     "                        the four sub-nets are drawn)\n"
     "      --ss N            supersampling per axis, 1..4 (default 3)\n"
+    "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
+    "                        (default 2000000, about 0.2 GB of memory; 0: no limit)\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
@@ -32,7 +34,7 @@ static const char usage[] =
 typedef struct render_opts {
     cli_input in;
     const char *output;
-    size_t w, h, ss;
+    size_t w, h, ss, budget;
     double azimuth, elevation, rel, color[3];
     int up_y, up_given, nets, split;
     size_t patch; /* (size_t)-1: all */
@@ -101,6 +103,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
         } else if (strcmp(a, "--patch") == 0) {
             if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
                 return cli_usage_error("render", "bad patch id", val);
+        } else if (strcmp(a, "--max-triangles") == 0) {
+            if (cli_parse_budget("render", val, &o->budget) != CLI_OK)
+                return CLI_USAGE;
         } else if (strcmp(a, "--ss") == 0) {
             if (!cli_parse_size(val, &o->ss) || o->ss < 1 || o->ss > 4)
                 return cli_usage_error("render", "bad supersampling", val);
@@ -161,16 +166,20 @@ static void draw_nets(raster *r, const bs_surface *s)
 
 static int render(const render_opts *o, const bs_surface *s)
 {
+    bs_tess_options to;
+    bs_tess_options_init(&to);
+    to.method = BS_TESS_PER_PATCH;
+    to.flags = BS_TESS_RELATIVE;
+    to.tolerance = o->rel;
     bs_mesh *m = NULL;
-    bs_status st = bs_surface_tessellate_adaptive(s, o->rel, BS_TESS_RELATIVE, &m);
-    if (st != BS_OK) {
-        return cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
-    }
+    int rc = cli_tessellate("render", s, &to, o->budget, &m);
+    if (rc != CLI_OK)
+        return rc;
     size_t nv = bs_mesh_vertex_count(m), nt = bs_mesh_triangle_count(m);
     double *pos = malloc(3 * nv * sizeof(double) + 1), *nrm = malloc(3 * nv * sizeof(double) + 1);
     uint32_t *tri = malloc(3 * nt * sizeof(uint32_t) + 1);
     unsigned char *rgb = malloc(o->w * o->h * 3);
-    int rc = CLI_INTERNAL;
+    rc = CLI_INTERNAL;
     raster r;
     memset(&r, 0, sizeof r);
     ptrdiff_t s3 = 3 * sizeof(double);
@@ -259,7 +268,7 @@ static int select_patches(const render_opts *o, const bs_surface *s, bs_surface 
 
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
+    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
                      (size_t)-1};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)

@@ -18,6 +18,8 @@ static const char usage[] =
     "                        (default when no rate is given: -r 0.001)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
     "  -s, --strips          also build triangle strips (reported, not written)\n"
+    "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
+    "                        (default 10000000, about 0.5 GB of memory; 0: no limit)\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
@@ -51,7 +53,7 @@ int cmd_tessellate(int argc, char **argv)
     const char *output = NULL;
     int format = -1, mode = 0 /* 0 relative, 1 absolute, 2 uniform */, flags = 0;
     double tol = 1e-3;
-    size_t nu = 0, nv = 0;
+    size_t nu = 0, nv = 0, budget = CLI_TESSELLATE_MAX_TRIANGLES;
     for (int i = 1; i < argc; i++) {
         int r = cli_common_arg("tessellate", usage, argc, argv, &i, &in);
         if (r == CLI_NEXT)
@@ -71,6 +73,9 @@ int cmd_tessellate(int argc, char **argv)
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--format") == 0) {
             if (!format_of(val, &format))
                 return cli_usage_error("tessellate", "unknown format", val);
+        } else if (strcmp(a, "--max-triangles") == 0) {
+            if (cli_parse_budget("tessellate", val, &budget) != CLI_OK)
+                return CLI_USAGE;
         } else if (strcmp(a, "-u") == 0 || strcmp(a, "--uniform") == 0) {
             char buf[64];
             if (!cli_value("tessellate", a, val, buf, sizeof buf))
@@ -114,16 +119,19 @@ int cmd_tessellate(int argc, char **argv)
     rc = cli_load("tessellate", &in, &s);
     if (rc != CLI_OK)
         return rc;
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    o.method = mode == 2 ? BS_TESS_UNIFORM : BS_TESS_PER_PATCH;
+    o.flags = flags | (mode == 0 ? BS_TESS_RELATIVE : 0);
+    o.nu = nu;
+    o.nv = nv;
+    o.tolerance = tol;
     bs_mesh *m = NULL;
-    bs_status st = mode == 2 ? bs_surface_tessellate_uniform(s, nu, nv, flags, &m)
-                             : bs_surface_tessellate_adaptive(s, tol, flags | (mode == 0 ? BS_TESS_RELATIVE : 0), &m);
+    rc = cli_tessellate("tessellate", s, &o, budget, &m);
     bs_surface_destroy(s);
-    if (st != BS_OK) {
-        /* A surface that is not 3-D, or a rate out of range, is bad input; the rest is the library. */
-        return cli_fail("tessellate", st == BS_ERR_DIMENSION || st == BS_ERR_DOMAIN ? CLI_INPUT : CLI_INTERNAL, "%s",
-                        bs_status_string(st));
-    }
-    st = bs_mesh_write(m, format, output);
+    if (rc != CLI_OK)
+        return rc;
+    bs_status st = bs_mesh_write(m, format, output);
     if (st != BS_OK) {
         int e = errno;
         bs_mesh_destroy(m);

@@ -2,10 +2,13 @@
  * The tessellator's shared state and phases, private to lib/mesh/ (the overview is at the top of
  * lib/mesh/tessellate.c). A tessellation runs the phases in order on one `tess`:
  *   1. rates   (tessellate.c, tess_plan.c)  segments per direction of each patch
- *   2. plan    (tess_plan.c)    sides sampled into slots, shared slots merged, vertex ids
- *   3. sample  (tess_sample.c)  parameters, positions and normals of every vertex
- *   4. emit    (tess_emit.c)    triangles, strips and the corners that keep their own (u,v)
- *   5. finish  (tess_sample.c, tess_emit.c)  normals repaired, corner list trimmed
+ *   2. layout  (tess_plan.c)    topology, segments per side, grids; then the counts
+ *      (tess_count.c), checked against the limits before anything large is allocated
+ *   3. plan    (tess_plan.c)    sides sampled into slots, shared slots merged, vertex ids
+ *   4. sample  (tess_sample.c)  parameters, positions and normals of every vertex
+ *   5. emit    (tess_emit.c)    triangles, strips and the corners that keep their own (u,v)
+ *   6. finish  (tess_sample.c, tess_emit.c)  normals repaired, corner list trimmed
+ * The entry points with options and budgets are in tess_options.c.
  * Not installed.
  */
 #ifndef BEZSURF_MESH_TESS_H
@@ -90,15 +93,20 @@ static inline void uf_union(size_t *parent, size_t a, size_t b)
         parent[a] = b;
 }
 
+/* Corner (0:c00 1:c10 2:c11 3:c01) at the start (end 0) or the end (end 1) of side s. */
+static inline size_t side_end_corner(int s, int end)
+{
+    static const unsigned char corner[2][4] = {{0, 1, 3, 0}, {1, 2, 2, 3}};
+    return corner[end][s];
+}
+
 /* Slot of sample k (0..e) of side s of patch p. */
 static inline size_t side_slot(const patch_plan *pl, int s, size_t k)
 {
-    static const int from[4] = {0, 1, 3, 0}; /* start corner of each side (0:c00 1:c10 2:c11 3:c01) */
-    static const int to[4] = {1, 2, 2, 3};
     if (k == 0)
-        return pl->slot0 + (size_t)from[s];
+        return pl->slot0 + side_end_corner(s, 0);
     if (k == pl->e[s])
-        return pl->slot0 + (size_t)to[s];
+        return pl->slot0 + side_end_corner(s, 1);
     return pl->slot0 + pl->side_off[s] + k - 1;
 }
 
@@ -133,7 +141,15 @@ static inline void grid_params(double *dst, size_t n)
 void bsi_tess_adaptive_rates(const bs_patch *p, double tol, size_t *ru, size_t *rv);
 /* Largest control-point coordinate of the surface: sides are shared within 1e-9 of it. */
 double bsi_tess_max_abs_coord(const bs_surface *s);
-/* Plan the sampling from the rates in t->plan: side counts, slots, merges, vertex ids. */
+/* Topology, side counts and grids of every patch from the rates in t->plan; memory O(patches). */
+bs_status bsi_tess_layout(tess *t);
+
+/* What the laid-out tessellation will emit, computed in memory O(patches) (tess_count.c). */
+typedef struct tess_counts { size_t vertices, triangles, strips, strip_indices; } tess_counts;
+/* BS_ERR_SIZE only when a count does not fit in size_t. */
+bs_status bsi_tess_count(const tess *t, tess_counts *c);
+
+/* Slots, merges and vertex ids of the laid-out tessellation. */
 bs_status bsi_tess_plan(tess *t);
 /* Parameters, positions, normals and patch ids of every vertex (tess_sample.c). */
 bs_status bsi_tess_evaluate(tess *t);
@@ -154,5 +170,23 @@ bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out);
 bs_status bsi_tess_triangulate(tess *t);
 /* Shrink the corner list to the corners actually listed. */
 bs_status bsi_tess_trim_corners(tess *t);
+
+/* ---- The runs (tessellate.c) ---- */
+
+/* BS_ERR_INVALID_ARG for a NULL surface or unknown flags, BS_ERR_DIMENSION for a surface not 3-D. */
+bs_status bsi_tess_check(const bs_surface *s, int flags);
+/* Start t with nu x nv segments on every patch (BS_ERR_DOMAIN for a rate out of range). */
+bs_status bsi_tess_start_uniform(tess *t, const bs_surface *s, int flags, size_t nu, size_t nv);
+/* Start t with each patch's rates for a tolerance (BS_ERR_DOMAIN unless finite and > 0). */
+bs_status bsi_tess_start_adaptive(tess *t, const bs_surface *s, int flags, double tolerance);
+/* The tolerance as a distance: with BS_TESS_RELATIVE a fraction of the control points' box diagonal. */
+double bsi_tess_absolute_tolerance(const bs_surface *s, double tolerance, int flags);
+/* Lay out and count a started t. */
+bs_status bsi_tess_measure(tess *t, tess_counts *c);
+/* Lay out and count a started t, refuse counts over the budgets (0: none) or the 32-bit indices
+ * with BS_ERR_SIZE, then build the mesh. Frees t in every case. */
+bs_status bsi_tess_build(tess *t, size_t max_vertices, size_t max_triangles, bs_mesh **out);
+/* Release what a started t holds. */
+void bsi_tess_free(tess *t);
 
 #endif

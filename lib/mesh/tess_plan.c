@@ -78,8 +78,8 @@ void bsi_tess_adaptive_rates(const bs_patch *p, double tol, size_t *ru, size_t *
     *rv = rate_for(mvv, muv, tol);
 }
 
-/* Plan the sampling: side counts, slots, union-find merges, vertex ids. */
-bs_status bsi_tess_plan(tess *t)
+/* Topology, side counts (the larger rate of a shared side), grids and slot numbering. */
+bs_status bsi_tess_layout(tess *t)
 {
     size_t np = t->np;
     bs_status st = bsi_topology_build(t->s, 1e-9 * bsi_tess_max_abs_coord(t->s), &t->topo);
@@ -111,6 +111,13 @@ bs_status bsi_tess_plan(tess *t)
         nslot += off;
     }
     t->nslot = nslot;
+    return BS_OK;
+}
+
+/* Slots, union-find merges, vertex ids. */
+bs_status bsi_tess_plan(tess *t)
+{
+    size_t np = t->np, nslot = t->nslot;
     /* at least one element: malloc(0) may return NULL, which is not a failure */
     t->parent = malloc((nslot ? nslot : 1) * sizeof(size_t));
     t->slot_vert = malloc((nslot ? nslot : 1) * sizeof(uint32_t));

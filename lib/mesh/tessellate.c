@@ -19,6 +19,10 @@
  * patch's table of vertex ids. A corner's (u,v) is stored only where it is not its vertex's (the
  * neighbour's side of a shared edge, poles), which halves the mesh.
  *
+ * Bounds: the exact counts of the mesh are computed from the layout (memory O(patches)) and checked
+ * against the 32-bit indices and the caller's budgets before the slots or any output array exist,
+ * so an oversized request costs milliseconds, not gigabytes.
+ *
  * The phases and their files are listed in lib/mesh/tess.h.
  */
 #include "mesh/tess.h"
@@ -27,7 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void tess_free(tess *t)
+void bsi_tess_free(tess *t)
 {
     bsi_topology_free(&t->topo);
     free(t->plan);
@@ -50,18 +54,31 @@ static void tess_free(tess *t)
     free(t->soa);
 }
 
-static bs_status check_surface(const bs_surface *s, int flags, bs_mesh **out)
+bs_status bsi_tess_check(const bs_surface *s, int flags)
 {
-    if (out != NULL)
-        *out = NULL;
-    if (s == NULL || out == NULL || (flags & ~(BS_TESS_RELATIVE | BS_TESS_STRIPS)) != 0)
+    if (s == NULL || (flags & ~(BS_TESS_RELATIVE | BS_TESS_STRIPS)) != 0)
         return BS_ERR_INVALID_ARG;
     if (bs_surface_count(s) > 0 && bs_surface_dim(s) != 3)
         return BS_ERR_DIMENSION;
     return BS_OK;
 }
 
-/* Run the tessellation with rates already in t->plan, and hand the arrays to a new mesh. */
+/* Over the budgets, or past what 32-bit vertex ids and index offsets can address. */
+static int over_limits(const tess_counts *c, size_t max_vertices, size_t max_triangles)
+{
+    if (c->vertices > UINT32_MAX - 1 || c->triangles > UINT32_MAX / 3 || c->strip_indices > UINT32_MAX)
+        return 1;
+    return (max_vertices != 0 && c->vertices > max_vertices) ||
+           (max_triangles != 0 && c->triangles > max_triangles);
+}
+
+bs_status bsi_tess_measure(tess *t, tess_counts *c)
+{
+    bs_status st = bsi_tess_layout(t);
+    return st == BS_OK ? bsi_tess_count(t, c) : st;
+}
+
+/* Run the tessellation with the layout done, and hand the arrays to a new mesh. */
 static bs_status run(tess *t, bs_mesh **out)
 {
     bs_status st = bsi_tess_plan(t);
@@ -82,7 +99,7 @@ bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out)
     if (st == BS_OK && (m = calloc(1, sizeof(*m))) == NULL)
         st = BS_ERR_NO_MEMORY;
     if (st != BS_OK) {
-        tess_free(t);
+        bsi_tess_free(t);
         /* m is still NULL here: calloc is the last step that can fail */
         // cppcheck-suppress memleak
         return st;
@@ -112,9 +129,22 @@ bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out)
     t->tri.v = t->tpatch.v = t->sidx.v = t->sstart.v = NULL;
     t->xc.corner = NULL;
     t->xc.uv = NULL;
-    tess_free(t);
+    bsi_tess_free(t);
     *out = m;
     return BS_OK;
+}
+
+bs_status bsi_tess_build(tess *t, size_t max_vertices, size_t max_triangles, bs_mesh **out)
+{
+    tess_counts c;
+    bs_status st = bsi_tess_measure(t, &c);
+    if (st == BS_OK && over_limits(&c, max_vertices, max_triangles))
+        st = BS_ERR_SIZE;
+    if (st != BS_OK) {
+        bsi_tess_free(t);
+        return st;
+    }
+    return run(t, out);
 }
 
 static bs_status tess_init(tess *t, const bs_surface *s, int flags)
@@ -127,51 +157,65 @@ static bs_status tess_init(tess *t, const bs_surface *s, int flags)
     return t->plan ? BS_OK : BS_ERR_NO_MEMORY;
 }
 
-bs_status bs_surface_tessellate_uniform(const bs_surface *s, size_t nu, size_t nv, int flags, bs_mesh **out)
+bs_status bsi_tess_start_uniform(tess *t, const bs_surface *s, int flags, size_t nu, size_t nv)
 {
-    bs_status st = check_surface(s, flags, out);
-    if (st != BS_OK)
-        return st;
     if (nu == 0 || nv == 0 || nu > BS_TESS_MAX_RATE || nv > BS_TESS_MAX_RATE)
         return BS_ERR_DOMAIN;
-    tess t;
-    if ((st = tess_init(&t, s, flags)) != BS_OK)
-        return st;
-    for (size_t p = 0; p < t.np; p++) {
-        t.plan[p].ru = nu;
-        t.plan[p].rv = nv;
+    bs_status st = tess_init(t, s, flags);
+    for (size_t p = 0; st == BS_OK && p < t->np; p++) {
+        t->plan[p].ru = nu;
+        t->plan[p].rv = nv;
     }
-    return run(&t, out);
+    return st;
+}
+
+double bsi_tess_absolute_tolerance(const bs_surface *s, double tolerance, int flags)
+{
+    if (!(flags & BS_TESS_RELATIVE))
+        return tolerance;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        const bs_patch *p = bs_surface_get(s, i);
+        for (size_t k = 0; k < p->nctrl; k++)
+            for (size_t c = 0; c < 3; c++) {
+                lo[c] = fmin(lo[c], p->ctrl[3 * k + c]);
+                hi[c] = fmax(hi[c], p->ctrl[3 * k + c]);
+            }
+    }
+    double d = bs_surface_count(s) ? hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]) : 0.0;
+    double tol = tolerance * d;
+    return tol > 0.0 ? tol : tolerance; /* a surface that is a point: any rate meets it */
+}
+
+bs_status bsi_tess_start_adaptive(tess *t, const bs_surface *s, int flags, double tolerance)
+{
+    if (!(tolerance > 0.0) || !isfinite(tolerance))
+        return BS_ERR_DOMAIN;
+    double tol = bsi_tess_absolute_tolerance(s, tolerance, flags);
+    bs_status st = tess_init(t, s, flags);
+    for (size_t p = 0; st == BS_OK && p < t->np; p++)
+        bsi_tess_adaptive_rates(bs_surface_get(s, p), tol, &t->plan[p].ru, &t->plan[p].rv);
+    return st;
+}
+
+bs_status bs_surface_tessellate_uniform(const bs_surface *s, size_t nu, size_t nv, int flags, bs_mesh **out)
+{
+    if (out != NULL)
+        *out = NULL;
+    bs_status st = out == NULL ? BS_ERR_INVALID_ARG : bsi_tess_check(s, flags);
+    tess t;
+    if (st == BS_OK)
+        st = bsi_tess_start_uniform(&t, s, flags, nu, nv);
+    return st == BS_OK ? bsi_tess_build(&t, 0, 0, out) : st;
 }
 
 bs_status bs_surface_tessellate_adaptive(const bs_surface *s, double tolerance, int flags, bs_mesh **out)
 {
-    bs_status st = check_surface(s, flags, out);
-    if (st != BS_OK)
-        return st;
-    if (!(tolerance > 0.0) || !isfinite(tolerance))
-        return BS_ERR_DOMAIN;
-    double tol = tolerance;
-    if (flags & BS_TESS_RELATIVE) {
-        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-        for (size_t i = 0; i < bs_surface_count(s); i++) {
-            const bs_patch *p = bs_surface_get(s, i);
-            for (size_t k = 0; k < p->nctrl; k++)
-                for (size_t c = 0; c < 3; c++) {
-                    lo[c] = fmin(lo[c], p->ctrl[3 * k + c]);
-                    hi[c] = fmax(hi[c], p->ctrl[3 * k + c]);
-                }
-        }
-        double d = bs_surface_count(s) ? hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]) : 0.0;
-        tol = tolerance * d;
-        if (!(tol > 0.0))
-            tol = tolerance; /* a surface that is a point: any rate meets it */
-    }
+    if (out != NULL)
+        *out = NULL;
+    bs_status st = out == NULL ? BS_ERR_INVALID_ARG : bsi_tess_check(s, flags);
     tess t;
-    if ((st = tess_init(&t, s, flags)) != BS_OK)
-        return st;
-    for (size_t p = 0; p < t.np; p++) {
-        bsi_tess_adaptive_rates(bs_surface_get(s, p), tol, &t.plan[p].ru, &t.plan[p].rv);
-    }
-    return run(&t, out);
+    if (st == BS_OK)
+        st = bsi_tess_start_adaptive(&t, s, flags, tolerance);
+    return st == BS_OK ? bsi_tess_build(&t, 0, 0, out) : st;
 }
