@@ -27,12 +27,13 @@ void bsi_subdiv_free(subdiv *s)
 }
 
 /* Trees, points, vertices and the triangle count. */
-static bs_status prepare(subdiv *sd, const bs_surface *s, double tol)
+static bs_status prepare(subdiv *sd, const bs_surface *s, double tol, size_t max_tri)
 {
     memset(sd, 0, sizeof(*sd));
     sd->s = s;
     sd->np = bs_surface_count(s);
     sd->tol = tol;
+    sd->max_tri = max_tri;
     bs_status st = bsi_topology_build(s, 1e-9 * bsi_tess_max_abs_coord(s), &sd->topo);
     if (st == BS_OK)
         st = bsi_subdiv_trees(sd);
@@ -42,15 +43,13 @@ static bs_status prepare(subdiv *sd, const bs_surface *s, double tol)
         st = bsi_subdiv_classify(sd);
     if (st == BS_OK)
         st = bsi_subdiv_emit(sd, NULL);
-    if (st == BS_OK && sd->ntri > UINT32_MAX / 3)
-        st = BS_ERR_SIZE;
     return st;
 }
 
 bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t *vertices, size_t *triangles)
 {
     subdiv sd;
-    bs_status st = prepare(&sd, s, tol);
+    bs_status st = prepare(&sd, s, tol, 0);
     if (st == BS_OK) {
         if (vertices)
             *vertices = sd.nvert;
@@ -111,8 +110,10 @@ bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t 
 {
     *out = NULL;
     subdiv sd;
-    bs_status st = prepare(&sd, s, tol);
-    if (st == BS_OK && ((max_vertices && sd.nvert > max_vertices) || (max_triangles && sd.ntri > max_triangles)))
+    /* 32-bit indices: at most UINT32_MAX / 3 triangles, the limit when there is no budget */
+    size_t max_tri = max_triangles && max_triangles < UINT32_MAX / 3 ? max_triangles : UINT32_MAX / 3;
+    bs_status st = prepare(&sd, s, tol, max_tri);
+    if (st == BS_OK && (sd.nvert > UINT32_MAX - 1 || sd.ntri > max_tri || (max_vertices && sd.nvert > max_vertices)))
         st = BS_ERR_SIZE;
     tess t;
     memset(&t, 0, sizeof(t));

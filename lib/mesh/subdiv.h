@@ -35,6 +35,8 @@ typedef struct subdiv {
     const bs_surface *s;
     size_t np;
     double tol;
+    size_t max_tri;   /* 0, or refuse (BS_ERR_SIZE) as soon as the leaves surely give more triangles */
+    size_t tri_lower; /* 2 per leaf that touches no pole and does not span its patch: a lower bound */
     bsi_topology topo;
     /* phase 1: leaves of patch p are leaf[leaf0[p] .. leaf0[p+1]) */
     sd_leaf *leaf;
@@ -54,7 +56,8 @@ typedef struct subdiv {
     size_t nvert, ntri;
 } subdiv;
 
-/* Phase 1: the leaves of every patch under tolerance s->tol. BS_ERR_SIZE past 2^32 leaves. */
+/* Phase 1: the leaves of every patch under tolerance s->tol. BS_ERR_SIZE past 2^31 leaves, or as
+ * soon as s->tri_lower exceeds s->max_tri. */
 bs_status bsi_subdiv_trees(subdiv *s);
 /* Phase 2: points, merges and vertex ids of points (s->vid); leaf kinds and centre vertices come
  * from bsi_subdiv_classify. */

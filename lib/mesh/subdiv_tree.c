@@ -45,6 +45,7 @@ typedef struct tree {
     double *nets;     /* LEVEL_NETS per level, then the root's */
     double *pts;      /* the projected net of a rational node */
     double *sq;       /* squared coordinate differences of one row of a net */
+    unsigned char collapsed[4]; /* the patch's sides that are poles */
 } tree;
 
 /* Cut the curve of deg + 1 points (hd doubles each, `stride` doubles apart) at t by de Casteljau:
@@ -187,8 +188,12 @@ static void cheapest_split(const double e[3], double tol, uint32_t fumax, uint32
 /* First step of a total split f: a half when f is even, else a third. */
 static uint32_t first_step(uint32_t f) { return f <= 1 ? 1 : f % 2 == 0 ? 2 : 3; }
 
-static bs_status add_leaf(subdiv *s, uint32_t u0, uint32_t u1, uint32_t v0, uint32_t v1)
+/* Keep the leaf. A leaf that touches no collapsed side and does not span its patch has four
+ * distinct corner vertices, so it gives at least two triangles: that bounds the count from below,
+ * and a triangle budget is refused while the trees are still small. */
+static bs_status add_leaf(tree *tr, uint32_t u0, uint32_t u1, uint32_t v0, uint32_t v1)
 {
+    subdiv *s = tr->s;
     if (s->nleaf == s->leaf_cap) {
         if (s->leaf_cap >= UINT32_MAX / 2)
             return BS_ERR_SIZE;
@@ -201,7 +206,12 @@ static bs_status add_leaf(subdiv *s, uint32_t u0, uint32_t u1, uint32_t v0, uint
     }
     sd_leaf l = {u0, u1, v0, v1};
     s->leaf[s->nleaf++] = l;
-    return BS_OK;
+    const unsigned char *c = tr->collapsed;
+    int pole = (c[BSI_SIDE_V0] && v0 == 0) || (c[BSI_SIDE_U1] && u1 == SD_N) || (c[BSI_SIDE_V1] && v1 == SD_N) ||
+               (c[BSI_SIDE_U0] && u0 == 0);
+    if (!pole && (u0 != 0 || u1 != SD_N) && (v0 != 0 || v1 != SD_N))
+        s->tri_lower += 2;
+    return s->max_tri != 0 && s->tri_lower > s->max_tri ? BS_ERR_SIZE : BS_OK;
 }
 
 /* The node over [u0,u1] x [v0,v1] with net `net`: a leaf, or split and its children visited. */
@@ -222,7 +232,7 @@ static bs_status node(tree *tr, size_t level, const double *net, uint32_t u0, ui
         sv = first_step(bv);
     }
     if (su == 1 && sv == 1)
-        return add_leaf(tr->s, u0, u1, v0, v1);
+        return add_leaf(tr, u0, u1, v0, v1);
     double *buf = tr->nets + level * LEVEL_NETS * tr->netsz;
     double *strip[3] = {buf, buf + tr->netsz, buf + 2 * tr->netsz};
     double *kid[3] = {buf + 3 * tr->netsz, buf + 4 * tr->netsz, buf + 5 * tr->netsz};
@@ -247,7 +257,9 @@ bs_status bsi_subdiv_trees(subdiv *s)
     bs_status st = BS_OK;
     for (size_t p = 0; p < s->np && st == BS_OK; p++) {
         const bs_patch *patch = bs_surface_get(s->s, p);
-        tree tr = {s, patch->deg_u, patch->deg_v, patch->rational ? 4u : 3u, 0, patch->rational, NULL, NULL, NULL};
+        tree tr = {s, patch->deg_u, patch->deg_v, patch->rational ? 4u : 3u, 0, patch->rational, NULL, NULL, NULL, {0, 0, 0, 0}};
+        for (int side = 0; side < 4; side++)
+            tr.collapsed[side] = s->topo.links[4 * p + (size_t)side].collapsed;
         tr.netsz = (tr.m + 1) * (tr.n + 1) * tr.hd;
         tr.nets = malloc((LEVEL_NETS * MAX_LEVELS + 3) * tr.netsz * sizeof(double));
         if (tr.nets == NULL)

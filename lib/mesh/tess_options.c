@@ -2,7 +2,9 @@
  * The tessellation entry points of 1.1: one options struct for every method, budgets refused before
  * any large allocation, and the counts of a mesh without building it.
  */
-#include "mesh/tess.h"
+#include "mesh/subdiv.h"
+
+#include <math.h>
 
 #include <string.h>
 
@@ -18,7 +20,7 @@ void bs_tess_options_init(bs_tess_options *o)
     o->tolerance = 1e-3;
 }
 
-/* Check the options and start t with the rates of their method. */
+/* Check the options and start t with the rates of their method (subdivision needs no t). */
 static bs_status start(tess *t, const bs_surface *s, const bs_tess_options *o)
 {
     if (o == NULL || o->size < sizeof(bs_tess_options))
@@ -33,8 +35,8 @@ static bs_status start(tess *t, const bs_surface *s, const bs_tess_options *o)
         return bsi_tess_start_uniform(t, s, o->flags, o->nu, o->nv);
     case BS_TESS_PER_PATCH:
         return bsi_tess_start_adaptive(t, s, o->flags, o->tolerance);
-    /* the quadtree tessellator takes this case */
-    case BS_TESS_SUBDIVIDE: return BS_ERR_UNSUPPORTED;
+    case BS_TESS_SUBDIVIDE:
+        return o->tolerance > 0.0 && isfinite(o->tolerance) ? BS_OK : BS_ERR_DOMAIN;
     default:
         return BS_ERR_INVALID_ARG;
     }
@@ -47,6 +49,9 @@ bs_status bs_surface_tessellate(const bs_surface *s, const bs_tess_options *o, b
     *out = NULL;
     tess t;
     bs_status st = start(&t, s, o);
+    if (st == BS_OK && o->method == BS_TESS_SUBDIVIDE)
+        return bsi_tess_subdivide(s, bsi_tess_absolute_tolerance(s, o->tolerance, o->flags), o->flags,
+                                  o->max_vertices, o->max_triangles, out);
     return st == BS_OK ? bsi_tess_build(&t, o->max_vertices, o->max_triangles, out) : st;
 }
 
@@ -57,6 +62,9 @@ bs_status bs_surface_tessellate_count(const bs_surface *s, const bs_tess_options
     bs_status st = start(&t, s, o);
     if (st != BS_OK)
         return st;
+    if (o->method == BS_TESS_SUBDIVIDE)
+        return bsi_tess_subdivide_count(s, bsi_tess_absolute_tolerance(s, o->tolerance, o->flags), vertices,
+                                        triangles);
     tess_counts c;
     st = bsi_tess_measure(&t, &c);
     bsi_tess_free(&t);
