@@ -2,24 +2,47 @@
  * a small file or a fine tolerance cannot make the tool take gigabytes and minutes. */
 #include "cmds.h"
 
+#include <string.h>
+
 int cli_parse_budget(const char *cmd, const char *val, size_t *budget)
 {
     return cli_parse_size(val, budget) ? CLI_OK : cli_usage_error(cmd, "bad triangle count", val);
 }
 
+int cli_parse_method(const char *cmd, const char *val, int *method)
+{
+    if (strcmp(val, "per-patch") == 0)
+        *method = BS_TESS_PER_PATCH;
+    else if (strcmp(val, "subdivide") == 0)
+        *method = BS_TESS_SUBDIVIDE;
+    else
+        return cli_usage_error(cmd, "unknown method", val);
+    return CLI_OK;
+}
+
 int cli_tessellate(const char *cmd, const bs_surface *s, const bs_tess_options *o, size_t budget, bs_mesh **out)
 {
     size_t nt = 0;
-    bs_status st = bs_surface_tessellate_count(s, o, NULL, &nt);
-    if (st == BS_OK && budget != 0 && nt > budget)
-        return cli_fail(cmd, CLI_INPUT,
-                        "the mesh would have %zu triangles, more than the budget of %zu (--max-triangles N "
-                        "raises it, 0 removes it)",
-                        nt, budget);
-    if (st == BS_OK) {
-        bs_tess_options b = *o;
-        b.max_triangles = budget;
+    bs_tess_options b = *o;
+    b.max_triangles = budget;
+    bs_status st = BS_OK;
+    if (o->method == BS_TESS_SUBDIVIDE) {
+        /* counting builds the trees: the tessellator refuses while they are still small instead */
         st = bs_surface_tessellate(s, &b, out);
+        if (st == BS_ERR_SIZE && budget != 0)
+            return cli_fail(cmd, CLI_INPUT,
+                            "the mesh would have more triangles than the budget of %zu (--max-triangles N "
+                            "raises it, 0 removes it)",
+                            budget);
+    } else {
+        st = bs_surface_tessellate_count(s, o, NULL, &nt);
+        if (st == BS_OK && budget != 0 && nt > budget)
+            return cli_fail(cmd, CLI_INPUT,
+                            "the mesh would have %zu triangles, more than the budget of %zu (--max-triangles N "
+                            "raises it, 0 removes it)",
+                            nt, budget);
+        if (st == BS_OK)
+            st = bs_surface_tessellate(s, &b, out);
     }
     if (st == BS_OK)
         return CLI_OK;

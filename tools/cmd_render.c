@@ -19,6 +19,8 @@ static const char usage[] =
     "  -e, --elevation DEG   camera elevation above the horizon, -90..90 (default 25)\n"
     "      --up y|z          the model's up axis (default z; y for the built-in teacup and teaspoon)\n"
     "  -r, --relative F      tessellation tolerance as a fraction of the model's size (default 0.0002)\n"
+    "  -m, --method M        tessellation: per-patch (default) or subdivide\n"
+    "      --wire            draw the triangles' edges over the surface\n"
     "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
     "      --nets            draw the patches' control nets over the surface\n"
     "      --patch ID        render only patch ID\n"
@@ -36,7 +38,7 @@ typedef struct render_opts {
     const char *output;
     size_t w, h, ss, budget;
     double azimuth, elevation, rel, color[3];
-    int up_y, up_given, nets, split;
+    int up_y, up_given, nets, split, wire, method;
     size_t patch; /* (size_t)-1: all */
 } render_opts;
 
@@ -49,11 +51,13 @@ static int parse_args(int argc, char **argv, render_opts *o)
         if (r != CLI_NOT_COMMON)
             return r;
         const char *a = argv[i];
-        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0) {
+        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0 || strcmp(a, "--wire") == 0) {
             if (a[2] == 'n')
                 o->nets = 1;
-            else
+            else if (a[2] == 's')
                 o->split = 1;
+            else
+                o->wire = 1;
             continue;
         }
         if (i + 1 >= argc)
@@ -105,6 +109,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
                 return cli_usage_error("render", "bad patch id", val);
         } else if (strcmp(a, "--max-triangles") == 0) {
             if (cli_parse_budget("render", val, &o->budget) != CLI_OK)
+                return CLI_USAGE;
+        } else if (strcmp(a, "-m") == 0 || strcmp(a, "--method") == 0) {
+            if (cli_parse_method("render", val, &o->method) != CLI_OK)
                 return CLI_USAGE;
         } else if (strcmp(a, "--ss") == 0) {
             if (!cli_parse_size(val, &o->ss) || o->ss < 1 || o->ss > 4)
@@ -164,11 +171,21 @@ static void draw_nets(raster *r, const bs_surface *s)
     }
 }
 
+/* Every triangle's edges, thin and dark (an edge shared by two triangles is drawn twice, alike). */
+static void draw_wire(raster *r, const double *pos, const uint32_t *tri, size_t nt)
+{
+    static const double ink[3] = {0.08, 0.09, 0.14};
+    for (size_t t = 0; t < nt; t++)
+        for (int k = 0; k < 3; k++)
+            raster_line(r, pos + 3 * (size_t)tri[3 * t + (size_t)k], pos + 3 * (size_t)tri[3 * t + (size_t)(k + 1) % 3],
+                        0.6, ink);
+}
+
 static int render(const render_opts *o, const bs_surface *s)
 {
     bs_tess_options to;
     bs_tess_options_init(&to);
-    to.method = BS_TESS_PER_PATCH;
+    to.method = o->method;
     to.flags = BS_TESS_RELATIVE;
     to.tolerance = o->rel;
     bs_mesh *m = NULL;
@@ -193,6 +210,8 @@ static int render(const render_opts *o, const bs_surface *s)
         framed = raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi);
     if (framed == 0) {
         raster_mesh(&r, pos, nrm, tri, nt, o->color);
+        if (o->wire)
+            draw_wire(&r, pos, tri, nt);
         if (o->nets)
             draw_nets(&r, s);
         raster_finish(&r, rgb);
@@ -269,7 +288,7 @@ static int select_patches(const render_opts *o, const bs_surface *s, bs_surface 
 int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
-                     (size_t)-1};
+                     0, BS_TESS_PER_PATCH, (size_t)-1};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;

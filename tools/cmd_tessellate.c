@@ -16,6 +16,8 @@ static const char usage[] =
     "  -t, --tolerance D     adaptive: chordal tolerance D in model units\n"
     "  -r, --relative F      adaptive: tolerance F times the control-net box diagonal\n"
     "                        (default when no rate is given: -r 0.001)\n"
+    "  -m, --method M        adaptive: per-patch (one rate per patch, default) or subdivide\n"
+    "                        (a quadtree of sub-patches in each patch, fewer triangles)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
     "  -s, --strips          also build triangle strips (reported, not written)\n"
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
@@ -53,6 +55,7 @@ int cmd_tessellate(int argc, char **argv)
     const char *output = NULL;
     int format = -1, mode = 0 /* 0 relative, 1 absolute, 2 uniform */, flags = 0;
     double tol = 1e-3;
+    int method = BS_TESS_PER_PATCH;
     size_t nu = 0, nv = 0, budget = CLI_TESSELLATE_MAX_TRIANGLES;
     for (int i = 1; i < argc; i++) {
         int r = cli_common_arg("tessellate", usage, argc, argv, &i, &in);
@@ -75,6 +78,9 @@ int cmd_tessellate(int argc, char **argv)
                 return cli_usage_error("tessellate", "unknown format", val);
         } else if (strcmp(a, "--max-triangles") == 0) {
             if (cli_parse_budget("tessellate", val, &budget) != CLI_OK)
+                return CLI_USAGE;
+        } else if (strcmp(a, "-m") == 0 || strcmp(a, "--method") == 0) {
+            if (cli_parse_method("tessellate", val, &method) != CLI_OK)
                 return CLI_USAGE;
         } else if (strcmp(a, "-u") == 0 || strcmp(a, "--uniform") == 0) {
             char buf[64];
@@ -121,7 +127,7 @@ int cmd_tessellate(int argc, char **argv)
         return rc;
     bs_tess_options o;
     bs_tess_options_init(&o);
-    o.method = mode == 2 ? BS_TESS_UNIFORM : BS_TESS_PER_PATCH;
+    o.method = mode == 2 ? BS_TESS_UNIFORM : method;
     o.flags = flags | (mode == 0 ? BS_TESS_RELATIVE : 0);
     o.nu = nu;
     o.nv = nv;

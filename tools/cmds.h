@@ -94,8 +94,12 @@ void cli_print_double(double x);
 #define CLI_RENDER_MAX_TRIANGLES ((size_t)2000000)
 /* Parse the value of --max-triangles (0: no budget); CLI_OK, or CLI_USAGE after the message. */
 int cli_parse_budget(const char *cmd, const char *val, size_t *budget);
+/* Parse the value of --method: "per-patch" or "subdivide" (BS_TESS_PER_PATCH, BS_TESS_SUBDIVIDE);
+ * CLI_OK, or CLI_USAGE after the message. */
+int cli_parse_method(const char *cmd, const char *val, int *method);
 /* The mesh of o, or CLI_INPUT before any work when it would have more than budget triangles (0: no
- * budget), after one line naming the count; CLI_INPUT or CLI_INTERNAL when the library fails. */
+ * budget), after one line naming the count (for subdivision, refused while its trees are built: the
+ * line gives the budget); CLI_INPUT or CLI_INTERNAL when the library fails. */
 int cli_tessellate(const char *cmd, const bs_surface *s, const bs_tess_options *o, size_t budget, bs_mesh **out);
 
 /* "v0", "u1", "v1", "u0" for BS_SIDE_*. */

@@ -68,9 +68,10 @@ void bsi_subdiv_side_range(const subdiv *s, size_t p, int along_u, uint32_t b, u
                            size_t *first, size_t *last);
 /* Global index of point (u,v) of patch p (it must exist). */
 size_t bsi_subdiv_point(const subdiv *s, size_t p, uint32_t u, uint32_t v);
-/* Phase 3a: each leaf's triangulation, vertex ids of points and leaf centres, s->nvert. */
+/* Phase 3a: each leaf's triangulation, the vertex ids of leaf centres (s->nvert), and s->ntri for
+ * the leaves whose triangles cannot degenerate. */
 bs_status bsi_subdiv_classify(subdiv *s);
-/* Phase 3b: with t == NULL count the triangles into s->ntri; else emit them into t. */
+/* Phase 3b: with t == NULL add the triangles of the other leaves to s->ntri; else emit them into t. */
 bs_status bsi_subdiv_emit(subdiv *s, tess *t);
 /* (u,v) of the leaf centres' vertices into uv (2 per vertex, indexed by vertex id). */
 void bsi_subdiv_centres(const subdiv *s, double *uv);

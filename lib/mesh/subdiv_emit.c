@@ -15,6 +15,9 @@
 #include <stdlib.h>
 
 enum { K_QUAD, K_FAN_A, K_FAN_B, K_FAN_C, K_FAN_D, K_ZIP_U, K_ZIP_V, K_CENTRE };
+/* Kind flag: the leaf may lose triangles to repeated vertices (it touches a pole, spans its patch,
+ * or has two corners welded), so its triangles are counted by emitting them. */
+#define K_COUNT_BY_EMITTING 0x80
 
 /* Side points of a leaf, exclusive of its corners: ranges in s->vu (bottom, top) or s->uv. */
 typedef struct leaf_sides { size_t f[4], l[4]; } leaf_sides;
@@ -48,26 +51,51 @@ static unsigned char classify(const leaf_sides *ls)
     return K_CENTRE;
 }
 
+/* 1 if every triangle of leaf k of patch p has three distinct vertices: it touches no pole, does
+ * not span the patch (whose opposite sides may be one curve) and its corners are four vertices. */
+static int plain_leaf(const subdiv *s, size_t p, size_t k)
+{
+    const sd_leaf *lf = &s->leaf[k];
+    const bsi_side_link *lk = &s->topo.links[4 * p];
+    if ((lk[BSI_SIDE_V0].collapsed && lf->v0 == 0) || (lk[BSI_SIDE_U1].collapsed && lf->u1 == SD_N) ||
+        (lk[BSI_SIDE_V1].collapsed && lf->v1 == SD_N) || (lk[BSI_SIDE_U0].collapsed && lf->u0 == 0) ||
+        (lf->u0 == 0 && lf->u1 == SD_N) || (lf->v0 == 0 && lf->v1 == SD_N))
+        return 0;
+    uint32_t id[4];
+    for (int c = 0; c < 4; c++)
+        id[c] = s->vid[s->pt0[p] + s->corner[4 * k + (size_t)c]];
+    return id[0] != id[1] && id[0] != id[2] && id[0] != id[3] && id[1] != id[2] && id[1] != id[3] && id[2] != id[3];
+}
+
 bs_status bsi_subdiv_classify(subdiv *s)
 {
     s->kind = malloc(s->nleaf ? s->nleaf : 1);
     s->cen0 = malloc((s->np + 1) * sizeof(size_t));
     if (s->kind == NULL || s->cen0 == NULL)
         return BS_ERR_NO_MEMORY;
-    size_t nv = s->nvert;
+    size_t nv = s->nvert, nt = 0;
     for (size_t p = 0; p < s->np; p++) {
         s->cen0[p] = nv;
         for (size_t k = s->leaf0[p]; k < s->leaf0[p + 1]; k++) {
             leaf_sides ls;
             sides_of(s, p, k, &ls);
-            s->kind[k] = classify(&ls);
-            nv += s->kind[k] == K_CENTRE;
+            unsigned char kind = classify(&ls);
+            size_t n = 4;
+            for (int q = 0; q < 4; q++)
+                n += ls.l[q] - ls.f[q];
+            nv += kind == K_CENTRE;
+            if (plain_leaf(s, p, k))
+                nt += kind == K_CENTRE ? n : n - 2; /* a fan of n points, or a cut into n - 2 */
+            else
+                kind |= K_COUNT_BY_EMITTING;
+            s->kind[k] = kind;
         }
     }
     s->cen0[s->np] = nv;
     if (nv > UINT32_MAX - 1)
         return BS_ERR_SIZE;
     s->nvert = nv;
+    s->ntri = nt;
     return BS_OK;
 }
 
@@ -162,7 +190,7 @@ static int leaf_emit(emitter *x, size_t p, size_t k, uint32_t *centre)
         P[n++] = point_corner(s, s->pt0[p] + s->corner[4 * k + (size_t)q]);
         n = put_side(x, p, &ls, q, n);
     }
-    unsigned char kind = s->kind[k];
+    unsigned char kind = (unsigned char)(s->kind[k] & ~K_COUNT_BY_EMITTING);
     if (kind == K_QUAD) {
         tri(x, P[0], P[1], P[3]);
         tri(x, P[3], P[1], P[2]);
@@ -199,7 +227,7 @@ void bsi_subdiv_centres(const subdiv *s, double *uv)
         size_t id = s->cen0[p];
         for (size_t k = s->leaf0[p]; k < s->leaf0[p + 1]; k++) {
             const sd_leaf *lf = &s->leaf[k];
-            if (s->kind[k] != K_CENTRE)
+            if ((s->kind[k] & ~K_COUNT_BY_EMITTING) != K_CENTRE)
                 continue;
             uv[2 * id] = 0.5 * ((double)lf->u0 / (double)SD_N + (double)lf->u1 / (double)SD_N);
             uv[2 * id + 1] = 0.5 * ((double)lf->v0 / (double)SD_N + (double)lf->v1 / (double)SD_N);
@@ -211,12 +239,11 @@ void bsi_subdiv_centres(const subdiv *s, double *uv)
 bs_status bsi_subdiv_emit(subdiv *s, tess *t)
 {
     emitter x = {s, t, 0, NULL, 0};
-    s->ntri = 0;
     for (size_t p = 0; p < s->np; p++) {
-        uint32_t centre = (uint32_t)s->cen0[p];
+        uint32_t centre = (uint32_t)s->cen0[p]; /* counting: any id no point has will do */
         x.patch = (uint32_t)p;
         for (size_t k = s->leaf0[p]; k < s->leaf0[p + 1]; k++)
-            if (!leaf_emit(&x, p, k, &centre)) {
+            if ((t != NULL || (s->kind[k] & K_COUNT_BY_EMITTING)) && !leaf_emit(&x, p, k, &centre)) {
                 free(x.poly);
                 return BS_ERR_NO_MEMORY;
             }

@@ -220,9 +220,8 @@ static bs_status node(tree *tr, size_t level, const double *net, uint32_t u0, ui
     double e[3];
     bound_terms(tr, net, e);
     uint32_t fumax = BS_TESS_MAX_RATE / (SD_N / (u1 - u0)), fvmax = BS_TESS_MAX_RATE / (SD_N / (v1 - v0));
-    uint32_t su = 1, sv = 1;
+    uint32_t su = 1, sv = 1, bu = 1, bv = 1;
     if (split_error(e, 1.0, 1.0) > tr->s->tol && level + 1 < MAX_LEVELS) {
-        uint32_t bu, bv;
         cheapest_split(e, tr->s->tol, fumax, fvmax, &bu, &bv);
         if (bu == 0) { /* the cap: split what is left where the curvature is */
             bu = e[0] + e[1] > 0.0 ? fumax : 1;
@@ -237,6 +236,17 @@ static bs_status node(tree *tr, size_t level, const double *net, uint32_t u0, ui
     double *strip[3] = {buf, buf + tr->netsz, buf + 2 * tr->netsz};
     double *kid[3] = {buf + 3 * tr->netsz, buf + 4 * tr->netsz, buf + 5 * tr->netsz};
     uint32_t wu = (u1 - u0) / su, wv = (v1 - v0) / sv;
+    if (!tr->rational && su == bu && sv == bv && split_error(e, su, sv) <= tr->s->tol) {
+        /* The children are leaves: their nets' differences are convex combinations of this net's
+         * scaled by 1/su, 1/sv per order, so their terms are at most eu/su^2, euv/(su sv), ev/sv^2. */
+        for (uint32_t a = 0; a < su; a++)
+            for (uint32_t b = 0; b < sv; b++) {
+                bs_status st = add_leaf(tr, u0 + a * wu, u0 + (a + 1) * wu, v0 + b * wv, v0 + (b + 1) * wv);
+                if (st != BS_OK)
+                    return st;
+            }
+        return BS_OK;
+    }
     split_net(tr, net, strip, su, 1);
     for (uint32_t a = 0; a < su; a++) {
         split_net(tr, strip[a], kid, sv, 0);
