@@ -85,8 +85,14 @@ BS_API bs_status bs_surface_tessellate_adaptive(const bs_surface *s, double tole
 /** Tessellation method: one segment count per patch and direction from a bound on its second
  *  derivatives, as bs_surface_tessellate_adaptive(). @since 1.1 */
 #define BS_TESS_PER_PATCH 1
-/** Tessellation method: recursive subdivision of each patch into a quadtree of sub-patches, split
- *  where a flatness bound exceeds the tolerance (docs/tessellation.md). @since 1.1 */
+/** Tessellation method: recursive subdivision of each patch into a quadtree of sub-patches (halves
+ *  or thirds per direction, one direction alone where the other is flat), split where a bound on
+ *  the chordal error of the triangles exceeds the tolerance; same promise as
+ *  bs_surface_tessellate_adaptive() with far fewer triangles. Leaves of different size, inside a
+ *  patch and across shared sides, share their vertices (no cracks, no T-junctions). The bound is
+ *  rigorous for polynomial patches and an estimate for rational ones; at most BS_TESS_MAX_RATE
+ *  parts per patch and direction, where the tolerance may then not be met (docs/tessellation.md).
+ *  @since 1.1 */
 #define BS_TESS_SUBDIVIDE 2
 
 /**

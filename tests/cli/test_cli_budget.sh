@@ -28,6 +28,8 @@ has err "67100672 triangles, more than the budget of 10000000" "refusal names co
 check "[ ! -e '$work/big.obj' ]" "nothing written when refused"
 expect 2 "tolerance 1e-300 refused" -- sh -c "$cap" capped "$tool" tessellate -t 1e-300 -o "$work/big.obj"
 has err "67100672 triangles" "adaptive at the rate cap counted"
+expect 2 "subdivision at 1e-300 refused" -- sh -c "$cap" capped "$tool" tessellate -m subdivide -t 1e-300 -o "$work/big.obj"
+has err "more triangles than the budget of 10000000" "subdivision refused while its trees are small"
 # at 8 x 8: 4032 triangles, the budget is inclusive
 expect 0 "exactly at the budget" -- "$tool" tessellate -u 8 --max-triangles 4032 -o "$work/t8.obj"
 has out "4032 triangles" "mesh at the budget"

@@ -39,6 +39,15 @@ expect 1 "tessellate bad format" -- "$tool" tessellate -f dxf
 expect 1 "tessellate bad tolerance" -- "$tool" tessellate -t -1
 expect 1 "tessellate rate out of range" -- "$tool" tessellate -u 0 -o "$work/z.obj"
 expect 3 "tessellate unwritable" -- "$tool" tessellate -u 2 -o "$work/no/such/dir/x.obj"
+# --method: subdivision reports what it writes, and needs fewer triangles than one rate per patch.
+expect 0 "tessellate subdivide" -- "$tool" tessellate -m subdivide -t 0.01 -o "$work/q.obj"
+nq=$(sed -n 's/.* \([0-9]*\) triangles.*/\1/p' "$work/out")
+check "[ \$(grep -c '^f ' '$work/q.obj') -eq $nq ]" "subdivide OBJ faces as reported"
+expect 0 "tessellate per-patch" -- "$tool" tessellate --method per-patch -t 0.01 -o "$work/p.obj"
+np=$(sed -n 's/.* \([0-9]*\) triangles.*/\1/p' "$work/out")
+check "[ $nq -lt $np ]" "subdivide $nq triangles, per-patch $np"
+expect 1 "tessellate bad method" -- "$tool" tessellate -m quadtree
+check "grep -q 'unknown method: quadtree' '$work/err'" "bad method message"
 (cd "$work" && "$tool" tessellate -u 2 >/dev/null 2>&1)
 check "[ -s '$work/teapot.obj' ]" "default output teapot.obj"
 
@@ -55,6 +64,9 @@ check "'$pngcheck' '$work/spoon.png' 400 300" "spoon.png valid (several deflate 
 expect 0 "render split patch" -- "$tool" render --patch 4 --split --nets --size 64x48 -o "$work/split.png"
 check "'$pngcheck' '$work/split.png' 64 48" "split.png valid"
 check "grep -q '64x48' '$work/out'" "render reports its size"
+expect 0 "render subdivided wireframe" -- "$tool" render -m subdivide --wire -r 0.005 --size 64x48 -o "$work/wire.png"
+check "'$pngcheck' '$work/wire.png' 64 48" "wire.png valid"
+expect 1 "render bad method" -- "$tool" render --method uniform
 expect 2 "render no such patch" -- "$tool" render --patch 32 -o "$work/none.png"
 expect 1 "render bad patch id" -- "$tool" render --patch x
 expect 1 "render bad size" -- "$tool" render --size 10x10
