@@ -320,6 +320,28 @@ static bs_status op_tessellate_adaptive(void)
     return st;
 }
 
+static bs_status op_tessellate_subdivide(void)
+{
+    bs_mesh *m = (bs_mesh *)(void *)HSENT;
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    o.method = BS_TESS_SUBDIVIDE;
+    o.tolerance = 0.05;
+    o.flags = BS_TESS_STRIPS;
+    size_t nt = 7;
+    bs_status st = bs_surface_tessellate_count(TEAPOT, &o, NULL, &nt);
+    if (st != BS_OK) {
+        CHECK(nt == 7);
+        return st;
+    }
+    st = bs_surface_tessellate(TEAPOT, &o, &m);
+    if (st != BS_OK)
+        CHECK(m == NULL);
+    else
+        bs_mesh_destroy(m);
+    return st;
+}
+
 /* A NURBS of 2 x 3 spans added to a surface that already holds 9 patches (so that its array
  * grows): on failure the surface, the spans and the count are as they were. */
 static bs_status op_add_bspline(void)
@@ -390,6 +412,7 @@ static const op ops[] = {
     {"bs_surface_continuity", op_continuity, 0},
     {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
     {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
+    {"bs_surface_tessellate (subdivide, count)", op_tessellate_subdivide, 0},
 };
 
 int main(void)
