@@ -9,22 +9,6 @@
 
 static double worst_regular, worst_limit;
 
-static unsigned char normal1(const bs_patch *p, double u, double v, double *nrm)
-{
-    bs_cview cu = cview_of(&u, 1), cv = cview_of(&v, 1);
-    bs_view vn[3];
-    views_of(nrm, 3, 1, vn);
-    unsigned char kind = 99;
-    CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, NULL, vn, &kind), BS_OK);
-    return kind;
-}
-
-static double dist3(const double *a, const long double *b)
-{
-    long double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
-    return (double)sqrtl(d0 * d0 + d1 * d1 + d2 * d2);
-}
-
 /* The reference normal at a point 1e-9 inside the domain, towards its centre (long double keeps
  * ~1e-10 relative accuracy there; the normal moves by O(1e-9) from the limit). */
 static int inside_normal(const ref_net *r, double u, double v, long double *nrm)
