@@ -102,6 +102,11 @@ static void test_teaset(const char *path, size_t expect)
         bs_patch_destroy(p);
     }
     printf("%s: %d regular, %d limit, %d undefined normals on 9 x 9 grids\n", path, count[0], count[1], count[2]);
+    /* docs/normals.md: the cup's 2106 all regular; the spoon 7 limit points among 1296 */
+    if (expect == 26)
+        CHECKF(count[0] == 2106 && count[1] == 0 && count[2] == 0, "%s: kinds as documented", path);
+    else
+        CHECKF(count[0] == 1296 - 7 && count[1] == 7 && count[2] == 0, "%s: kinds as documented", path);
 }
 
 /* A wavy graph-like net of degree (m,n), then side `side` (0: u=0, 1: u=1, 2: v=0, 3: v=1)
