@@ -93,10 +93,12 @@ void bsi_project_first(const bs_patch *p, const double *h, const double *hu, con
 
 /* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
 typedef struct bsi_nscale {
-    double lu, lv;   /* bounds on |S_u| and |S_v| over the unit square */
+    double lu, lv;   /* m D, n D: scales of |S_u| and |S_v| (their bounds for a polynomial patch) */
     double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
     double rho;      /* wmax / wmin, 1 for polynomial patches */
-    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero */
+    double wmax;     /* largest weight, 1 for polynomial patches */
+    double fu, fv;   /* CLEAN times the rounding bound of S_u, S_v per unit of wmax / w(u,v) */
+    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero anywhere (with wmax / w = rho) */
 } bsi_nscale;
 
 void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);

@@ -206,6 +206,46 @@ static void test_pole(void)
     bs_surface_destroy(s);
 }
 
+/* The shared edges of two bilinear patches, measured with `samples` samples, into e[0..1]. */
+static size_t pair_edges(const double *a, const double *b, size_t samples, bs_edge_continuity e[2])
+{
+    size_t deg[4] = {1, 1, 1, 1}, ne = 0, no = 0;
+    const double *nets[2] = {a, b};
+    bs_surface *s = surface_of(2, deg, nets);
+    CHECK_STATUS(bs_surface_continuity(s, 1e-12, samples, e, 2, &ne, NULL, 0, &no), BS_OK);
+    bs_surface_destroy(s);
+    return ne;
+}
+
+/* A flat square and a twisted neighbour: B's side u = 0 is A's side u = 1, B's far side lies flat
+ * at v = 0 and folded by theta at v = 1, so the planes meet at atan2(v sin theta, 1 - v +
+ * v cos theta) along the edge. The samples are at t = (k + 1/2) / samples: with one sample the
+ * angle is theta / 2 exactly (v = 1/2), with two the larger of v = 1/4 and 3/4. */
+static void test_twist(void)
+{
+    double th = 0.8, c = cos(th), sn = sin(th);
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0};
+    double b[12] = {1, 0, 0, 1, 1, 0, 2, 0, 0, 1 + c, 1, sn};
+    bs_edge_continuity e[2];
+    CHECK(pair_edges(a, b, 1, e) == 1 && e[0].samples == 1 && e[0].flipped == 0);
+    CHECKF(fabs(e[0].g1_angle - th / 2) < 1e-14, "one sample: angle %.17g, expected %.17g", e[0].g1_angle, th / 2);
+    CHECK(pair_edges(a, b, 2, e) == 1);
+    double expect = atan2(0.75 * sn, 0.25 + 0.75 * c);
+    CHECKF(fabs(e[0].g1_angle - expect) < 1e-14, "two samples: angle %.17g, expected %.17g", e[0].g1_angle, expect);
+}
+
+/* Normals at right angles (dot product exactly 0) are not opposite; an edge whose normals are all
+ * undefined (nets on a line) uses no sample and is not flipped. */
+static void test_flipped_edges(void)
+{
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0}, b[12] = {1, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1};
+    bs_edge_continuity e[2];
+    CHECK(pair_edges(a, b, 5, e) == 1 && e[0].samples == 5 && e[0].flipped == 0);
+    CHECK(fabs(e[0].g1_angle - acos(-1.0) / 2) < 1e-15);
+    double la[12] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0}, lb[12] = {2, 0, 0, 3, 0, 0, 4, 0, 0, 5, 0, 0};
+    CHECK(pair_edges(la, lb, 5, e) >= 1 && e[0].samples == 0 && e[0].flipped == 0);
+}
+
 /* The frozen layout documented in docs/continuity.md (bindings rely on it). */
 static void test_layout(void)
 {
@@ -226,5 +266,7 @@ int main(void)
     test_teaset();
     test_errors();
     test_pole();
+    test_twist();
+    test_flipped_edges();
     return bs_test_exit("test_continuity");
 }

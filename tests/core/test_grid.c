@@ -1,5 +1,6 @@
-/* bs_patch_eval_grid: bit-identical to the scattered evaluators for every output, across the
- * column-pass boundary, with NaN parameters, negative and interleaved strides. */
+/* bs_patch_eval_grid: bit-identical to the scattered evaluators for every output and every
+ * combination of outputs taken (each has its own path), across the column-pass boundary, with NaN
+ * parameters, negative and interleaved strides. */
 #include "eval_util.h"
 
 #ifndef BS_DATA_DIR
@@ -53,6 +54,14 @@ static void compare(const bs_patch *p, size_t nu, const double *u, size_t nv, co
         for (size_t c = 0; c < 3; c++)
             same &= memcmp(gv[0][c].data, sview[0][c].data, tot * sizeof(double)) == 0;
         CHECK(same);
+        /* positions and first partials without normals (their own path) are the same bits */
+        CHECK_STATUS(bs_patch_eval_grid(p, nu, &cu, nv, &cv, gv[0], gv[1], gv[2], NULL, NULL), BS_OK);
+        CHECK_STATUS(bs_patch_eval(p, tot, &csu, &csv, sview[0], sview[1], sview[2]), BS_OK);
+        same = 1;
+        for (int d = 0; d < 3; d++)
+            for (size_t c = 0; c < 3; c++)
+                same &= memcmp(gv[d][c].data, sview[d][c].data, tot * sizeof(double)) == 0;
+        CHECKF(same, "grid positions + S_u + S_v %zu x %zu differ from scattered", nu, nv);
     }
     free(g);
     free(s);

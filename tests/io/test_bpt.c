@@ -96,6 +96,28 @@ static void test_numbers(void)
         CHECKF(memcmp(&c[0], &cases[k].value, sizeof(double)) == 0, "%s read as %.17g", cases[k].text, c[0]);
         bs_surface_destroy(s);
     }
+    /* A number is at most 400 characters (docs/bpt-format.md): "000...0.25" of exactly 400 reads
+     * as 0.25, one of 401 is a parse error at its first character. */
+    for (size_t len = 400; len <= 401; len++) {
+        char text[512] = "1\n0 0\n";
+        size_t at = strlen(text);
+        memset(text + at, '0', len);
+        memcpy(text + at + len - 3, ".25", 3);
+        strcpy(text + at + len, " 0 0\n");
+        bs_surface *s = NULL;
+        bs_parse_error err;
+        memset(&err, 0, sizeof err);
+        bs_status st = parse(text, &err, &s);
+        double c[3] = {1, 1, 1};
+        if (s)
+            bs_patch_get_ctrl(bs_surface_get(s, 0), c, 3, NULL, 0);
+        if (len == 400)
+            CHECKF(st == BS_OK && c[0] == 0.25, "400 characters: status %d, %g", st, c[0]);
+        else
+            CHECKF(st == BS_ERR_PARSE && err.line == 3 && err.column == 1, "401 characters: status %d at %zu:%zu", st,
+                   err.line, err.column);
+        bs_surface_destroy(s);
+    }
     /* Random finite doubles of every magnitude (random bit patterns) survive write + read. */
     unsigned long long seed = 12345;
     int all = 1;

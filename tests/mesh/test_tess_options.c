@@ -278,6 +278,85 @@ static void errors(void)
     bs_surface_destroy(flat);
 }
 
+/* Two unit squares side by side in the plane z = 0, scaled by k, the second's shared side moved by
+ * (0, 0, delta) x k: welded when delta is within 1e-9 of the largest coordinate (2k). */
+static size_t vertices_of_pair(double k, double delta)
+{
+    double a[12] = {0, 0, 0, 0, k, 0, k, 0, 0, k, k, 0};
+    double b[12] = {k, 0, delta * k, k, k, delta * k, 2 * k, 0, 0, 2 * k, k, 0};
+    bs_surface *s = NULL;
+    bs_surface_create(&s);
+    add_patch(s, 1, 1, a, NULL);
+    add_patch(s, 1, 1, b, NULL);
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    o.nu = o.nv = 4;
+    bs_mesh *m = NULL;
+    CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_OK);
+    size_t nv = bs_mesh_vertex_count(m);
+    bs_mesh_destroy(m);
+    bs_surface_destroy(s);
+    return nv;
+}
+
+/* Welding, rates and sampling against the documented rules (docs/tessellation.md). */
+static void documented_rules(void)
+{
+    /* 4 x 4 segments: 25 vertices a patch, 5 of them on the shared side */
+    static const double scales[] = {1.0, 1e6, 1e-6};
+    for (int k = 0; k < 3; k++) {
+        CHECK(vertices_of_pair(scales[k], 0.0) == 45);
+        CHECK(vertices_of_pair(scales[k], 0.9e-9) == 45);  /* 0.9e-9 k <= 1e-9 x 2k */
+        CHECK(vertices_of_pair(scales[k], 1.9e-9) == 45);
+        CHECK(vertices_of_pair(scales[k], 2.2e-9) == 50);  /* past 1e-9 x 2k: two sides */
+    }
+
+    /* Rates from the bound, n_u = ceil(1.5 sqrt((M_uu + M_uv) / (4 tol))) and likewise n_v, on a
+     * net of degree (2,1) flat but for z = c at point (2,1): its largest second difference along u
+     * and mixed difference are both c, so M_uu = m(m-1) c = 2c, M_uv = mn c = 2c, M_vv = 0. */
+    double c = 3.0, tol = 1e-3;
+    double net[3 * 2 * 3] = {0, 0, 0, 0, 1, 0, 0.5, 0, 0, 0.5, 1, 0, 1, 0, 0, 1, 1, c};
+    bs_surface *s = NULL;
+    bs_surface_create(&s);
+    add_patch(s, 2, 1, net, NULL);
+    double muu = 2.0 * c, muv = 2.0 * c, mvv = 0.0;
+    size_t ru = (size_t)ceil(1.5 * sqrt((muu + muv) / (4.0 * tol)));
+    size_t rv = (size_t)ceil(1.5 * sqrt((mvv + muv) / (4.0 * tol)));
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    o.method = BS_TESS_PER_PATCH;
+    o.tolerance = tol;
+    size_t nv = 0, nt = 0;
+    CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv, &nt), BS_OK);
+    CHECKF(nv == (ru + 1) * (rv + 1) && nt == 2 * ru * rv, "rates %zu x %zu: %zu vertices, %zu triangles", ru, rv,
+           nv, nt);
+
+    /* A ruled patch of rate 1 x 1 sharing that patch's side u = 1 as its own side u = 0: a shared
+     * side is sampled at the larger rate, so the ruled patch's triangles have rv + 1 distinct
+     * corners on it. */
+    double flat[12] = {1, 0, 0, 1, 1, c, 2, 0, 0, 2, 1, c};
+    add_patch(s, 1, 1, flat, NULL);
+    bs_mesh *m = NULL;
+    CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_OK);
+    mesh_data d;
+    read_mesh(m, &d);
+    double seen[BS_TESS_MAX_RATE + 2];
+    size_t nseen = 0;
+    for (size_t t = 0; t < d.nt; t++)
+        for (int k = 0; k < 3 && d.tpatch[t] == 1; k++) {
+            double u = d.cuv[6 * t + 2 * (size_t)k], v = d.cuv[6 * t + 2 * (size_t)k + 1];
+            size_t j = 0;
+            while (j < nseen && seen[j] != v)
+                j++;
+            if (u == 0.0 && j == nseen && nseen < BS_TESS_MAX_RATE + 2)
+                seen[nseen++] = v;
+        }
+    CHECKF(nseen == rv + 1, "shared side sampled at %zu points, not the larger rate %zu + 1", nseen, rv);
+    free_mesh(&d);
+    bs_mesh_destroy(m);
+    bs_surface_destroy(s);
+}
+
 /* Subdivision goes through the same entry points (tested in test_tess_subdivide). */
 static void subdivide(void)
 {
@@ -302,5 +381,6 @@ int main(void)
     tea_set();
     shapes();
     budgets();
+    documented_rules();
     return bs_test_exit("test_tess_options");
 }

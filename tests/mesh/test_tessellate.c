@@ -33,8 +33,9 @@ static int cmp_edge(const void *x, const void *y)
     return 0;
 }
 
-/* The mesh checks shared by every test. tol > 0: the chordal tolerance to verify. */
-static void check_mesh(const bs_surface *s, const bs_mesh *m, double tol, const char *what)
+/* The mesh checks shared by every test. tol > 0: the chordal tolerance to verify. Returns the
+ * number of boundary edges (used by one triangle). */
+static size_t check_mesh(const bs_surface *s, const bs_mesh *m, double tol, const char *what)
 {
     mesh_data d;
     read_mesh(m, &d);
@@ -90,6 +91,13 @@ static void check_mesh(const bs_surface *s, const bs_mesh *m, double tol, const 
         }
     }
     CHECKF(worst_vertex <= 1e-13 * fmax(scale, 1.0), "%s: vertex off the surface by %Lg", what, worst_vertex);
+    /* Winding: counter-clockwise in the (u,v) domain of the triangle's patch, stitched ones too. */
+    size_t clockwise = 0;
+    for (size_t t = 0; t < d.nt; t++) {
+        const double *c = d.cuv + 6 * t;
+        clockwise += (c[2] - c[0]) * (c[5] - c[1]) - (c[3] - c[1]) * (c[4] - c[0]) <= 0.0;
+    }
+    CHECKF(clockwise == 0, "%s: %zu triangles not counter-clockwise in (u,v)", what, clockwise);
     if (tol > 0.0)
         CHECKF(worst_chord <= tol, "%s: chordal error %Lg above tolerance %g", what, worst_chord, tol);
 
@@ -167,6 +175,7 @@ static void check_mesh(const bs_surface *s, const bs_mesh *m, double tol, const 
     free(open);
     free(e);
     free_mesh(&d);
+    return boundary;
 }
 
 static void teapot(void)
@@ -236,9 +245,10 @@ static void grids(void)
         bs_mesh_destroy(m);
         CHECK_STATUS(bs_surface_tessellate_uniform(s, 2, 5, BS_TESS_STRIPS, &m), BS_OK);
         snprintf(what, sizeof what, "grid %llu uniform 2x5", seed);
-        check_mesh(s, m, 0.0, what);
-        /* A rows x cols grid has one boundary: 2(rows+cols) sides of 2 or 5 segments each, so the
-         * mesh's boundary vertices number between 2*2(rows+cols) and 5*2(rows+cols). */
+        size_t boundary = check_mesh(s, m, 0.0, what);
+        /* A 3 x 4 grid has one boundary: 2(3+4) open sides of 2 or 5 segments each (a cell's
+         * parameters may be swapped), so between 2*14 and 5*14 boundary edges. */
+        CHECKF(boundary >= 2 * 14 && boundary <= 5 * 14, "%s: %zu boundary edges", what, boundary);
         bs_mesh_destroy(m);
         bs_surface_destroy(s);
     }

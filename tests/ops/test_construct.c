@@ -181,6 +181,18 @@ static void test_coons_corners_and_rational(void)
     cv[3].ctrl[deg[3] * 3 + 1] = cv[1].ctrl[deg[1] * 3 + 1] + 1e-14;
     CHECK_STATUS(bs_patch_coons(&cv[0].c, &cv[1].c, &cv[2].c, &cv[3].c, &p), BS_OK);
     bs_patch_destroy(p);
+    /* the tolerance pinned from both sides, on curves scaled up so that max|P| sets it */
+    double big = 0.0;
+    for (int k = 0; k < 4; k++)
+        for (size_t i = 0; i < (deg[k] + 1) * 3; i++)
+            big = fmax(big, fabs(cv[k].ctrl[i] *= 1e3));
+    double corner = cv[1].ctrl[deg[1] * 3 + 1];
+    cv[3].ctrl[deg[3] * 3 + 1] = corner + 0.4e-12 * big;
+    CHECK_STATUS(bs_patch_coons(&cv[0].c, &cv[1].c, &cv[2].c, &cv[3].c, &p), BS_OK);
+    bs_patch_destroy(p);
+    cv[3].ctrl[deg[3] * 3 + 1] = corner + 3e-12 * big;
+    CHECK_STATUS(bs_patch_coons(&cv[0].c, &cv[1].c, &cv[2].c, &cv[3].c, &p), BS_ERR_INCOMPATIBLE);
+    cv[3].ctrl[deg[3] * 3 + 1] = corner;
     p = sentinel;
     cv[2].c.weights = cv[2].w;
     CHECK_STATUS(bs_patch_coons(&cv[0].c, &cv[1].c, &cv[2].c, &cv[3].c, &p), BS_ERR_UNSUPPORTED);

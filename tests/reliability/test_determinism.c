@@ -1,7 +1,8 @@
 /* Determinism beyond what test_eval (batch sizes, strides), test_deriv and test_grid (grid against
  * scattered) check: a grid equals its rows evaluated as one-row grids, normals and high
  * derivatives do not depend on the batch size, and a digest of all results is printed so that
- * separate runs can be compared (tests/determinism_runs.sh runs the program twice). */
+ * separate runs can be compared (determinism_runs.sh runs the program twice and compares the digest
+ * with the committed value). */
 #include "eval_util.h"
 
 #include <stdint.h>

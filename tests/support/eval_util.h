@@ -122,6 +122,24 @@ static inline double accuracy_bound(const tnet *t, unsigned k, unsigned l)
     return b;
 }
 
+/* The normal of p at one point (into nrm[3]) and its kind. */
+static inline unsigned char normal1(const bs_patch *p, double u, double v, double *nrm)
+{
+    bs_cview cu = cview_of(&u, 1), cv = cview_of(&v, 1);
+    bs_view vn[3];
+    views_of(nrm, 3, 1, vn);
+    unsigned char kind = 99;
+    CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, NULL, vn, &kind), BS_OK);
+    return kind;
+}
+
+/* Euclidean distance of a 3-vector from a long-double one. */
+static inline double dist3(const double *a, const long double *b)
+{
+    long double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
+    return (double)sqrtl(d0 * d0 + d1 * d1 + d2 * d2);
+}
+
 /* Reference unit normal at (u,v) from long-double first derivatives; 0 if S_u x S_v is 0. */
 static inline int ref_normal(const ref_net *r, long double u, long double v, long double *nrm)
 {
