@@ -27,13 +27,14 @@ void bsi_subdiv_free(subdiv *s)
 }
 
 /* Trees, points, vertices and the triangle count. */
-static bs_status prepare(subdiv *sd, const bs_surface *s, double tol, size_t max_tri)
+static bs_status prepare(subdiv *sd, const bs_surface *s, double tol, size_t max_tri, size_t max_vert)
 {
     memset(sd, 0, sizeof(*sd));
     sd->s = s;
     sd->np = bs_surface_count(s);
     sd->tol = tol;
     sd->max_tri = max_tri;
+    sd->max_vert = max_vert;
     bs_status st = bsi_topology_build(s, 1e-9 * bsi_tess_max_abs_coord(s), &sd->topo);
     if (st == BS_OK)
         st = bsi_subdiv_trees(sd);
@@ -49,7 +50,7 @@ static bs_status prepare(subdiv *sd, const bs_surface *s, double tol, size_t max
 bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t *vertices, size_t *triangles)
 {
     subdiv sd;
-    bs_status st = prepare(&sd, s, tol, 0);
+    bs_status st = prepare(&sd, s, tol, 0, 0);
     if (st == BS_OK) {
         if (vertices)
             *vertices = sd.nvert;
@@ -112,8 +113,9 @@ bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t 
     subdiv sd;
     /* 32-bit indices: at most UINT32_MAX / 3 triangles, the limit when there is no budget */
     size_t max_tri = max_triangles && max_triangles < UINT32_MAX / 3 ? max_triangles : UINT32_MAX / 3;
-    bs_status st = prepare(&sd, s, tol, max_tri);
-    if (st == BS_OK && (sd.nvert > UINT32_MAX - 1 || sd.ntri > max_tri || (max_vertices && sd.nvert > max_vertices)))
+    size_t max_vert = max_vertices && max_vertices < UINT32_MAX - 1 ? max_vertices : UINT32_MAX - 1;
+    bs_status st = prepare(&sd, s, tol, max_tri, max_vert);
+    if (st == BS_OK && (sd.nvert > max_vert || sd.ntri > max_tri))
         st = BS_ERR_SIZE;
     tess t;
     memset(&t, 0, sizeof(t));

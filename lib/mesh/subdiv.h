@@ -37,6 +37,8 @@ typedef struct subdiv {
     double tol;
     size_t max_tri;   /* 0, or refuse (BS_ERR_SIZE) as soon as the leaves surely give more triangles */
     size_t tri_lower; /* 2 per leaf that touches no pole and does not span its patch: a lower bound */
+    size_t max_vert;  /* likewise for vertices */
+    size_t vert_lower; /* leaves whose corner (u0,v0) is inside their patch: one vertex each */
     bsi_topology topo;
     /* phase 1: leaves of patch p are leaf[leaf0[p] .. leaf0[p+1]) */
     sd_leaf *leaf;
@@ -57,7 +59,7 @@ typedef struct subdiv {
 } subdiv;
 
 /* Phase 1: the leaves of every patch under tolerance s->tol. BS_ERR_SIZE past 2^31 leaves, or as
- * soon as s->tri_lower exceeds s->max_tri. */
+ * soon as s->tri_lower exceeds s->max_tri or s->vert_lower s->max_vert (when not 0). */
 bs_status bsi_subdiv_trees(subdiv *s);
 /* Phase 2: points, merges and vertex ids of points (s->vid); leaf kinds and centre vertices come
  * from bsi_subdiv_classify. */

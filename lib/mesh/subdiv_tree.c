@@ -189,8 +189,9 @@ static void cheapest_split(const double e[3], double tol, uint32_t fumax, uint32
 static uint32_t first_step(uint32_t f) { return f <= 1 ? 1 : f % 2 == 0 ? 2 : 3; }
 
 /* Keep the leaf. A leaf that touches no collapsed side and does not span its patch has four
- * distinct corner vertices, so it gives at least two triangles: that bounds the count from below,
- * and a triangle budget is refused while the trees are still small. */
+ * distinct corner vertices, so it gives at least two triangles; leaves have distinct corners
+ * (u0,v0), each one vertex when inside the patch. Those bound the counts from below, and budgets
+ * are refused while the trees are still small. */
 static bs_status add_leaf(tree *tr, uint32_t u0, uint32_t u1, uint32_t v0, uint32_t v1)
 {
     subdiv *s = tr->s;
@@ -211,7 +212,9 @@ static bs_status add_leaf(tree *tr, uint32_t u0, uint32_t u1, uint32_t v0, uint3
                (c[BSI_SIDE_U0] && u0 == 0);
     if (!pole && (u0 != 0 || u1 != SD_N) && (v0 != 0 || v1 != SD_N))
         s->tri_lower += 2;
-    return s->max_tri != 0 && s->tri_lower > s->max_tri ? BS_ERR_SIZE : BS_OK;
+    s->vert_lower += u0 != 0 && v0 != 0; /* a point inside a patch is welded to nothing */
+    int over = (s->max_tri != 0 && s->tri_lower > s->max_tri) || (s->max_vert != 0 && s->vert_lower > s->max_vert);
+    return over ? BS_ERR_SIZE : BS_OK;
 }
 
 /* The node over [u0,u1] x [v0,v1] with net `net`: a leaf, or split and its children visited. */

@@ -391,6 +391,10 @@ static void repeat_strips_budgets(void)
     o.tolerance = 1e-12;
     CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_SIZE);
     CHECK(m == NULL);
+    o.max_vertices = 1000; /* the vertices likewise: a point inside a patch is one vertex */
+    o.max_triangles = 0;
+    CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_SIZE);
+    CHECK(m == NULL);
     bs_surface_destroy(s);
 }
 
