@@ -322,6 +322,24 @@ static void rational_and_relative(void)
     add_patch(s, 2, 1, net, w);
     check_surface(s, 1e-3, 0.0, "quarter cylinder");
     bs_surface_destroy(s);
+    /* A spindle: poles at v = 0 and v = 1, and its sides u = 0 and u = 1 one curve (the ring of
+     * the net closes on itself), so a side is shared with the same patch. */
+    static const double loop[4][2] = {{1, 0}, {-0.5, 1.5}, {-0.5, -1.5}, {1, 0}};
+    double spindle[4 * 4 * 3];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double r = (j == 0 || j == 3) ? 0.0 : 1.0, *p = spindle + (i * 4 + j) * 3;
+            p[0] = r * loop[i][0];
+            p[1] = r * loop[i][1];
+            p[2] = j - 1.5;
+        }
+    s = NULL;
+    bs_surface_create(&s);
+    add_patch(s, 3, 3, spindle, NULL);
+    check_surface(s, 10.0, 0.0, "spindle 10"); /* leaves across the seam between poles: no triangle */
+    check_surface(s, 0.3, 0.0, "spindle 0.3");
+    check_surface(s, 1e-3, 0.5, "spindle 1e-3");
+    bs_surface_destroy(s);
     s = bumpy_grid(3, 4, 5); /* neighbours reversed and swapped, curvature growing along x */
     check_surface(s, 1e-3, 0.5, "bumpy grid");
     bs_surface_destroy(s);
