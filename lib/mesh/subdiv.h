@@ -64,12 +64,6 @@ bs_status bsi_subdiv_trees(subdiv *s);
 /* Phase 2: points, merges and vertex ids of points (s->vid); leaf kinds and centre vertices come
  * from bsi_subdiv_classify. */
 bs_status bsi_subdiv_weld(subdiv *s);
-/* Interior points of patch p on the segment from (a0,b) to (a1,b) exclusive (horizontal when
- * along_u, else u = b and v from a0 to a1): [*first, *last) in s->vu (along_u) or s->uv. */
-void bsi_subdiv_side_range(const subdiv *s, size_t p, int along_u, uint32_t b, uint32_t a0, uint32_t a1,
-                           size_t *first, size_t *last);
-/* Global index of point (u,v) of patch p (it must exist). */
-size_t bsi_subdiv_point(const subdiv *s, size_t p, uint32_t u, uint32_t v);
 /* Phase 3a: each leaf's triangulation, the vertex ids of leaf centres (s->nvert), and s->ntri for
  * the leaves whose triangles cannot degenerate. */
 bs_status bsi_subdiv_classify(subdiv *s);
@@ -85,8 +79,5 @@ void bsi_subdiv_free(subdiv *s);
 bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t *vertices, size_t *triangles);
 bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t max_vertices, size_t max_triangles,
                              bs_mesh **out);
-
-/* Sort n 64-bit keys by their bits lo..hi-1 (LSD radix, stable); tmp holds n keys. */
-void bsi_subdiv_sort(uint64_t *a, uint64_t *tmp, size_t n, unsigned lo, unsigned hi);
 
 #endif

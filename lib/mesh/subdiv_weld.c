@@ -17,7 +17,8 @@
 #define IDX_BITS 24 /* a patch has fewer than 2^24 points: at most 1025^2 corners plus its sides */
 #define IDX_MASK ((UINT64_C(1) << IDX_BITS) - 1)
 
-void bsi_subdiv_sort(uint64_t *a, uint64_t *tmp, size_t n, unsigned lo, unsigned hi)
+/* Sort n 64-bit keys by their bits lo..hi-1 (LSD radix, stable); tmp holds n keys. */
+static void sort_keys(uint64_t *a, uint64_t *tmp, size_t n, unsigned lo, unsigned hi)
 {
     uint64_t *src = a, *dst = tmp;
     for (unsigned sh = lo; sh < hi; sh += 11) {
@@ -64,8 +65,10 @@ static size_t lower_bound(const uint64_t *a, size_t n, uint64_t key)
     return lo;
 }
 
-void bsi_subdiv_side_range(const subdiv *s, size_t p, int along_u, uint32_t b, uint32_t a0, uint32_t a1,
-                           size_t *first, size_t *last)
+/* Points of patch p with v = b and u in [a0, a1) (along_u: a range of s->vu), or with u = b and v in
+ * [a0, a1) (a range of s->uv): [*first, *last) within the patch. */
+static void side_range(const subdiv *s, size_t p, int along_u, uint32_t b, uint32_t a0, uint32_t a1, size_t *first,
+                       size_t *last)
 {
     size_t n = s->pt0[p + 1] - s->pt0[p];
     if (along_u) {
@@ -79,12 +82,13 @@ void bsi_subdiv_side_range(const subdiv *s, size_t p, int along_u, uint32_t b, u
     }
 }
 
-size_t bsi_subdiv_point(const subdiv *s, size_t p, uint32_t u, uint32_t v)
+/* Global index of point (u,v) of patch p (it must exist). */
+static size_t point_index(const subdiv *s, size_t p, uint32_t u, uint32_t v)
 {
     return s->pt0[p] + lower_bound(s->uv + s->pt0[p], s->pt0[p + 1] - s->pt0[p], SD_KEY(u, v));
 }
 
-/* Point k of a range found by bsi_subdiv_side_range: its global index. */
+/* Point k of a range found by side_range: its global index. */
 static size_t range_point(const subdiv *s, size_t p, int along_u, size_t k)
 {
     return s->pt0[p] + (along_u ? (size_t)(s->vu[s->pt0[p] + k] & IDX_MASK) : k);
@@ -132,7 +136,7 @@ static bs_status patch_points(subdiv *s, size_t p, uint64_t *keys, uint64_t *tmp
             keys[n++] = SD_KEY(u, v);
         }
     }
-    bsi_subdiv_sort(keys, tmp, n, 0, 2 * SD_BITS);
+    sort_keys(keys, tmp, n, 0, 2 * SD_BITS);
     const uint64_t low = (UINT64_C(1) << (2 * SD_BITS)) - 1;
     uint32_t *corner = s->corner + 4 * s->leaf0[p];
     uint64_t *uv = s->uv + *fill;
@@ -149,7 +153,7 @@ static bs_status patch_points(subdiv *s, size_t p, uint64_t *keys, uint64_t *tmp
         uint64_t a = uv[k] >> SD_BITS, b = uv[k] & ((UINT64_C(1) << SD_BITS) - 1);
         keys[k] = (SD_KEY(b, a) << IDX_BITS) | k;
     }
-    bsi_subdiv_sort(keys, tmp, u, IDX_BITS, IDX_BITS + 2 * SD_BITS);
+    sort_keys(keys, tmp, u, IDX_BITS, IDX_BITS + 2 * SD_BITS);
     memcpy(s->vu + *fill, keys, u * sizeof(uint64_t));
     for (size_t r = 0; r < u; r++)
         s->vupos[*fill + (keys[r] & IDX_MASK)] = (uint32_t)r;
@@ -165,7 +169,7 @@ static void merge_sides(subdiv *s, size_t p)
         int along_u = side == BSI_SIDE_V0 || side == BSI_SIDE_V1;
         uint32_t b = side == BSI_SIDE_U1 || side == BSI_SIDE_V1 ? SD_N : 0;
         size_t first, last;
-        bsi_subdiv_side_range(s, p, along_u, b, 0, SD_N + 1, &first, &last);
+        side_range(s, p, along_u, b, 0, SD_N + 1, &first, &last);
         if (lk->collapsed) {
             for (size_t k = first; k < last; k++)
                 uf_union(s->parent, range_point(s, p, along_u, first), range_point(s, p, along_u, k));
@@ -178,7 +182,7 @@ static void merge_sides(subdiv *s, size_t p)
             uint64_t key = s->uv[g];
             uint32_t t = (uint32_t)(along_u ? key >> SD_BITS : key & ((UINT64_C(1) << SD_BITS) - 1)), u, v;
             side_uv(lk->side, lk->reversed ? SD_N - t : t, &u, &v);
-            uf_union(s->parent, g, bsi_subdiv_point(s, lk->patch, u, v));
+            uf_union(s->parent, g, point_index(s, lk->patch, u, v));
         }
     }
 }

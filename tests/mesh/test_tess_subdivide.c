@@ -1,10 +1,12 @@
-/* Tessellation by subdivision (BS_TESS_SUBDIVIDE): on the tea set, the documented chordal error
- * (21 barycentric points per triangle against the long-double reference) within the tolerance and
- * at least half of it; every edge used twice, or once on an open side of the surface (found by brute
- * force); no T-junction (no corner of a patch's triangles inside an edge of another triangle of
- * that patch, exactly in (u,v); the checker is shown to catch one); no two vertices at the same
- * place; the counts of the documented rule on a parabolic patch (halves and thirds, anisotropic);
- * counts equal to the mesh; the same mesh twice; strips; budgets; a rational patch; every error. */
+/* Tessellation by subdivision (BS_TESS_SUBDIVIDE): on the tea set, a spindle closed on itself
+ * between two poles and a grid of reversed and swapped patches, the documented chordal error (21
+ * barycentric points per triangle against the long-double reference) within the tolerance and at
+ * least half of it; every edge used twice, or once on an open side of the surface (found by brute
+ * force: across shared sides this also finds T-junctions); no T-junction inside a patch (no corner
+ * of a patch's triangles inside an edge of another triangle of that patch, exactly in (u,v); the
+ * checker is shown to catch one); no two vertices at the same place; the counts of the documented
+ * rule on a parabolic patch (halves and thirds, one direction only); counts equal to the mesh; the
+ * same mesh twice; strips; budgets; a rational patch; every error. */
 #include "harness.h"
 #include "bpt_reader.h"
 #include "mesh_data.h"
