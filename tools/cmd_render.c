@@ -28,7 +28,7 @@ static const char usage[] =
     "                        the four sub-nets are drawn)\n"
     "      --ss N            supersampling per axis, 1..4 (default 3)\n"
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
-    "                        (default 2000000, about 0.2 GB of memory; 0: no limit)\n"
+    "                        (default 4000000, about 0.5 GB of memory; 0: no limit)\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";

@@ -89,9 +89,10 @@ int cli_fail_write(const char *cmd, const char *path);
 /* Print x with the fewest of 15, 16, 17 significant digits that read back exactly. */
 void cli_print_double(double x);
 /* ---- triangle budget of tessellate and render (tools/budget.c) ---- */
-/* Default budgets: tessellate about 0.5 GB of memory at its peak, render about 0.2 GB. */
+/* Default budgets: tessellate about 0.5 GB of memory at its peak, render about 0.5 GB (and at
+ * least one patch at the largest rate, 2 x 1024^2 triangles). */
 #define CLI_TESSELLATE_MAX_TRIANGLES ((size_t)10000000)
-#define CLI_RENDER_MAX_TRIANGLES ((size_t)2000000)
+#define CLI_RENDER_MAX_TRIANGLES ((size_t)4000000)
 /* Parse the value of --max-triangles (0: no budget); CLI_OK, or CLI_USAGE after the message. */
 int cli_parse_budget(const char *cmd, const char *val, size_t *budget);
 /* Parse the value of --method: "per-patch" or "subdivide" (BS_TESS_PER_PATCH, BS_TESS_SUBDIVIDE);

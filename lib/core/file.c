@@ -92,6 +92,24 @@ bs_status bsi_out_open(const char *path, bsi_out_file *o)
     return BS_OK;
 }
 
+/* Make a rename in the directory of tmp durable: fsync the directory (best effort: some file
+ * systems refuse, and the data is already safe; the new name is what a crash could lose). tmp is
+ * cut to its directory, so nothing is allocated. */
+static void sync_dir(char *tmp)
+{
+    char *slash = strrchr(tmp, '/');
+    const char *dir = ".";
+    if (slash != NULL) {
+        slash[1] = '\0';
+        dir = tmp;
+    }
+    int fd = open(dir, O_RDONLY);
+    if (fd >= 0) {
+        (void)fsync(fd);
+        (void)close(fd);
+    }
+}
+
 bs_status bsi_out_close(bsi_out_file *o, int ok)
 {
     int e = ok ? 0 : (errno ? errno : EIO);
@@ -107,6 +125,8 @@ bs_status bsi_out_close(bsi_out_file *o, int ok)
         ok = 0, e = errno;
     if (!ok)
         (void)unlink(o->tmp);
+    else
+        sync_dir(o->tmp);
     free(o->tmp);
     o->tmp = NULL;
     if (!ok)

@@ -53,11 +53,11 @@ awk 'BEGIN {
 expect 2 "degree-64 file refused" -- sh -c "$cap" capped "$tool" tessellate -o "$work/deg64.obj" "$work/deg64.bpt"
 has err "16777216 triangles, more than the budget of 10000000" "degree-64 count"
 expect 2 "degree-64 render refused" -- sh -c "$cap" capped "$tool" render -o "$work/deg64.png" "$work/deg64.bpt"
-has err "16777216 triangles, more than the budget of 2000000" "degree-64 render count"
+has err "16777216 triangles, more than the budget of 4000000" "degree-64 render count"
 
-# render: default 2,000,000
+# render: default 4,000,000
 expect 2 "render tolerance 1e-300 refused" -- sh -c "$cap" capped "$tool" render -r 1e-300 -o "$work/big.png"
-has err "67100672 triangles, more than the budget of 2000000" "render refusal"
+has err "67100672 triangles, more than the budget of 4000000" "render refusal"
 check "[ ! -e '$work/big.png' ]" "no picture when refused"
 expect 2 "render under a small budget" -- "$tool" render --size 32x32 --ss 1 --max-triangles 100 -o "$work/s.png"
 expect 0 "render with a budget it fits" -- "$tool" render --size 32x32 --ss 1 -r 0.01 --max-triangles 0 -o "$work/s.png"

@@ -246,6 +246,42 @@ static void test_flipped_edges(void)
     CHECK(pair_edges(la, lb, 5, e) >= 1 && e[0].samples == 0 && e[0].flipped == 0);
 }
 
+/* Sides whose control points differ by up to 2 ulps of the largest coordinate are one edge under a
+ * tolerance of 2 ulps (random coordinates of mixed magnitudes, so the keys that sort the sides
+ * round differently). */
+static void test_ulp_tolerance(void)
+{
+    unsigned long long seed = 99;
+    int missed = 0;
+    for (int k = 0; k < 4000; k++) {
+        double a[12], b[12], big = 0.0;
+        for (int i = 0; i < 12; i++) {
+            a[i] = bs_test_rand(&seed, -1.0, 1.0) * ldexp(1.0, (int)(bs_test_rand_u64(&seed) % 8));
+            big = fmax(big, fabs(a[i]));
+        }
+        /* B's side u = 0 is A's side u = 1, each coordinate moved by up to 2 ulps of |A| */
+        for (int i = 0; i < 6; i++) {
+            double x = a[6 + i];
+            int steps = (int)(bs_test_rand_u64(&seed) % 5) - 2;
+            for (; steps > 0; steps--)
+                x = nextafter(x, INFINITY);
+            for (; steps < 0; steps++)
+                x = nextafter(x, -INFINITY);
+            b[i] = x;
+            b[6 + i] = a[6 + i] + 3.0;
+        }
+        double tol = 2.0 * (nextafter(big, INFINITY) - big);
+        bs_edge_continuity e[4];
+        size_t ne = 0, no = 0, deg[4] = {1, 1, 1, 1};
+        const double *nets[2] = {a, b};
+        bs_surface *s = surface_of(2, deg, nets);
+        CHECK_STATUS(bs_surface_continuity(s, tol, 2, e, 4, &ne, NULL, 0, &no), BS_OK);
+        missed += ne == 0;
+        bs_surface_destroy(s);
+    }
+    CHECKF(missed == 0, "%d of 4000 edges within a few ulps not matched", missed);
+}
+
 /* The frozen layout documented in docs/continuity.md (bindings rely on it). */
 static void test_layout(void)
 {
@@ -268,5 +304,6 @@ int main(void)
     test_pole();
     test_twist();
     test_flipped_edges();
+    test_ulp_tolerance();
     return bs_test_exit("test_continuity");
 }

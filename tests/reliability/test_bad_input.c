@@ -83,7 +83,7 @@ static int handles_ok(void)
 }
 
 /* The matrix: distinct functions and classes seen, and cases run. */
-static const char *fn_seen[64], *cls_seen[64];
+static const char *fn_seen[128], *cls_seen[128];
 static int n_fn, n_cls, n_cases;
 
 static void note(const char **seen, int *count, const char *name)
@@ -91,7 +91,7 @@ static void note(const char **seen, int *count, const char *name)
     for (int k = 0; k < *count; k++)
         if (strcmp(seen[k], name) == 0)
             return;
-    if (*count < 64)
+    if (*count < 128)
         seen[(*count)++] = name;
 }
 
@@ -577,6 +577,45 @@ static void test_meshes(void)
     for (int k = 0; k < 5; k++)
         MESH_BAD("bs_surface_tessellate_adaptive", "NaN/Inf parameters", BS_ERR_DOMAIN,
                  bs_surface_tessellate_adaptive(S3, bad_tol[k], BS_TESS_RELATIVE, &hm));
+    /* 1.1: options, budgets and counts; the counts are written only on success */
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    bs_tess_options_init(NULL);
+    note(fn_seen, &n_fn, "bs_tess_options_init");
+    size_t cv = 77, ct = 77;
+    MESH_BAD("bs_surface_tessellate", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_tessellate(NULL, &o, &hm));
+    MESH_BAD("bs_surface_tessellate", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_tessellate(S3, NULL, &hm));
+    BAD("bs_surface_tessellate", "NULL handle", BS_ERR_INVALID_ARG, bs_surface_tessellate(S3, &o, NULL));
+    BAD("bs_surface_tessellate_count", "NULL handle", BS_ERR_INVALID_ARG,
+        bs_surface_tessellate_count(NULL, &o, &cv, &ct));
+    MESH_BAD("bs_surface_tessellate", "dim out of range", BS_ERR_DIMENSION, bs_surface_tessellate(S2, &o, &hm));
+    BAD("bs_surface_tessellate_count", "dim out of range", BS_ERR_DIMENSION,
+        bs_surface_tessellate_count(S2, &o, &cv, &ct));
+    o.flags = 64;
+    MESH_BAD("bs_surface_tessellate", "bad flags", BS_ERR_INVALID_ARG, bs_surface_tessellate(S3, &o, &hm));
+    BAD("bs_surface_tessellate_count", "bad flags", BS_ERR_INVALID_ARG, bs_surface_tessellate_count(S3, &o, &cv, &ct));
+    bs_tess_options_init(&o);
+    o.method = 99;
+    MESH_BAD("bs_surface_tessellate", "bad direction/flags", BS_ERR_INVALID_ARG, bs_surface_tessellate(S3, &o, &hm));
+    bs_tess_options_init(&o);
+    o.size = sizeof o / 2;
+    MESH_BAD("bs_surface_tessellate", "count too small", BS_ERR_INVALID_ARG, bs_surface_tessellate(S3, &o, &hm));
+    bs_tess_options_init(&o);
+    o.nu = BS_TESS_MAX_RATE + 1;
+    MESH_BAD("bs_surface_tessellate", "rate > max", BS_ERR_DOMAIN, bs_surface_tessellate(S3, &o, &hm));
+    BAD("bs_surface_tessellate_count", "rate > max", BS_ERR_DOMAIN, bs_surface_tessellate_count(S3, &o, &cv, &ct));
+    bs_tess_options_init(&o);
+    o.method = BS_TESS_PER_PATCH;
+    for (int k = 0; k < 5; k++) {
+        o.tolerance = bad_tol[k];
+        MESH_BAD("bs_surface_tessellate", "NaN/Inf parameters", BS_ERR_DOMAIN, bs_surface_tessellate(S3, &o, &hm));
+        BAD("bs_surface_tessellate_count", "NaN/Inf parameters", BS_ERR_DOMAIN,
+            bs_surface_tessellate_count(S3, &o, &cv, &ct));
+    }
+    bs_tess_options_init(&o);
+    o.max_triangles = 1;
+    MESH_BAD("bs_surface_tessellate", "over budget", BS_ERR_SIZE, bs_surface_tessellate(S3, &o, &hm));
+    CHECK(cv == 77 && ct == 77);
     uint32_t ids[N + 2 * SLACK];
     memset(ids, 0x5C, sizeof ids);
     size_t nvtx = bs_mesh_vertex_count(m);
