@@ -153,6 +153,32 @@ static void test_teaset(void)
     }
 }
 
+/* The tea set's figures of docs/continuity.md (tol 1e-9, 32 samples), asserted: shared and open
+ * edges, the largest G1 angle to its printed digits, the C1 edges. */
+static void test_teaset_figures(void)
+{
+    static const struct { const char *name; size_t shared, open, c1; double degrees, half_digit; } fig[] = {
+        {"teapot", 52, 16, 46, 2.1e-13, 0.05e-13}, {"teacup", 46, 12, 26, 59.04, 0.005},
+        {"teaspoon", 28, 8, 0, 0.0244, 0.00005}};
+    for (size_t f = 0; f < 3; f++) {
+        bs_surface *s;
+        CHECK_STATUS(bs_surface_create_builtin(fig[f].name, &s), BS_OK);
+        bs_edge_continuity e[64];
+        size_t ne = 0, no = 0, c1 = 0;
+        CHECK_STATUS(bs_surface_continuity(s, 1e-9, 32, e, 64, &ne, NULL, 0, &no), BS_OK);
+        double g1 = 0.0;
+        for (size_t k = 0; k < ne && k < 64; k++) {
+            g1 = fmax(g1, e[k].g1_angle * 180.0 / acos(-1.0));
+            c1 += (size_t)e[k].c1;
+        }
+        CHECKF(ne == fig[f].shared && no == fig[f].open && c1 == fig[f].c1, "%s: %zu shared, %zu open, %zu C1",
+               fig[f].name, ne, no, c1);
+        CHECKF(fabs(g1 - fig[f].degrees) <= fig[f].half_digit, "%s: largest G1 angle %.4g degrees",
+               fig[f].name, g1);
+        bs_surface_destroy(s);
+    }
+}
+
 static void test_errors(void)
 {
     bs_surface *s;
@@ -300,6 +326,7 @@ int main(void)
     test_fold(2.5); /* beyond 90 degrees: the tangent planes meet at pi - theta */
     test_split();
     test_teaset();
+    test_teaset_figures();
     test_errors();
     test_pole();
     test_twist();

@@ -6,6 +6,10 @@
  * weight ratio wmax / w(u,v). */
 #include "eval_util.h"
 
+#ifndef BS_DATA_DIR
+#define BS_DATA_DIR "data"
+#endif
+
 #define TAU 0x1p-30
 
 /* The rounding bound of S^(a,b) the zero tests use, with r = wmax / w(u,v):
@@ -177,10 +181,45 @@ static void thresholds_pinned(void)
     bs_patch_destroy(p);
 }
 
+/* Scaling a net by a power of two scales S_u and S_v exactly, so the normals and their kinds are
+ * those of the unscaled net (within 8 ulps), also where the square of |S_u x S_v| is subnormal
+ * (nets scaled by 2^-266: |S_u x S_v| near 2^-527) or overflows (2^+255): lengths are taken with a
+ * rescaling there, not from a square that lost its bits. The teapot's 32 patches. */
+static void scaled_nets(void)
+{
+    static double ctrl[32][48];
+    size_t np = load_bpt(BS_DATA_DIR "/teapot.bpt", ctrl, 32);
+    CHECK(np == 32);
+    static const int powers[] = {-266, 255};
+    int differ = 0;
+    for (size_t k = 0; k < np; k++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl[k], NULL, &p), BS_OK);
+        for (int e = 0; e < 2; e++) {
+            double net[48];
+            for (int i = 0; i < 48; i++)
+                net[i] = ldexp(ctrl[k][i], powers[e]);
+            bs_patch *q = NULL;
+            CHECK_STATUS(bs_patch_create(3, 3, 3, net, NULL, &q), BS_OK);
+            for (int a = 0; a <= 4; a++)
+                for (int b = 0; b <= 4; b++) {
+                    double n1[3], n2[3];
+                    unsigned char k1 = normal1(p, a / 4.0, b / 4.0, n1), k2 = normal1(q, a / 4.0, b / 4.0, n2);
+                    long double ref[3] = {n1[0], n1[1], n1[2]};
+                    differ += k1 != k2 || !(dist3(n2, ref) <= 8 * EPS);
+                }
+            bs_patch_destroy(q);
+        }
+        bs_patch_destroy(p);
+    }
+    CHECKF(differ == 0, "%d normals of scaled teapot patches differ from the unscaled ones", differ);
+}
+
 int main(void)
 {
     rounding_bound();
     pole_with_far_weights();
     thresholds_pinned();
+    scaled_nets();
     return bs_test_exit("test_normal_thresholds");
 }
