@@ -8,7 +8,7 @@ Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hod
 :class:`Surface` (an ordered set of patches: evaluation, .bpt files, the built-in tea set,
 continuity, tessellation), :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export) and
 :class:`BSpline` (a B-spline or NURBS surface, cut into Bezier patches by
-:meth:`Surface.add_bspline`).
+:meth:`Surface.add_bspline`) and :class:`Locator` (closest points and rays on a surface).
 Errors are :class:`BezsurfError` subclasses; wrong argument types raise TypeError and bad
 values ValueError, naming the argument. numpy is optional: whenever it is importable, results
 are numpy arrays written in place by the library (float arrays in Fortran order, the library's
@@ -20,13 +20,14 @@ from ._errors import (BezsurfError, BezsurfFileNotFoundError, BezsurfIOError,
                       DegreeError, DimensionError, DomainError, IncompatibleError,
                       InvalidArgumentError, NoMemoryError, NonFiniteError, ParseError, SizeError,
                       UnsupportedError)
-from ._enums import CurvatureKind, Direction, Format, NormalKind, Side
+from ._enums import CurvatureKind, Direction, Format, NormalKind, Side, TessMethod
 from ._lib import LIB as _LIB
 from ._buffers import have_numpy
 from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED, Curvature,
                     Curve, Evaluation, Patch)
 from .mesh import Mesh
 from .bspline import BSpline
+from .query import NO_PATCH, ClosestPoints, Locator, RayHits
 from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
                       Surface, builtin_names)
 
@@ -63,7 +64,8 @@ def library_path() -> str:
 
 
 __all__ = [
-    "Patch", "Surface", "Mesh", "BSpline", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
+    "Patch", "Surface", "Mesh", "BSpline", "Locator", "ClosestPoints", "RayHits", "NO_PATCH",
+    "TessMethod", "Evaluation", "Curve", "Continuity", "EdgeContinuity", "OpenEdge",
     "Direction", "NormalKind", "Format", "Side", "CurvatureKind", "Curvature",
     "SIDE_V0", "SIDE_U1", "SIDE_V1", "SIDE_U0",
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",

@@ -147,6 +147,61 @@ def doubles(x: Any, what: str) -> Doubles:
     return _packed(x, what)
 
 
+class PointsIn:
+    """n input points of k coordinates as k strided views (zero-copy for numpy arrays).
+
+    Accepts an array of shape (n, k) or (k,) (one point: ``scalar``), or a sequence of n
+    sequences of k real numbers (copied once, packed by coordinate).
+    """
+
+    __slots__ = ("n", "views", "keep", "scalar")
+
+    def __init__(self, x: Any, k: int, what: str) -> None:
+        views = (CView * k)()
+        if is_ndarray(x):
+            try:
+                a = np.asarray(x, dtype=np.float64)
+            except (TypeError, ValueError) as exc:
+                raise TypeError(f"{what} must hold real numbers, not {x.dtype}") from exc
+            self.scalar = a.ndim == 1
+            if self.scalar:
+                a = a.reshape(1, -1)
+            if a.ndim != 2 or a.shape[1] != k:
+                raise ValueError(f"{what} must have shape (n, {k}) or ({k},), got {np.shape(x)}")
+            # Zero strides mean "packed" to the library, and the library needs aligned doubles.
+            if (a.strides[0] == 0 and a.shape[0] > 1) or (a.strides[1] == 0 and k > 1) \
+                    or not a.flags.aligned:
+                a = np.array(a, dtype=np.float64, copy=True)
+            base = int(a.ctypes.data)
+            for c in range(k):
+                views[c] = CView(base + c * a.strides[1], a.shape[0], a.strides[0])
+            self.n = int(a.shape[0])
+            self.keep: Any = a
+        else:
+            if isinstance(x, (str, bytes)) or not isinstance(x, Iterable):
+                raise TypeError(f"{what} must be a sequence of points, not {type_name(x)}")
+            rows = list(x)
+            self.scalar = bool(rows) and all(isinstance(c, numbers.Real) for c in rows)
+            if self.scalar:
+                rows = [rows]
+            cols: List["array.array[float]"] = []
+            for c in range(k):
+                try:
+                    col = array.array("d", (float(r[c]) for r in rows))
+                except (TypeError, IndexError) as exc:
+                    raise TypeError(f"{what} must be a sequence of points of {k} real numbers "
+                                    f"({exc})") from None
+                cols.append(col if col else array.array("d", [0.0]))
+            for row in rows:
+                if len(row) != k:
+                    raise ValueError(f"{what} must hold points of {k} coordinates, got {len(row)}")
+            for c in range(k):
+                views[c] = CView(cols[c].buffer_info()[0], len(rows), _DOUBLE)
+            self.n = len(rows)
+            self.keep = cols
+        self.views = views
+
+
 class Output:
     """An (n, k) double result the library writes through k views."""
 

@@ -35,6 +35,14 @@ class Format(IntEnum):
     STL = 3         #: binary STL
 
 
+class TessMethod(IntEnum):
+    """Tessellation methods of bs_tess_options (BS_TESS_UNIFORM ..., since 1.1)."""
+
+    UNIFORM = 0     #: nu x nv segments per patch
+    PER_PATCH = 1   #: one segment count per patch and direction from a curvature bound
+    SUBDIVIDE = 2   #: a quadtree of sub-patches, refined where the surface curves
+
+
 class Side(IntEnum):
     """The sides of a patch's unit square (BS_SIDE_*), counter-clockwise."""
 

@@ -77,6 +77,14 @@ class COpenEdge(ctypes.Structure):
     _fields_ = [("patch", c_uint32), ("side", c_int)]
 
 
+class CTessOptions(ctypes.Structure):
+    """``bs_tess_options``: how bs_surface_tessellate() meshes (since 1.1; first field its size)."""
+
+    _fields_ = [("size", c_size_t), ("method", c_int), ("flags", c_int), ("nu", c_size_t),
+                ("nv", c_size_t), ("tolerance", c_double), ("max_vertices", c_size_t),
+                ("max_triangles", c_size_t)]
+
+
 class _Status:
     """Marks a function returning ``bs_status``: negative results raise through errcheck."""
 
@@ -146,12 +154,23 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
                            POINTER(c_double)), STATUS),
     # query.h (1.1): curvature
     ("bs_patch_eval_curvature", (HANDLE, c_size_t, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS, BYTES), STATUS),
+    # query.h (1.1): closest points and the locator
+    ("bs_patch_closest_point", (HANDLE, c_size_t, CVIEW, VIEWS, VIEWS, VIEWS), STATUS),
+    ("bs_locator_create", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_locator_destroy", (HANDLE,), None),
+    ("bs_locator_dim", (HANDLE,), c_size_t),
+    ("bs_locator_closest_point", (HANDLE, c_size_t, CVIEW, IDS, VIEWS, VIEWS, VIEWS), STATUS),
+    ("bs_locator_intersect", (HANDLE, c_size_t, CVIEW, CVIEW, CVIEW, IDS, VIEWS, VIEWS, VIEWS),
+     STATUS),
     # continuity.h
     ("bs_surface_continuity", (HANDLE, c_double, c_size_t, POINTER(CEdgeContinuity), c_size_t,
                                SIZE_OUT, POINTER(COpenEdge), c_size_t, SIZE_OUT), STATUS),
     # mesh.h: tessellation, mesh read-back and export
     ("bs_surface_tessellate_uniform", (HANDLE, c_size_t, c_size_t, c_int, HANDLE_OUT), STATUS),
     ("bs_surface_tessellate_adaptive", (HANDLE, c_double, c_int, HANDLE_OUT), STATUS),
+    ("bs_tess_options_init", (POINTER(CTessOptions),), None),
+    ("bs_surface_tessellate", (HANDLE, POINTER(CTessOptions), HANDLE_OUT), STATUS),
+    ("bs_surface_tessellate_count", (HANDLE, POINTER(CTessOptions), SIZE_OUT, SIZE_OUT), STATUS),
     ("bs_mesh_destroy", (HANDLE,), None),
     ("bs_mesh_vertex_count", (HANDLE,), c_size_t),
     ("bs_mesh_triangle_count", (HANDLE,), c_size_t),
@@ -306,5 +325,5 @@ def load() -> Library:
 
 LIB = load()
 
-__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "CTessOptions", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
            "error_for", "c_double", "c_ubyte", "c_uint32"]

@@ -10,7 +10,7 @@ from ._buffers import IdRows, Ids, Points
 from ._enums import Format
 from ._errors import BezsurfIOError, io_error
 from ._handle import Handle
-from ._lib import LIB
+from ._lib import LIB, CTessOptions
 
 if TYPE_CHECKING:
     import numpy.typing as npt
@@ -22,6 +22,16 @@ FORMATS = {f.name.lower(): f for f in Format}
 
 FormatArg = Union[Format, int, str]
 OutArray = Optional["npt.NDArray[Any]"]
+
+
+def tess_options(method: int, flags: int, nu: int, nv: int, tolerance: float,
+                 max_vertices: int, max_triangles: int) -> CTessOptions:
+    """A ``bs_tess_options`` filled by the library's defaults, then with these values."""
+    o = CTessOptions()
+    LIB.bs_tess_options_init(ctypes.byref(o))
+    o.method, o.flags, o.nu, o.nv = method, flags, nu, nv
+    o.tolerance, o.max_vertices, o.max_triangles = tolerance, max_vertices, max_triangles
+    return o
 
 
 class Mesh(Handle):
@@ -53,6 +63,9 @@ class Mesh(Handle):
             LIB.bs_surface_tessellate_uniform(surface._ptr, *args, ctypes.byref(out))
         elif method == "adaptive":
             LIB.bs_surface_tessellate_adaptive(surface._ptr, *args, ctypes.byref(out))
+        elif method == "options":
+            LIB.bs_surface_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
+                                      ctypes.byref(out))
         else:
             raise ValueError(f"unknown tessellation method {method!r}")
         m = cls.__new__(cls)

@@ -9,12 +9,13 @@ from typing import (Any, Dict, Iterable, Iterator, List, Literal, NamedTuple, Op
 from . import _args as A
 from . import _buffers as B
 from ._buffers import Point, PointOrPoints, Points
-from ._enums import SIDES, Side
+from ._enums import SIDES, Side, TessMethod
 from ._errors import BezsurfError, BezsurfIOError, ParseError, UnsupportedError, io_error
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
-from .mesh import Mesh
+from .mesh import Mesh, tess_options
+from .query import Locator
 from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
 
 #: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
@@ -408,20 +409,62 @@ class Surface(Handle):
             [OpenEdge(o.patch, SIDES[o.side]) for o in opens[: n_open.value]])
 
     # ---- tessellation --------------------------------------------------------------------------
-    def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False) -> Mesh:
+    def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False,
+                   max_vertices: int = 0, max_triangles: int = 0) -> Mesh:
         """A crack-free triangle mesh with nu x nv segments per patch (nv defaults to nu);
-        ``strips`` also builds triangle strips."""
-        nu = A.integer(nu, "nu")
-        nv = nu if nv is None else A.integer(nv, "nv")
-        return Mesh._tessellate(self.clone(), "uniform", (nu, nv, 2 if strips else 0))
+        ``strips`` also builds triangle strips. ``max_vertices`` and ``max_triangles`` (0: no
+        limit) are budgets: a larger mesh raises SizeError before anything large is allocated."""
+        args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, max_vertices,
+                               max_triangles)
+        if not (max_vertices or max_triangles):
+            return Mesh._tessellate(self.clone(), "uniform", (args[2], args[3], args[1]))
+        return Mesh._tessellate(self.clone(), "options", args)
 
     def tessellate_adaptive(self, tolerance: float, *, relative: bool = False,
-                            strips: bool = False) -> Mesh:
+                            strips: bool = False, subdivide: bool = False,
+                            max_vertices: int = 0, max_triangles: int = 0) -> Mesh:
         """A crack-free mesh whose triangles lie within ``tolerance`` of the surface (a distance,
-        or with ``relative`` a fraction of the control points' bounding-box diagonal)."""
-        tolerance = A.real(tolerance, "tolerance")
+        or with ``relative`` a fraction of the control points' bounding-box diagonal). One
+        segment count per patch, or with ``subdivide`` a quadtree of sub-patches refined only
+        where the surface curves (since 1.1). Budgets as in :meth:`tessellate`."""
+        method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
+        args = self._tess_args(method, 16, 16, tolerance, relative, strips, max_vertices,
+                               max_triangles)
+        if method == TessMethod.PER_PATCH and not (max_vertices or max_triangles):
+            return Mesh._tessellate(self.clone(), "adaptive", (args[4], args[1]))
+        return Mesh._tessellate(self.clone(), "options", args)
+
+    def tessellate_count(self, nu: Optional[int] = None, nv: Optional[int] = None, *,
+                         tolerance: Optional[float] = None, relative: bool = False,
+                         strips: bool = False, subdivide: bool = False) -> Tuple[int, int]:
+        """(vertices, triangles) of the mesh :meth:`tessellate` (nu, nv) or
+        :meth:`tessellate_adaptive` (tolerance) would make, computed without building it."""
+        if (nu is None) == (tolerance is None):
+            raise ValueError("give either nu (uniform) or tolerance (adaptive)")
+        if nu is not None:
+            args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, 0, 0)
+        else:
+            method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
+            args = self._tess_args(method, 16, 16, tolerance, relative, strips, 0, 0)
+        nverts = ctypes.c_size_t()
+        ntris = ctypes.c_size_t()
+        LIB.bs_surface_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
+                                        ctypes.byref(nverts), ctypes.byref(ntris))
+        return int(nverts.value), int(ntris.value)
+
+    @staticmethod
+    def _tess_args(method: int, nu: Any, nv: Any, tolerance: Any, relative: bool, strips: bool,
+                   max_vertices: Any, max_triangles: Any) -> Tuple[Any, ...]:
+        """The checked fields of a bs_tess_options, in the order tess_options() takes them."""
+        nu = A.integer(nu, "nu")
+        nv = nu if nv is None else A.integer(nv, "nv")
         flags = (1 if relative else 0) | (2 if strips else 0)
-        return Mesh._tessellate(self.clone(), "adaptive", (tolerance, flags))
+        return (int(method), flags, nu, nv, A.real(tolerance, "tolerance"),
+                A.integer(max_vertices, "max_vertices"), A.integer(max_triangles, "max_triangles"))
+
+    def locator(self) -> "Locator":
+        """A :class:`Locator` for closest points and rays on this surface (since 1.1)."""
+        return Locator(self)
 
     def __repr__(self) -> str:
         if self.closed:

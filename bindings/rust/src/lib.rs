@@ -25,7 +25,7 @@
 //! ```
 //!
 //! Threads: patches and meshes are immutable and the library has no mutable global state, so
-//! `Patch`, `&PatchRef`, `Surface` and `Mesh` are `Send + Sync` and may be used from any number
+//! `Patch`, `&PatchRef`, `Surface`, `Mesh` and `Locator` are `Send + Sync` and may be used from any number
 //! of threads at once (only `Surface::add` needs `&mut`). Lifetimes: a patch borrowed from a surface is a
 //! `&PatchRef` that cannot outlive the surface.
 
@@ -40,6 +40,7 @@ mod continuity;
 mod error;
 mod eval;
 mod io;
+mod locator;
 mod mesh;
 mod ops;
 mod patch;
@@ -53,10 +54,11 @@ pub use continuity::{Continuity, EdgeContinuity, OpenEdge, Side};
 pub use error::{status_string, Error, ErrorKind, Result};
 pub use eval::{NormalKind, Outputs};
 pub use io::builtin_names;
-pub use mesh::{Mesh, MeshFormat, TessFlags, TESS_MAX_RATE};
+pub use locator::{Hit, Locator, Ray};
+pub use mesh::{Mesh, MeshFormat, TessFlags, TessMethod, TessOptions, TESS_MAX_RATE};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
-pub use query::{Curvature, CurvatureKind};
+pub use query::{ClosestPoints, Curvature, CurvatureKind};
 pub use strided::{PointsMut, Strided, StridedIter, StridedMut};
 pub use surface::{Iter, Surface};
 

@@ -51,6 +51,102 @@ impl BitOr for TessFlags {
     }
 }
 
+/// How [`Surface::tessellate`] meshes each patch (`BS_TESS_*` methods, since 1.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum TessMethod {
+    /// `nu` x `nv` segments per patch, as [`Surface::tessellate_uniform`].
+    Uniform {
+        /// Segments along u per patch.
+        nu: usize,
+        /// Segments along v per patch.
+        nv: usize,
+    },
+    /// One segment count per patch and direction from a curvature bound, as
+    /// [`Surface::tessellate_adaptive`], within the options' tolerance.
+    PerPatch,
+    /// A quadtree of sub-patches per patch, refined only where the surface curves, within the
+    /// options' tolerance.
+    Subdivide,
+}
+
+/// Options of [`Surface::tessellate`] and [`Surface::tessellate_count`] (`bs_tess_options`).
+///
+/// ```
+/// use bezsurf::{Surface, TessMethod, TessOptions};
+///
+/// let pot = Surface::builtin("teapot")?;
+/// let opts = TessOptions::new(TessMethod::Uniform { nu: 8, nv: 8 });
+/// let (vertices, triangles) = pot.tessellate_count(&opts)?;
+/// let mesh = pot.tessellate(&opts.max_vertices(vertices))?;
+/// assert_eq!((mesh.vertex_count(), mesh.triangle_count()), (vertices, triangles));
+/// assert!(pot.tessellate(&opts.max_vertices(vertices - 1)).is_err());
+/// # Ok::<(), bezsurf::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TessOptions {
+    method: TessMethod,
+    flags: TessFlags,
+    tolerance: f64,
+    max_vertices: usize,
+    max_triangles: usize,
+}
+
+impl TessOptions {
+    /// Options for `method` with no flags, tolerance 1e-3 and no budget.
+    pub fn new(method: TessMethod) -> TessOptions {
+        TessOptions { method, flags: TessFlags::NONE, tolerance: 1e-3, max_vertices: 0, max_triangles: 0 }
+    }
+
+    /// The tolerance of the adaptive methods (with [`TessFlags::RELATIVE`], a fraction of the
+    /// control points' bounding-box diagonal).
+    pub fn tolerance(mut self, tolerance: f64) -> TessOptions {
+        self.tolerance = tolerance;
+        self
+    }
+
+    /// [`TessFlags::RELATIVE`] and/or [`TessFlags::STRIPS`].
+    pub fn flags(mut self, flags: TessFlags) -> TessOptions {
+        self.flags = flags;
+        self
+    }
+
+    /// A budget: a mesh with more vertices is `Size`, refused before anything large is
+    /// allocated (0: only the 32-bit index limit).
+    pub fn max_vertices(mut self, n: usize) -> TessOptions {
+        self.max_vertices = n;
+        self
+    }
+
+    /// A budget on triangles, as [`TessOptions::max_vertices`].
+    pub fn max_triangles(mut self, n: usize) -> TessOptions {
+        self.max_triangles = n;
+        self
+    }
+
+    fn raw(&self) -> sys::bs_tess_options {
+        let mut o = std::mem::MaybeUninit::<sys::bs_tess_options>::uninit();
+        // SAFETY: the library fills every field of the struct it is given.
+        let mut o = unsafe {
+            sys::bs_tess_options_init(o.as_mut_ptr());
+            o.assume_init()
+        };
+        match self.method {
+            TessMethod::Uniform { nu, nv } => {
+                o.method = sys::BS_TESS_UNIFORM;
+                o.nu = nu;
+                o.nv = nv;
+            }
+            TessMethod::PerPatch => o.method = sys::BS_TESS_PER_PATCH,
+            TessMethod::Subdivide => o.method = sys::BS_TESS_SUBDIVIDE,
+        }
+        o.flags = self.flags.0;
+        o.tolerance = self.tolerance;
+        o.max_vertices = self.max_vertices;
+        o.max_triangles = self.max_triangles;
+        o
+    }
+}
+
 /// Largest number of segments per patch and direction (`BS_TESS_MAX_RATE`).
 pub const TESS_MAX_RATE: usize = sys::BS_TESS_MAX_RATE;
 
@@ -173,6 +269,26 @@ impl Surface {
     pub fn tessellate_adaptive(&self, tolerance: f64, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_adaptive(self.as_ptr(), tolerance, flags.0, out) })
+    }
+}
+
+impl Surface {
+    /// Tessellates a 3-D surface as `options` say (`bs_surface_tessellate`, since 1.1). Errors as
+    /// the other tessellators, and `Size` when the mesh would exceed a budget of the options.
+    pub fn tessellate(&self, options: &TessOptions) -> Result<Mesh> {
+        let o = options.raw();
+        // SAFETY: self is live; o is a filled options struct; out is valid.
+        new_mesh(|out| unsafe { sys::bs_surface_tessellate(self.as_ptr(), &o, out) })
+    }
+
+    /// The (vertices, triangles) [`Surface::tessellate`] would give with `options`, computed
+    /// without building the mesh (`bs_surface_tessellate_count`; budgets are not applied).
+    pub fn tessellate_count(&self, options: &TessOptions) -> Result<(usize, usize)> {
+        let o = options.raw();
+        let (mut nv, mut nt) = (0usize, 0usize);
+        // SAFETY: self is live; o is a filled options struct; both outputs are valid.
+        check(unsafe { sys::bs_surface_tessellate_count(self.as_ptr(), &o, &mut nv, &mut nt) })?;
+        Ok((nv, nt))
     }
 }
 

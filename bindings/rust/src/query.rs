@@ -1,4 +1,4 @@
-//! Geometric queries on a patch (`bezsurf/query.h`, since 1.1): curvature.
+//! Geometric queries on a patch (`bezsurf/query.h`, since 1.1): curvature and closest points.
 
 use crate::error::{check, Error, Result};
 use crate::patch::PatchRef;
@@ -106,5 +106,94 @@ impl PatchRef {
                 }
             })
             .collect())
+    }
+}
+
+/// Closest points of a patch or a surface to n query points ([`PatchRef::closest_points`],
+/// [`Locator::closest_points`]): one entry per query in each field.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ClosestPoints {
+    /// Patch id of each answer ([`Locator`] only; empty for one patch; `u32::MAX` where there is
+    /// none).
+    pub patch: Vec<u32>,
+    /// Parameters (u, v) of each closest point.
+    pub uv: Vec<[f64; 2]>,
+    /// Distance of each closest point to its query.
+    pub dist: Vec<f64>,
+    /// The closest points, `dim` coordinates each, one point after the other.
+    pub pos: Vec<f64>,
+}
+
+/// Splits `points` (n points of `dim` coordinates, one after the other) into `dim` strided
+/// views, and makes room for the results.
+pub(crate) fn closest_buffers(points: &[f64], dim: usize) -> Result<(Vec<sys::bs_cview>, ClosestPoints)> {
+    if dim == 0 || points.len() % dim != 0 {
+        return Err(Error::argument_error(
+            sys::BS_ERR_SIZE,
+            "points",
+            format!("has {} values, not a multiple of the dimension {dim}", points.len()),
+        ));
+    }
+    let n = points.len() / dim;
+    let stride = (dim * std::mem::size_of::<f64>()) as isize;
+    let q =
+        (0..dim).map(|c| sys::bs_cview { data: points.as_ptr().wrapping_add(c), count: n, stride }).collect();
+    let out = ClosestPoints {
+        patch: Vec::new(),
+        uv: vec![[0.0; 2]; n],
+        dist: vec![0.0; n],
+        pos: vec![0.0; n * dim],
+    };
+    Ok((q, out))
+}
+
+/// Views of the uv and pos outputs of [`ClosestPoints`] (interleaved, so strided).
+pub(crate) fn closest_views(
+    out: &mut ClosestPoints,
+    dim: usize,
+) -> (Vec<sys::bs_view>, sys::bs_view, Vec<sys::bs_view>) {
+    let n = out.dist.len();
+    let uv_base = out.uv.as_mut_ptr() as *mut f64;
+    let pos_base = out.pos.as_mut_ptr();
+    let uv_stride = (2 * std::mem::size_of::<f64>()) as isize;
+    let pos_stride = (dim * std::mem::size_of::<f64>()) as isize;
+    // Column c starts at element c of the first point (wrapping_add: for n = 0 the pointer is
+    // never read).
+    let uv =
+        (0..2).map(|c| sys::bs_view { data: uv_base.wrapping_add(c), count: n, stride: uv_stride }).collect();
+    let pos = (0..dim)
+        .map(|c| sys::bs_view { data: pos_base.wrapping_add(c), count: n, stride: pos_stride })
+        .collect();
+    let dist = sys::bs_view { data: out.dist.as_mut_ptr(), count: n, stride: 0 };
+    (uv, dist, pos)
+}
+
+impl PatchRef {
+    /// The globally closest point of the patch to each query point (`bs_patch_closest_point`):
+    /// within 1e-9 (D + d) of the exact distance d, boundary included. `points` holds n points
+    /// of [`dim`](PatchRef::dim) coordinates one after the other (`Size` otherwise); NaN
+    /// results where a query coordinate is not finite.
+    ///
+    /// ```
+    /// use bezsurf::Patch;
+    ///
+    /// // The unit square in the plane z = 0; a point above it and one beyond a corner.
+    /// let p = Patch::new(1, 1, 3, &[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 0.])?;
+    /// let c = p.closest_points(&[0.25, 0.5, 2.0, 3.0, 5.0, 0.0])?;
+    /// assert!((c.dist[0] - 2.0).abs() < 1e-9 && (c.uv[0][0] - 0.25).abs() < 1e-9);
+    /// assert!((c.dist[1] - 20f64.sqrt()).abs() < 1e-9 && (c.uv[1][0] - 1.0).abs() < 1e-9);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn closest_points(&self, points: &[f64]) -> Result<ClosestPoints> {
+        let dim = self.dim();
+        let (q, mut out) = closest_buffers(points, dim)?;
+        let n = out.dist.len();
+        let (uv, dist, pos) = closest_views(&mut out, dim);
+        // SAFETY: the patch is live; q views n points of points; the output views cover
+        // disjoint elements of out's vectors, each holding n entries.
+        check(unsafe {
+            sys::bs_patch_closest_point(self.as_ptr(), n, q.as_ptr(), uv.as_ptr(), &dist, pos.as_ptr())
+        })?;
+        Ok(out)
     }
 }

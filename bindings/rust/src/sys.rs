@@ -83,6 +83,12 @@ pub const BS_TESS_RELATIVE: c_int = 1;
 pub const BS_TESS_STRIPS: c_int = 2;
 /// Largest number of segments per patch and direction of a uniform tessellation.
 pub const BS_TESS_MAX_RATE: usize = 1024;
+/// Tessellation method: nu x nv segments per patch (since 1.1).
+pub const BS_TESS_UNIFORM: c_int = 0;
+/// Tessellation method: one segment count per patch from a curvature bound (since 1.1).
+pub const BS_TESS_PER_PATCH: c_int = 1;
+/// Tessellation method: a quadtree of sub-patches per patch (since 1.1).
+pub const BS_TESS_SUBDIVIDE: c_int = 2;
 
 /// Mesh format: Wavefront OBJ with positions, parameters and normals.
 pub const BS_MESH_OBJ: c_int = 0;
@@ -203,6 +209,34 @@ pub struct bs_open_edge {
     pub patch: u32,
     /// Its unshared side (`BS_SIDE_*`).
     pub side: c_int,
+}
+
+/// Tessellation options (`bs_tess_options`, mesh.h, since 1.1; its first field is its size).
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_tess_options {
+    /// `sizeof(bs_tess_options)`, set by `bs_tess_options_init`.
+    pub size: usize,
+    /// `BS_TESS_UNIFORM`, `BS_TESS_PER_PATCH` or `BS_TESS_SUBDIVIDE`.
+    pub method: c_int,
+    /// `BS_TESS_RELATIVE` | `BS_TESS_STRIPS`.
+    pub flags: c_int,
+    /// Uniform: segments along u per patch.
+    pub nu: usize,
+    /// Uniform: segments along v per patch.
+    pub nv: usize,
+    /// The other methods: the chordal tolerance.
+    pub tolerance: f64,
+    /// Budget on vertices; 0 = only the 32-bit index limit.
+    pub max_vertices: usize,
+    /// Budget on triangles; 0 = only the 32-bit index limit.
+    pub max_triangles: usize,
+}
+
+/// Opaque locator (`bs_locator`, since 1.1).
+#[repr(C)]
+pub struct bs_locator {
+    _opaque: [u8; 0],
 }
 
 /// Opaque mesh handle (`bs_mesh`, mesh.h); only ever used behind a pointer.
@@ -441,6 +475,21 @@ extern "C" {
         flags: c_int,
         out: *mut *mut bs_mesh,
     ) -> bs_status;
+    /// Fills tessellation options with the defaults (since 1.1).
+    pub fn bs_tess_options_init(o: *mut bs_tess_options);
+    /// Tessellates a 3-D surface as the options say, within their budgets (since 1.1).
+    pub fn bs_surface_tessellate(
+        s: *const bs_surface,
+        o: *const bs_tess_options,
+        out: *mut *mut bs_mesh,
+    ) -> bs_status;
+    /// The vertex and triangle counts `bs_surface_tessellate` would give (since 1.1).
+    pub fn bs_surface_tessellate_count(
+        s: *const bs_surface,
+        o: *const bs_tess_options,
+        vertices: *mut usize,
+        triangles: *mut usize,
+    ) -> bs_status;
     /// Releases a mesh; NULL does nothing.
     pub fn bs_mesh_destroy(m: *mut bs_mesh);
     /// Number of vertices; 0 for NULL.
@@ -578,5 +627,42 @@ extern "C" {
         dmin: *const bs_view,
         dmax: *const bs_view,
         kind: *mut c_uchar,
+    ) -> bs_status;
+    /// Certified closest points of a patch to n query points (since 1.1).
+    pub fn bs_patch_closest_point(
+        p: *const bs_patch,
+        n: usize,
+        q: *const bs_cview,
+        uv: *const bs_view,
+        dist: *const bs_view,
+        pos: *const bs_view,
+    ) -> bs_status;
+    /// Builds a locator over a surface (since 1.1).
+    pub fn bs_locator_create(s: *const bs_surface, out: *mut *mut bs_locator) -> bs_status;
+    /// Releases a locator; NULL does nothing (since 1.1).
+    pub fn bs_locator_destroy(l: *mut bs_locator);
+    /// Dimension of a locator's surface; 0 for NULL or empty (since 1.1).
+    pub fn bs_locator_dim(l: *const bs_locator) -> usize;
+    /// Certified closest points of the whole surface (since 1.1).
+    pub fn bs_locator_closest_point(
+        l: *const bs_locator,
+        n: usize,
+        q: *const bs_cview,
+        patch: *mut u32,
+        uv: *const bs_view,
+        dist: *const bs_view,
+        pos: *const bs_view,
+    ) -> bs_status;
+    /// First hits of n rays with the surface (since 1.1).
+    pub fn bs_locator_intersect(
+        l: *const bs_locator,
+        n: usize,
+        org: *const bs_cview,
+        dir: *const bs_cview,
+        trange: *const bs_cview,
+        patch: *mut u32,
+        uv: *const bs_view,
+        t: *const bs_view,
+        nrm: *const bs_view,
     ) -> bs_status;
 }

@@ -53,6 +53,11 @@ int main(void)
     CONST(BS_CURV_REGULAR); CONST(BS_CURV_LIMIT); CONST(BS_CURV_UNDEFINED);
     CONST(BS_SIDE_V0); CONST(BS_SIDE_U1); CONST(BS_SIDE_V1); CONST(BS_SIDE_U0);
     CONST(BS_TESS_RELATIVE); CONST(BS_TESS_STRIPS); CONST(BS_TESS_MAX_RATE);
+    CONST(BS_TESS_UNIFORM); CONST(BS_TESS_PER_PATCH); CONST(BS_TESS_SUBDIVIDE);
+    SIZE(bs_tess_options); OFF(bs_tess_options, size); OFF(bs_tess_options, method);
+    OFF(bs_tess_options, flags); OFF(bs_tess_options, nu); OFF(bs_tess_options, nv);
+    OFF(bs_tess_options, tolerance); OFF(bs_tess_options, max_vertices);
+    OFF(bs_tess_options, max_triangles);
     CONST(BS_MESH_OBJ); CONST(BS_MESH_PLY); CONST(BS_MESH_PLY_ASCII); CONST(BS_MESH_STL);
     return 0;
 }
@@ -154,8 +159,18 @@ fn sys_matches_the_c_header() {
         ("align bs_status", align_of::<sys::bs_status>() as i64),
         ("align size_t", align_of::<usize>() as i64),
         ("align ptrdiff_t", align_of::<isize>() as i64),
+        ("size bs_tess_options", size_of::<sys::bs_tess_options>() as i64),
+        ("align bs_tess_options", align_of::<sys::bs_tess_options>() as i64),
+        ("offset bs_tess_options.size", offset_of!(sys::bs_tess_options, size) as i64),
+        ("offset bs_tess_options.method", offset_of!(sys::bs_tess_options, method) as i64),
+        ("offset bs_tess_options.flags", offset_of!(sys::bs_tess_options, flags) as i64),
+        ("offset bs_tess_options.nu", offset_of!(sys::bs_tess_options, nu) as i64),
+        ("offset bs_tess_options.nv", offset_of!(sys::bs_tess_options, nv) as i64),
+        ("offset bs_tess_options.tolerance", offset_of!(sys::bs_tess_options, tolerance) as i64),
+        ("offset bs_tess_options.max_vertices", offset_of!(sys::bs_tess_options, max_vertices) as i64),
+        ("offset bs_tess_options.max_triangles", offset_of!(sys::bs_tess_options, max_triangles) as i64),
     ];
-    let consts: [(&str, i64); 33] = [
+    let consts: [(&str, i64); 36] = [
         ("BS_OK", sys::BS_OK as i64),
         ("BS_ERR_INVALID_ARG", sys::BS_ERR_INVALID_ARG as i64),
         ("BS_ERR_NO_MEMORY", sys::BS_ERR_NO_MEMORY as i64),
@@ -185,6 +200,9 @@ fn sys_matches_the_c_header() {
         ("BS_TESS_RELATIVE", sys::BS_TESS_RELATIVE as i64),
         ("BS_TESS_STRIPS", sys::BS_TESS_STRIPS as i64),
         ("BS_TESS_MAX_RATE", sys::BS_TESS_MAX_RATE as i64),
+        ("BS_TESS_UNIFORM", sys::BS_TESS_UNIFORM as i64),
+        ("BS_TESS_PER_PATCH", sys::BS_TESS_PER_PATCH as i64),
+        ("BS_TESS_SUBDIVIDE", sys::BS_TESS_SUBDIVIDE as i64),
         ("BS_MESH_OBJ", sys::BS_MESH_OBJ as i64),
         ("BS_MESH_PLY", sys::BS_MESH_PLY as i64),
         ("BS_MESH_PLY_ASCII", sys::BS_MESH_PLY_ASCII as i64),

@@ -75,6 +75,7 @@ fn patches_and_surfaces_are_send_and_sync() {
     check::<Patch>();
     check::<Surface>();
     check::<&bezsurf::PatchRef>();
+    check::<bezsurf::Locator>();
 }
 
 #[test]

@@ -1,0 +1,159 @@
+"""Closest points, the locator and rays through the binding, checked against geometry known in
+closed form (planes, a sphere octant, the teapot's own points)."""
+
+import copy
+import math
+import pickle
+import threading
+import unittest
+
+import bezsurf
+
+from .support import PlainTestCase, bilinear, numpy as np, plain, requires
+from .test_curvature import R, sphere_octant
+
+
+def flat_square():
+    """The square [0,2] x [0,2] in the plane z = 1, as a degree (2,1) patch (m != n)."""
+    return bezsurf.Patch([[[0, 0, 1], [0, 2, 1]], [[1, 0, 1], [1, 2, 1]], [[2, 0, 1], [2, 2, 1]]])
+
+
+@requires("bs_patch_closest_point")
+class PatchClosestTest(PlainTestCase):
+    def test_plane_inside_and_beyond(self):
+        p = flat_square()
+        r = p.closest_point([(0.5, 1.5, 4.0), (3.0, -1.0, 1.0)])
+        uv, dist, pos = plain(r.uv), plain(r.dist), plain(r.pos)
+        self.assertIsNone(r.patch)
+        self.assertAlmostEqual(uv[0][0], 0.25, delta=1e-9)
+        self.assertAlmostEqual(uv[0][1], 0.75, delta=1e-9)
+        self.assertAlmostEqual(dist[0], 3.0, delta=1e-8)
+        self.assertAlmostEqual(dist[1], math.sqrt(2.0), delta=1e-8)   # the corner (2, 0, 1)
+        self.assertEqual(tuple(round(c, 9) for c in pos[1]), (2.0, 0.0, 1.0))
+        one = p.closest_point((1.0, 1.0, 1.0))                    # one point: no n axis
+        self.assertAlmostEqual(one.dist, 0.0, delta=1e-9)
+        self.assertEqual(len(plain(one.uv)), 2)
+
+    def test_sphere_octant_radial(self):
+        p = sphere_octant()
+        d = (1.0, 2.0, 2.0)                                        # |d| = 3
+        q = [tuple(2.0 * c for c in d)]                            # |q| = 6, on a radius
+        r = p.closest_point(q)
+        self.assertAlmostEqual(plain(r.dist)[0], 6.0 - R, delta=1e-8)
+        x = plain(r.pos)[0]
+        for a, b in zip(x, d):
+            self.assertAlmostEqual(a, R * b / 3.0, delta=1e-8)
+
+    def test_nan_and_errors(self):
+        p = bilinear()
+        r = p.closest_point([(math.nan, 0.0, 0.0)])
+        self.assertTrue(math.isnan(plain(r.dist)[0]))
+        with self.assertRaises(ValueError):
+            p.closest_point([(1.0, 2.0)])                          # 2 coordinates, dim 3
+        with self.assertRaises(TypeError):
+            p.closest_point("points")
+        empty = p.closest_point([])
+        self.assertEqual(len(plain(empty.dist)), 0)
+
+    @unittest.skipIf(np is None, "numpy is not available")
+    def test_numpy_strided_input(self):
+        p = flat_square()
+        q = np.zeros((4, 6))
+        q[:, ::2] = [[0.5, 0.5, 2.0]] * 4                           # (n, 3) view, stride 48
+        r = p.closest_point(q[:, ::2])
+        self.assertEqual(r.pos.shape, (4, 3))
+        self.assertTrue(np.allclose(r.dist, 1.0, atol=1e-9))
+
+
+@requires("bs_locator_create", "bs_locator_intersect", "bs_locator_closest_point")
+class LocatorTest(PlainTestCase):
+    def setUp(self):
+        self.teapot = bezsurf.Surface.builtin("teapot")
+        self.loc = bezsurf.Locator(self.teapot)
+
+    def tearDown(self):
+        self.loc.close()
+
+    def test_rays_hit_known_points(self):
+        # Aim at surface points from outside along the normal: the hit is that point or earlier.
+        ids, us, vs = [0, 5, 12, 20], [0.3, 0.5, 0.7, 0.1], [0.4, 0.5, 0.2, 0.9]
+        ev = self.teapot.eval_normal(ids, us, vs)
+        pts, nrm = plain(ev.position), plain(ev.normal)
+        org = [tuple(p[c] + 5.0 * n[c] for c in range(3)) for p, n in zip(pts, nrm)]
+        dirs = [tuple(-n[c] for c in range(3)) for n in nrm]
+        hits = self.loc.intersect(org, dirs)
+        t = plain(hits.t)
+        for k in range(4):
+            self.assertNotEqual(plain(hits.patch)[k], bezsurf.NO_PATCH)
+            self.assertLessEqual(t[k], 5.0 + 1e-7)
+            if plain(hits.patch)[k] == ids[k]:
+                self.assertAlmostEqual(t[k], 5.0, delta=1e-7)
+
+    def test_miss_range_and_invalid(self):
+        hits = self.loc.intersect([(0, 0, 100.0), (0, 0, 100.0), (0, 0, 100.0)],
+                                  [(0, 0, 1.0), (0, 0, -1.0), (0, 0, 0.0)])
+        self.assertEqual(plain(hits.patch)[0], bezsurf.NO_PATCH)
+        self.assertEqual(plain(hits.t)[0], math.inf)
+        self.assertNotEqual(plain(hits.patch)[1], bezsurf.NO_PATCH)
+        self.assertTrue(math.isnan(plain(hits.t)[2]))
+        short = self.loc.intersect((0, 0, 100.0), (0, 0, -1.0), t_max=1.0)   # one ray
+        self.assertEqual(short.patch, bezsurf.NO_PATCH)
+        with self.assertRaises(ValueError):
+            self.loc.intersect([(0, 0, 1.0)], [(0, 0, 1.0), (0, 0, 1.0)])
+
+    def test_closest_agrees_with_patches(self):
+        q = [(4.0, 1.0, 2.0), (0.0, 0.0, 5.0)]
+        r = self.loc.closest_point(q)
+        best = [min(plain(p.closest_point([x]).dist)[0] for p in self.teapot) for x in q]
+        for k in range(2):
+            self.assertAlmostEqual(plain(r.dist)[k], best[k], delta=1e-8 * (10 + best[k]))
+            self.assertLess(plain(r.patch)[k], len(self.teapot))
+
+    def test_copy_pickle_threads(self):
+        q = [(1.0, 2.0, 3.0)]
+        ref = plain(self.loc.closest_point(q).dist)
+        for other in (copy.copy(self.loc), copy.deepcopy(self.loc),
+                      pickle.loads(pickle.dumps(self.loc))):
+            self.assertEqual(plain(other.closest_point(q).dist), ref)
+        results = []
+
+        def work():
+            results.append(plain(self.loc.closest_point(q).dist))
+        threads = [threading.Thread(target=work) for _ in range(4)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        self.assertEqual(results, [ref] * 4)
+        self.assertEqual(self.loc.dim, 3)
+        self.assertIn("Locator", repr(self.loc))
+
+
+@requires("bs_surface_tessellate", "bs_surface_tessellate_count")
+class TessOptionsTest(PlainTestCase):
+    def test_counts_and_budgets(self):
+        s = bezsurf.Surface.builtin("teapot")
+        nv, nt = s.tessellate_count(8, 6)
+        m = s.tessellate(8, 6)
+        self.assertEqual((m.vertex_count, m.triangle_count), (nv, nt))
+        self.assertEqual(s.tessellate(8, 6, max_vertices=nv).vertex_count, nv)
+        with self.assertRaises(bezsurf.SizeError):
+            s.tessellate(8, 6, max_vertices=nv - 1)
+        with self.assertRaises(bezsurf.SizeError):
+            s.tessellate_adaptive(1e-3, relative=True, max_triangles=10)
+        av, at = s.tessellate_count(tolerance=1e-3, relative=True)
+        ad = s.tessellate_adaptive(1e-3, relative=True)
+        self.assertEqual((ad.vertex_count, ad.triangle_count), (av, at))
+        with self.assertRaises(ValueError):
+            s.tessellate_count()
+
+    def test_subdivide(self):
+        s = bezsurf.Surface.builtin("teapot")
+        sv, st = s.tessellate_count(tolerance=1e-3, relative=True, subdivide=True)
+        m = s.tessellate_adaptive(1e-3, relative=True, subdivide=True)
+        self.assertEqual((m.vertex_count, m.triangle_count), (sv, st))
+        self.assertEqual(copy.copy(m).triangle_count, st)          # the recipe remakes it
+
+
+if __name__ == "__main__":
+    unittest.main()
