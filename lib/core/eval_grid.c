@@ -18,6 +18,7 @@ typedef struct grid_scratch {
     double *h, *hu, *hv;   /* [c][COLS] homogeneous results of one pass */
     double *s, *su, *sv;   /* [c][COLS] Cartesian results not written in place */
     double *nrm;           /* [3][COLS] normals not written in place */
+    float *f;              /* [9][COLS] float results not written in place */
     unsigned char *kind;   /* [COLS] normal kinds not written in place */
     unsigned char *badv;   /* [COLS] non-finite v */
 } grid_scratch;
@@ -114,134 +115,85 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
     }
 }
 
-/* The column weights of the point, recomputed from its parameter rather than loaded from the
- * table: the same bits (bsi_bernstein_first uses bsi_bernstein3_first), and when the outputs are
- * bound for main memory, seven loads per point stall behind the queued stores and cost up to
- * 2.4 times the time (docs/performance.md). */
-#define CUBIC_WEIGHTS(t)                                                                           \
-    double cw_[4], cwm_[3];                                                                        \
-    bsi_bernstein3_first(t, cw_, cwm_);                                                            \
-    double w0 = cw_[0], w1 = cw_[1], w2 = cw_[2], w3 = cw_[3];                                     \
-    double v0 = cwm_[0], v1 = cwm_[1], v2 = cwm_[2];                                              \
-    (void)v0, (void)v1, (void)v2
-#define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
-#define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
-/* Cubic rows of a polynomial 3-D patch: the three coordinates' combine4 sums in one loop, so
- * that each point's weights serve all of them. Positions, and when u0 != NULL also S_u (scaled by
- * m) into u0..u2 and S_v (by 3) into d0..d2; same operations per point as combine() (same bits). */
-BSI_HOT static void cubic_rows(size_t nb, const double *restrict vcol,
-                               const double *restrict q, const double *restrict qu,
-                               const double *restrict qv, double m, double *restrict s0,
-                               double *restrict s1, double *restrict s2, double *restrict u0,
-                               double *restrict u1, double *restrict u2, double *restrict d0,
-                               double *restrict d1, double *restrict d2)
-{
-    if (u0 == NULL)
-        for (size_t b = 0; b < nb; b++) {
-            CUBIC_WEIGHTS(vcol[b]);
-            s0[b] = VAL(q);
-            s1[b] = VAL(q + 4);
-            s2[b] = VAL(q + 8);
-        }
-    else
-        for (size_t b = 0; b < nb; b++) {
-            CUBIC_WEIGHTS(vcol[b]);
-            s0[b] = VAL(q);
-            s1[b] = VAL(q + 4);
-            s2[b] = VAL(q + 8);
-            u0[b] = m * VAL(qu);
-            u1[b] = m * VAL(qu + 4);
-            u2[b] = m * VAL(qu + 8);
-            d0[b] = DV(qv);
-            d1[b] = DV(qv + 4);
-            d2[b] = DV(qv + 8);
-        }
-}
-
-/* Cubic rows of a polynomial 3-D patch, positions and normals only: the three coordinates'
- * combine4 sums (value, S_u scaled by m, S_v by 3) and the regular normal rule, fused so that the
- * derivatives never leave registers. Same operations per point as combine() followed by
- * bsi_normal_block (same bits); flag[b] = 1.0 marks points left to bsi_normal, and the count
- * of such points is returned. */
-BSI_HOT static size_t cubic_pos_normal(size_t nb, const double *restrict vcol,
-                                       const double *restrict q, const double *restrict qu,
-                                       const double *restrict qv, double m, double zu2,
-                                       double zv2, double *restrict s0, double *restrict s1,
-                                       double *restrict s2, double *restrict n0,
-                                       double *restrict n1, double *restrict n2,
-                                       double *restrict flag)
-{
-    size_t nflag = 0;
-    for (size_t b = 0; b < nb; b++) {
-        CUBIC_WEIGHTS(vcol[b]);
-        s0[b] = VAL(q);
-        s1[b] = VAL(q + 4);
-        s2[b] = VAL(q + 8);
-        bsi_rnormal r = bsi_regular_normal(m * VAL(qu), m * VAL(qu + 4), m * VAL(qu + 8), DV(qv),
-                                           DV(qv + 4), DV(qv + 8), zu2, zv2);
-        n0[b] = r.n0;
-        n1[b] = r.n1;
-        n2[b] = r.n2;
-        flag[b] = r.flag;
-        nflag += r.flag != 0.0;
-    }
-    return nflag;
-}
-#undef CUBIC_WEIGHTS
-#undef VAL
-#undef DV
-
 static void fill(double *dst, size_t nb, double x)
 {
     for (size_t b = 0; b < nb; b++)
         dst[b] = x;
 }
 
-/* Where coordinate c of a result goes: straight into the caller's array when it is packed,
+/* The outputs of one call: double views, or float views for bs_patch_eval_grid_f32 (the same
+ * doubles, each rounded to float when stored). */
+enum { OUT_POS, OUT_DU, OUT_DV, OUT_NRM, NOUT };
+
+typedef struct grid_call {
+    const bs_patch *p;
+    const bs_view *out[NOUT];   /* double outputs; all NULL for the float twin */
+    const bs_fview *fout[NOUT]; /* float outputs; all NULL for doubles */
+    unsigned char *kind;
+    int f32, wpos;              /* floats wanted; positions wanted */
+    int first, normals, wdu, wdv;
+    int fused; /* bsi_cubic_pos_normal applies */
+    int cubic; /* bsi_cubic_rows applies */
+    bsi_nscale sc;
+} grid_call;
+
+/* Where coordinate c of output o goes: straight into the caller's array when it is packed,
  * otherwise into scratch (copied out by store()). */
-static double *target(const bs_view *views, size_t c, size_t idx0, double *scratch)
+static double *target(const grid_call *gc, int o, size_t c, size_t idx0, double *scratch)
 {
+    const bs_view *views = gc->out[o];
     if (views != NULL && bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double))
-        return (double *)views[c].data + idx0;
+        return views[c].data + idx0;
     return scratch;
 }
 
-static void store(const bs_view *views, size_t c, size_t idx0, const double *src, size_t nb)
+static float *ftarget(const grid_call *gc, int o, size_t c, size_t idx0, float *scratch)
 {
-    if (views == NULL || src == (const double *)views[c].data + idx0)
-        return;
-    for (size_t b = 0; b < nb; b++)
-        *bsi_at(&views[c], idx0 + b) = src[b];
+    const bs_fview *views = gc->fout[o];
+    if (views != NULL && (views[c].stride == 0 || views[c].stride == (ptrdiff_t)sizeof(float)))
+        return views[c].data + idx0;
+    return scratch;
 }
 
-static bs_status check_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
-                            const bs_cview *v, const bs_view *pos, const bs_view *du,
-                            const bs_view *dv, const bs_view *nrm, size_t *total)
+/* Doubles of coordinate c of output o to the caller, rounded to float for the float twin. */
+static void store(const grid_call *gc, int o, size_t c, size_t idx0, const double *src, size_t nb)
+{
+    const bs_view *views = gc->out[o];
+    const bs_fview *fviews = gc->fout[o];
+    if (views != NULL && src != views[c].data + idx0)
+        for (size_t b = 0; b < nb; b++)
+            *bsi_at(&views[c], idx0 + b) = src[b];
+    if (fviews != NULL)
+        for (size_t b = 0; b < nb; b++)
+            *bsi_fat(&fviews[c], idx0 + b) = (float)src[b];
+}
+
+/* Floats of coordinate c of output o, when they were not written in place. */
+static void fstore(const grid_call *gc, int o, size_t c, size_t idx0, const float *src, size_t nb)
+{
+    const bs_fview *fviews = gc->fout[o];
+    if (fviews != NULL && src != fviews[c].data + idx0)
+        for (size_t b = 0; b < nb; b++)
+            *bsi_fat(&fviews[c], idx0 + b) = src[b];
+}
+
+static bs_status check_grid(const grid_call *gc, size_t nu, const bs_cview *u, size_t nv,
+                            const bs_cview *v, size_t *total)
 {
     bs_status st;
-    size_t dim = p->dim;
     if ((st = bsi_check_cview(u, nu)) != BS_OK || (st = bsi_check_cview(v, nv)) != BS_OK)
         return st;
     if (nu > SIZE_MAX / nv)
         return BS_ERR_SIZE;
     *total = nu * nv;
-    if ((pos && (st = bsi_check_views(pos, dim, *total)) != BS_OK) ||
-        (du && (st = bsi_check_views(du, dim, *total)) != BS_OK) ||
-        (dv && (st = bsi_check_views(dv, dim, *total)) != BS_OK) ||
-        (nrm && (st = bsi_check_views(nrm, 3, *total)) != BS_OK))
-        return st;
+    for (int o = 0; o < NOUT; o++) {
+        size_t k = o == OUT_NRM ? 3 : gc->p->dim;
+        if ((gc->out[o] && (st = bsi_check_views(gc->out[o], k, *total)) != BS_OK) ||
+            (gc->fout[o] && (st = bsi_check_fviews(gc->fout[o], k, *total)) != BS_OK))
+            return st;
+    }
     return BS_OK;
 }
-
-typedef struct grid_call {
-    const bs_patch *p;
-    const bs_view *pos, *du, *dv, *nrm;
-    unsigned char *kind;
-    int first, normals, wdu, wdv;
-    int fused; /* cubic_pos_normal applies */
-    int cubic; /* cubic_rows applies */
-    bsi_nscale sc;
-} grid_call;
 
 /* row_pass for cubic rows of polynomial 3-D patches asked for positions and normals only. Points
  * with non-finite parameters are left to row_pass (gc->fused is off when there are any). */
@@ -249,15 +201,23 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
                       size_t nb, size_t idx0)
 {
     double *ps[3], *pn[3];
-    for (size_t c = 0; c < 3; c++) {
-        ps[c] = target(gc->pos, c, idx0, g->s + c * COLS);
-        pn[c] = target(gc->nrm, c, idx0, g->nrm + c * COLS);
-    }
+    float *fs[3], *fn[3];
     unsigned char *kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
     double *flag = g->hu; /* free in this pass */
-    size_t nflag = cubic_pos_normal(nb, vcol, g->q, g->qu, g->qv, (double)gc->p->deg_u,
-                                    gc->sc.zu * gc->sc.zu, gc->sc.zv * gc->sc.zv, ps[0], ps[1],
-                                    ps[2], pn[0], pn[1], pn[2], flag);
+    double m = (double)gc->p->deg_u, zu2 = gc->sc.zu * gc->sc.zu, zv2 = gc->sc.zv * gc->sc.zv;
+    size_t nflag;
+    for (size_t c = 0; c < 3; c++) {
+        ps[c] = target(gc, OUT_POS, c, idx0, g->s + c * COLS);
+        pn[c] = target(gc, OUT_NRM, c, idx0, g->nrm + c * COLS);
+        fs[c] = ftarget(gc, OUT_POS, c, idx0, g->f + c * COLS);
+        fn[c] = ftarget(gc, OUT_NRM, c, idx0, g->f + (3 + c) * COLS);
+    }
+    if (gc->f32)
+        nflag = bsi_cubic_pos_normal_f32(nb, vcol, g->q, g->qu, g->qv, m, zu2, zv2, fs[0], fs[1],
+                                         fs[2], fn[0], fn[1], fn[2], flag);
+    else
+        nflag = bsi_cubic_pos_normal(nb, vcol, g->q, g->qu, g->qv, m, zu2, zv2, ps[0], ps[1],
+                                     ps[2], pn[0], pn[1], pn[2], flag);
     for (size_t b = 0; b < nb; b++)
         kd[b] = BS_NORMAL_REGULAR;
     for (size_t b = 0; nflag > 0 && b < nb; b++) { /* most rows have no flagged point */
@@ -268,19 +228,56 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
         double su[3], sv[3], r[3];
         for (size_t c = 0; c < 3; c++) {
             const double *qu = g->qu + 4 * c, *qv = g->qv + 4 * c;
-            su[c] = (double)gc->p->deg_u *
-                    (w[0] * qu[0] + w[COLS] * qu[1] + w[2 * COLS] * qu[2] + w[3 * COLS] * qu[3]);
+            su[c] = m * (w[0] * qu[0] + w[COLS] * qu[1] + w[2 * COLS] * qu[2] + w[3 * COLS] * qu[3]);
             sv[c] = 3.0 * (wm[0] * qv[0] + wm[COLS] * qv[1] + wm[2 * COLS] * qv[2]);
         }
         kd[b] = bsi_normal(gc->p, &gc->sc, t, vcol[b], su, sv, r);
-        pn[0][b] = r[0];
-        pn[1][b] = r[1];
-        pn[2][b] = r[2];
+        for (size_t c = 0; c < 3; c++) {
+            if (gc->f32)
+                fn[c][b] = (float)r[c];
+            else
+                pn[c][b] = r[c];
+        }
     }
     for (size_t c = 0; c < 3; c++) {
-        store(gc->pos, c, idx0, ps[c], nb);
-        store(gc->nrm, c, idx0, pn[c], nb);
+        if (gc->f32) {
+            fstore(gc, OUT_POS, c, idx0, fs[c], nb);
+            fstore(gc, OUT_NRM, c, idx0, fn[c], nb);
+        } else {
+            store(gc, OUT_POS, c, idx0, ps[c], nb);
+            store(gc, OUT_NRM, c, idx0, pn[c], nb);
+        }
     }
+}
+
+/* row_pass for cubic rows of polynomial 3-D patches asked for positions and/or first partials
+ * (gc->cubic is off when a parameter is not finite). */
+static void cubic_row(const grid_call *gc, grid_scratch *g, const double *vcol, size_t nb,
+                      size_t idx0)
+{
+    double m = (double)gc->p->deg_u;
+    if (gc->f32) {
+        float *fo[3][3];
+        for (int o = 0; o < 3; o++)
+            for (size_t c = 0; c < 3; c++)
+                fo[o][c] = ftarget(gc, o, c, idx0, g->f + (3 * (size_t)o + c) * COLS);
+        bsi_cubic_rows_f32(nb, vcol, g->q, g->qu, g->qv, m, fo[0][0], fo[0][1], fo[0][2],
+                           gc->first ? fo[1][0] : NULL, fo[1][1], fo[1][2], fo[2][0], fo[2][1],
+                           fo[2][2]);
+        for (int o = 0; o < 3; o++)
+            for (size_t c = 0; c < 3; c++)
+                fstore(gc, o, c, idx0, fo[o][c], nb);
+        return;
+    }
+    double *po[3][3];
+    for (int o = 0; o < 3; o++)
+        for (size_t c = 0; c < 3; c++)
+            po[o][c] = target(gc, o, c, idx0, g->h + (3 * (size_t)o + c) * COLS);
+    bsi_cubic_rows(nb, vcol, g->q, g->qu, g->qv, m, po[0][0], po[0][1], po[0][2],
+                   gc->first ? po[1][0] : NULL, po[1][1], po[1][2], po[2][0], po[2][1], po[2][2]);
+    for (int o = 0; o < 3; o++)
+        for (size_t c = 0; c < 3; c++)
+            store(gc, o, c, idx0, po[o][c], nb);
 }
 
 /* One row pass: nb columns of row u = t starting at output index idx0. */
@@ -300,27 +297,16 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
         return;
     }
     if (gc->cubic) {
-        for (size_t c = 0; c < 3; c++) {
-            ps[c] = target(gc->pos, c, idx0, g->h + c * COLS);
-            pu[c] = target(gc->du, c, idx0, g->hu + c * COLS);
-            pv[c] = target(gc->dv, c, idx0, g->hv + c * COLS);
-        }
-        cubic_rows(nb, vcol, g->q, g->qu, g->qv, (double)m, ps[0], ps[1], ps[2],
-                   first ? pu[0] : NULL, pu[1], pu[2], pv[0], pv[1], pv[2]);
-        for (size_t c = 0; c < 3; c++) {
-            store(gc->pos, c, idx0, ps[c], nb);
-            store(gc->du, c, idx0, pu[c], nb);
-            store(gc->dv, c, idx0, pv[c], nb);
-        }
+        cubic_row(gc, g, vcol, nb, idx0);
         return;
     }
     for (size_t c = 0; c < p->ncoord; c++) {
         /* Polynomial patches write Cartesian results directly; rational ones go through h. */
         int cart = !rational && c < dim;
-        double *h = cart ? target(gc->pos, c, idx0, g->h + c * COLS) : g->h + c * COLS;
-        double *hu = cart ? target(gc->du, c, idx0, g->hu + c * COLS) : g->hu + c * COLS;
-        double *hv = cart ? target(gc->dv, c, idx0, g->hv + c * COLS) : g->hv + c * COLS;
-        if (gc->pos != NULL || rational || !first)
+        double *h = cart ? target(gc, OUT_POS, c, idx0, g->h + c * COLS) : g->h + c * COLS;
+        double *hu = cart ? target(gc, OUT_DU, c, idx0, g->hu + c * COLS) : g->hu + c * COLS;
+        double *hv = cart ? target(gc, OUT_DV, c, idx0, g->hv + c * COLS) : g->hv + c * COLS;
+        if (gc->wpos || rational || !first)
             combine(n1, nb, g->wv, g->q + c * n1, 0, 1.0, h);
         if (first) {
             if (gc->wdu)
@@ -343,12 +329,12 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
         const double *w = g->h + dim * COLS, *wu = g->hu + dim * COLS, *wv = g->hv + dim * COLS;
         for (size_t c = 0; c < dim; c++) {
             const double *h = g->h + c * COLS, *hu = g->hu + c * COLS, *hv = g->hv + c * COLS;
-            double *s = ps[c] = target(gc->pos, c, idx0, g->s + c * COLS);
+            double *s = ps[c] = target(gc, OUT_POS, c, idx0, g->s + c * COLS);
             for (size_t b = 0; b < nb; b++)
                 s[b] = h[b] / w[b];
             if (first) {
-                double *su = pu[c] = target(gc->du, c, idx0, g->su + c * COLS);
-                double *sv = pv[c] = target(gc->dv, c, idx0, g->sv + c * COLS);
+                double *su = pu[c] = target(gc, OUT_DU, c, idx0, g->su + c * COLS);
+                double *sv = pv[c] = target(gc, OUT_DV, c, idx0, g->sv + c * COLS);
                 for (size_t b = 0; b < nb; b++) {
                     su[b] = (hu[b] - wu[b] * s[b]) / w[b];
                     sv[b] = (hv[b] - wv[b] * s[b]) / w[b];
@@ -360,7 +346,7 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     unsigned char *kd = NULL;
     if (gc->normals) {
         for (size_t c = 0; c < 3; c++)
-            pn[c] = target(gc->nrm, c, idx0, g->nrm + c * COLS);
+            pn[c] = target(gc, OUT_NRM, c, idx0, g->nrm + c * COLS);
         kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
         bsi_normal_block(p, &gc->sc, nb, &t, 0, vcol, (const double *const *)pu,
                          (const double *const *)pv, pn, kd);
@@ -371,7 +357,7 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             if (!badu && !g->badv[b])
                 continue;
             for (size_t c = 0; c < dim; c++) {
-                if (gc->pos != NULL || rational || !first) /* then ps[c] was set above */
+                if (gc->wpos || rational || !first) /* then ps[c] was set above */
                     ps[c][b] = NAN; // NOLINT(clang-analyzer-core.NullDereference)
                 if (first)
                     pu[c][b] = pv[c][b] = NAN;
@@ -382,47 +368,53 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             }
         }
     for (size_t c = 0; c < dim; c++) {
-        store(gc->pos, c, idx0, ps[c], nb);
-        store(gc->du, c, idx0, pu[c], nb);
-        store(gc->dv, c, idx0, pv[c], nb);
+        store(gc, OUT_POS, c, idx0, ps[c], nb);
+        store(gc, OUT_DU, c, idx0, pu[c], nb);
+        store(gc, OUT_DV, c, idx0, pv[c], nb);
     }
-    for (size_t c = 0; c < 3 && gc->nrm != NULL; c++)
-        store(gc->nrm, c, idx0, pn[c], nb);
+    for (size_t c = 0; c < 3 && gc->normals; c++)
+        store(gc, OUT_NRM, c, idx0, pn[c], nb);
 }
 
-bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
-                             const bs_cview *v, const bs_view *pos, const bs_view *du,
-                             const bs_view *dv, const bs_view *nrm, unsigned char *kind)
+/* Both public grid evaluators: out (doubles) or fout (floats) holds the four outputs. */
+static bs_status eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                           const bs_cview *v, const bs_view *const out[NOUT],
+                           const bs_fview *const fout[NOUT], unsigned char *kind)
 {
     if (p == NULL)
         return BS_ERR_INVALID_ARG;
-    if ((nrm != NULL || kind != NULL) && p->dim != 3)
+    int wnrm = out[OUT_NRM] != NULL || fout[OUT_NRM] != NULL;
+    if ((wnrm || kind != NULL) && p->dim != 3)
         return BS_ERR_DIMENSION;
     if (nu == 0 || nv == 0)
         return BS_OK;
-    size_t total;
-    bs_status st = check_grid(p, nu, u, nv, v, pos, du, dv, nrm, &total);
-    if (st != BS_OK)
-        return st;
-
-    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1, nc = p->ncoord;
+    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1, nc = p->ncoord, total;
     grid_call gc;
     gc.p = p;
-    gc.pos = pos;
-    gc.du = du;
-    gc.dv = dv;
-    gc.nrm = nrm;
+    for (int o = 0; o < NOUT; o++) {
+        gc.out[o] = out[o];
+        gc.fout[o] = fout[o];
+    }
+    bs_status st = check_grid(&gc, nu, u, nv, v, &total);
+    if (st != BS_OK)
+        return st;
+    int wdu = out[OUT_DU] != NULL || fout[OUT_DU] != NULL;
+    int wdv = out[OUT_DV] != NULL || fout[OUT_DV] != NULL;
     gc.kind = kind;
-    gc.normals = nrm != NULL || kind != NULL;
-    gc.first = du != NULL || dv != NULL || gc.normals;
+    gc.f32 = fout[OUT_POS] != NULL || fout[OUT_DU] != NULL || fout[OUT_DV] != NULL ||
+             fout[OUT_NRM] != NULL;
+    gc.wpos = out[OUT_POS] != NULL || fout[OUT_POS] != NULL;
+    gc.normals = wnrm || kind != NULL;
+    gc.first = wdu || wdv || gc.normals;
     gc.wdu = gc.first && m > 0;
     gc.wdv = gc.first && n > 0;
     if (gc.normals)
         bsi_normal_scale(p, &gc.sc);
 
     size_t ndouble = 2 * n1 * COLS + 3 * nc * n1 + 3 * nc * COLS + 3 * nc * COLS + 3 * COLS + COLS;
+    size_t nfloat = 9 * COLS;
     grid_scratch g;
-    double *mem = malloc(ndouble * sizeof(double) + 2 * COLS);
+    double *mem = malloc(ndouble * sizeof(double) + nfloat * sizeof(float) + 2 * COLS);
     if (mem == NULL)
         return BS_ERR_NO_MEMORY;
     g.wv = mem;
@@ -438,7 +430,8 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
     g.sv = g.su + nc * COLS;
     g.nrm = g.sv + nc * COLS;
     double *vcol = g.nrm + 3 * COLS;
-    g.kind = (unsigned char *)(vcol + COLS);
+    g.f = (float *)(void *)(vcol + COLS);
+    g.kind = (unsigned char *)(g.f + nfloat);
     g.badv = g.kind + COLS;
 
     for (size_t b0 = 0; b0 < nv; b0 += COLS) {
@@ -457,11 +450,10 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
         }
         for (size_t a = 0; a < nu; a++)
             anybadu |= !isfinite(bsi_cget(u, a));
-        gc.fused = !p->rational && p->dim == 3 && n == 3 && m > 0 && gc.normals && du == NULL &&
-                   dv == NULL && !anybadu && !anybadv;
+        int cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !anybadu && !anybadv;
+        gc.fused = cubic && gc.normals && !wdu && !wdv;
         /* positions, or positions and first partials, of cubic rows without normals */
-        gc.cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !gc.normals &&
-                   (pos != NULL || gc.first) && !anybadu && !anybadv;
+        gc.cubic = cubic && !gc.normals && (gc.wpos || gc.first);
         for (size_t a = 0; a < nu; a++) {
             double t = bsi_cget(u, a);
             int badu = !isfinite(t);
@@ -470,4 +462,22 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
     }
     free(mem);
     return BS_OK;
+}
+
+bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                             const bs_cview *v, const bs_view *pos, const bs_view *du,
+                             const bs_view *dv, const bs_view *nrm, unsigned char *kind)
+{
+    const bs_view *out[NOUT] = {pos, du, dv, nrm};
+    const bs_fview *fout[NOUT] = {NULL, NULL, NULL, NULL};
+    return eval_grid(p, nu, u, nv, v, out, fout, kind);
+}
+
+bs_status bs_patch_eval_grid_f32(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                                 const bs_cview *v, const bs_fview *pos, const bs_fview *du,
+                                 const bs_fview *dv, const bs_fview *nrm, unsigned char *kind)
+{
+    const bs_view *out[NOUT] = {NULL, NULL, NULL, NULL};
+    const bs_fview *fout[NOUT] = {pos, du, dv, nrm};
+    return eval_grid(p, nu, u, nv, v, out, fout, kind);
 }

@@ -89,6 +89,23 @@ void bsi_project_first(const bs_patch *p, const double *h, const double *hu, con
                        size_t stride, double *s, double *su, double *sv);
 
 
+/* ---- Cubic rows of the grid evaluator (lib/core/grid_cubic.c) ----
+ * Row u = t of a polynomial 3-D patch of degree 3 in v, from the row's coefficients along u
+ * (q, qu, qv: 3 coordinates of 4, as contracted by the grid evaluator), at the nb columns vcol,
+ * into packed arrays; the same operations per point as the grid's combine sums (same bits).
+ * bsi_cubic_rows: positions into s0..s2 and, when u0 != NULL, S_u (scaled by m) into u0..u2
+ * and S_v (by 3) into d0..d2. bsi_cubic_pos_normal: positions and the regular normal rule
+ * (bsi_regular_normal) fused; flag[b] = 1.0 marks points left to bsi_normal, and their count is
+ * returned. The _f32 twins store each double result rounded to float. */
+#define BSI_CUBIC_KERNELS(ROWS, POS_NORMAL, T)                                                      \
+    void ROWS(size_t nb, const double *vcol, const double *q, const double *qu, const double *qv,  \
+              double m, T *s0, T *s1, T *s2, T *u0, T *u1, T *u2, T *d0, T *d1, T *d2);            \
+    size_t POS_NORMAL(size_t nb, const double *vcol, const double *q, const double *qu,            \
+                      const double *qv, double m, double zu2, double zv2, T *s0, T *s1, T *s2,     \
+                      T *n0, T *n1, T *n2, double *flag)
+BSI_CUBIC_KERNELS(bsi_cubic_rows, bsi_cubic_pos_normal, double);
+BSI_CUBIC_KERNELS(bsi_cubic_rows_f32, bsi_cubic_pos_normal_f32, float);
+
 /* ---- Normals (lib/core/normal.c) ---- */
 
 /* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
