@@ -23,13 +23,13 @@ typedef struct grid_scratch {
     unsigned char *badv;   /* [COLS] non-finite v */
 } grid_scratch;
 
-/* Contract the u-direction for one row, as bsi_eval_first_block does per column j; n1 = deg_v + 1
- * is a parameter so that the cubic case below gets loops of fixed length. */
-BSI_INLINE void contract_row_n(const bs_patch *p, size_t n1, const double *bu, const double *bum,
-                               int du, int dv, double *restrict q, double *restrict qu,
-                               double *restrict qv)
+/* Contract the u-direction for one row, as bsi_eval_first_block does per column j (degree 3 in v
+ * goes to bsi_contract_cubic instead: the same operations with the sums in registers). */
+BSI_HOT static void contract_row(const bs_patch *p, const double *bu, const double *bum, int du,
+                                 int dv, double *restrict q, double *restrict qu,
+                                 double *restrict qv)
 {
-    size_t m = p->deg_u, n = n1 - 1;
+    size_t m = p->deg_u, n1 = p->deg_v + 1, n = n1 - 1;
     for (size_t c = 0; c < p->ncoord; c++) {
         const double *net = p->hom + c * p->nctrl;
         double *qc = q + c * n1, *quc = qu + c * n1, *qvc = qv + c * n1;
@@ -50,15 +50,6 @@ BSI_INLINE void contract_row_n(const bs_patch *p, size_t n1, const double *bu, c
                     qvc[j] += w * (row[j + 1] - row[j]);
         }
     }
-}
-
-BSI_HOT static void contract_row(const bs_patch *p, const double *bu, const double *bum, int du,
-                                 int dv, double *q, double *qu, double *qv)
-{
-    if (p->deg_v == 3)
-        contract_row_n(p, 4, bu, bum, du, dv, q, qu, qv);
-    else
-        contract_row_n(p, p->deg_v + 1, bu, bum, du, dv, q, qu, qv);
 }
 
 /* dst[b] = scale * sum_j w[j][b] q[j], j ascending from -0.0 (so the first term is exact), the
@@ -129,6 +120,8 @@ typedef struct grid_call {
     const bs_patch *p;
     const bs_view *out[NOUT];   /* double outputs; all NULL for the float twin */
     const bs_fview *fout[NOUT]; /* float outputs; all NULL for doubles */
+    double *dpk[NOUT][BS_MAX_DIM]; /* data of the packed double views, else NULL */
+    float *fpk[NOUT][3];           /* data of the packed float views of the cubic loops, else NULL */
     unsigned char *kind;
     int f32, wpos;              /* floats wanted; positions wanted */
     int first, normals, wdu, wdv;
@@ -139,28 +132,21 @@ typedef struct grid_call {
 
 /* Where coordinate c of output o goes: straight into the caller's array when it is packed,
  * otherwise into scratch (copied out by store()). */
-static double *target(const grid_call *gc, int o, size_t c, size_t idx0, double *scratch)
+BSI_INLINE double *target(const grid_call *gc, int o, size_t c, size_t idx0, double *scratch)
 {
-    const bs_view *views = gc->out[o];
-    if (views != NULL && bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double))
-        return views[c].data + idx0;
-    return scratch;
+    return gc->dpk[o][c] != NULL ? gc->dpk[o][c] + idx0 : scratch;
 }
 
-static float *ftarget(const grid_call *gc, int o, size_t c, size_t idx0, float *scratch)
+BSI_INLINE float *ftarget(const grid_call *gc, int o, size_t c, size_t idx0, float *scratch)
 {
-    const bs_fview *views = gc->fout[o];
-    if (views != NULL && (views[c].stride == 0 || views[c].stride == (ptrdiff_t)sizeof(float)))
-        return views[c].data + idx0;
-    return scratch;
+    return gc->fpk[o][c] != NULL ? gc->fpk[o][c] + idx0 : scratch;
 }
 
-/* Doubles of coordinate c of output o to the caller, rounded to float for the float twin. */
-static void store(const grid_call *gc, int o, size_t c, size_t idx0, const double *src, size_t nb)
+static void copy_out(const grid_call *gc, int o, size_t c, size_t idx0, const double *src, size_t nb)
 {
     const bs_view *views = gc->out[o];
     const bs_fview *fviews = gc->fout[o];
-    if (views != NULL && src != views[c].data + idx0)
+    if (views != NULL)
         for (size_t b = 0; b < nb; b++)
             *bsi_at(&views[c], idx0 + b) = src[b];
     if (fviews != NULL)
@@ -168,13 +154,38 @@ static void store(const grid_call *gc, int o, size_t c, size_t idx0, const doubl
             *bsi_fat(&fviews[c], idx0 + b) = (float)src[b];
 }
 
-/* Floats of coordinate c of output o, when they were not written in place. */
-static void fstore(const grid_call *gc, int o, size_t c, size_t idx0, const float *src, size_t nb)
+/* Doubles of coordinate c of output o to the caller (rounded to float for the float twin), when
+ * they were not written in place. */
+BSI_INLINE void store(const grid_call *gc, int o, size_t c, size_t idx0, const double *src, size_t nb)
+{
+    if (gc->dpk[o][c] == NULL && (gc->out[o] != NULL || gc->fout[o] != NULL))
+        copy_out(gc, o, c, idx0, src, nb);
+}
+
+/* Floats of coordinate c of output o (from the cubic loops), when not written in place. */
+BSI_INLINE void fstore(const grid_call *gc, int o, size_t c, size_t idx0, const float *src, size_t nb)
 {
     const bs_fview *fviews = gc->fout[o];
-    if (fviews != NULL && src != fviews[c].data + idx0)
+    if (gc->fpk[o][c] == NULL && fviews != NULL)
         for (size_t b = 0; b < nb; b++)
             *bsi_fat(&fviews[c], idx0 + b) = src[b];
+}
+
+/* The packed views, whose arrays the loops write directly. */
+static void find_packed(grid_call *gc)
+{
+    for (int o = 0; o < NOUT; o++) {
+        size_t k = o == OUT_NRM ? 3 : gc->p->dim;
+        for (size_t c = 0; c < BS_MAX_DIM; c++) {
+            const bs_view *d = gc->out[o];
+            const bs_fview *f = gc->fout[o];
+            gc->dpk[o][c] = d != NULL && c < k && bsi_stride(d[c].stride) == (ptrdiff_t)sizeof(double)
+                                ? d[c].data : NULL;
+            if (c < 3)
+                gc->fpk[o][c] = f != NULL && c < k && (f[c].stride == 0 || f[c].stride == (ptrdiff_t)sizeof(float))
+                                    ? f[c].data : NULL;
+        }
+    }
 }
 
 static bs_status check_grid(const grid_call *gc, size_t nu, const bs_cview *u, size_t nv,
@@ -288,10 +299,10 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1, dim = p->dim;
     double bu[NMAX], bum[NMAX];
     bsi_bernstein_first(m, badu ? 0.0 : t, bu, bum);
-    contract_row(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
-    int rational = p->rational, first = gc->first;
-    /* Set below for every coordinate; NULL until then, so no indeterminate pointer is ever passed. */
-    double *ps[BS_MAX_DIM] = {NULL}, *pu[BS_MAX_DIM] = {NULL}, *pv[BS_MAX_DIM] = {NULL};
+    if (n == 3)
+        bsi_contract_cubic(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
+    else
+        contract_row(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
     if (gc->fused) {
         fused_row(gc, g, t, vcol, nb, idx0);
         return;
@@ -300,6 +311,9 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
         cubic_row(gc, g, vcol, nb, idx0);
         return;
     }
+    int rational = p->rational, first = gc->first;
+    /* Set below for every coordinate; NULL until then, so no indeterminate pointer is ever passed. */
+    double *ps[BS_MAX_DIM] = {NULL}, *pu[BS_MAX_DIM] = {NULL}, *pv[BS_MAX_DIM] = {NULL};
     for (size_t c = 0; c < p->ncoord; c++) {
         /* Polynomial patches write Cartesian results directly; rational ones go through h. */
         int cart = !rational && c < dim;
@@ -398,6 +412,7 @@ static bs_status eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size
     bs_status st = check_grid(&gc, nu, u, nv, v, &total);
     if (st != BS_OK)
         return st;
+    find_packed(&gc);
     int wdu = out[OUT_DU] != NULL || fout[OUT_DU] != NULL;
     int wdv = out[OUT_DV] != NULL || fout[OUT_DV] != NULL;
     gc.kind = kind;

@@ -5,6 +5,48 @@
  * of the grid's combine4 sums (and of bsi_eval_first_block), so every output has the same bits. */
 #include "core/kernels.h"
 
+/* The row's sums of degree 3 in v, kept in registers (4 columns j as one vector) until all m+1
+ * rows of the net are in: per element the operations of the general contraction, i ascending
+ * from -0.0 (same bits). m is a parameter so that the bicubic case gets unrolled loops. */
+BSI_INLINE void contract_cubic(const bs_patch *p, size_t m, const double *bu, const double *bum,
+                               int du, int dv, double *restrict q, double *restrict qu,
+                               double *restrict qv)
+{
+    for (size_t c = 0; c < p->ncoord; c++) {
+        const double *net = p->hom + c * p->nctrl;
+        double a[4] = {-0.0, -0.0, -0.0, -0.0}, au[4] = {-0.0, -0.0, -0.0, -0.0};
+        double av[4] = {-0.0, -0.0, -0.0, -0.0};
+        /* one loop per sum, so that each is a clean vector accumulation */
+#pragma GCC unroll 4
+        for (size_t i = 0; i <= m; i++)
+            for (size_t j = 0; j < 4; j++)
+                a[j] += bu[i] * net[4 * i + j];
+#pragma GCC unroll 4
+        for (size_t i = 0; du && i < m; i++)
+            for (size_t j = 0; j < 4; j++)
+                au[j] += bum[i] * (net[4 * i + 4 + j] - net[4 * i + j]);
+#pragma GCC unroll 4
+        for (size_t i = 0; dv && i <= m; i++)
+            for (size_t j = 0; j < 3; j++)
+                av[j] += bu[i] * (net[4 * i + j + 1] - net[4 * i + j]);
+        for (size_t j = 0; j < 4; j++) {
+            q[4 * c + j] = a[j];
+            qu[4 * c + j] = au[j];
+            qv[4 * c + j] = av[j];
+        }
+    }
+}
+
+BSI_HOT void bsi_contract_cubic(const bs_patch *p, const double *bu, const double *bum, int du,
+                                int dv, double *restrict q, double *restrict qu,
+                                double *restrict qv)
+{
+    if (p->deg_u == 3)
+        contract_cubic(p, 3, bu, bum, du, dv, q, qu, qv);
+    else
+        contract_cubic(p, p->deg_u, bu, bum, du, dv, q, qu, qv);
+}
+
 /* The column weights of the point, recomputed from its parameter rather than loaded from a
  * table: the same bits (bsi_bernstein_first uses bsi_bernstein3_first), and when the outputs are
  * bound for main memory, seven loads per point stall behind the queued stores and cost up to

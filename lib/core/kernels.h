@@ -28,15 +28,18 @@ void bsi_bernstein(size_t deg, double t, double *b);
 /* b[0..deg] = B(deg,i)(t) and, when deg > 0, bm[0..deg-1] = B(deg-1,i)(t) (the weights of the
  * first-derivative difference net). b is bit-identical to bsi_bernstein(deg, t, b). */
 void bsi_bernstein_first(size_t deg, double t, double *b, double *bm);
-/* bsi_bernstein_first for degree 3, written out: the same operations (same bits). */
+/* bsi_bernstein_first for degree 3, written out: the operations of the recurrence without its
+ * additions to 0.0 and multiplications by 1.0, which change no bit here (s = 1 - x is never -0.0,
+ * so s, s*s and s*s*s are never -0.0 either, and |s| >= 2^-53 keeps s*s*s from underflowing to
+ * zero), and save the grid's cubic loops three additions per point. */
 BSI_INLINE void bsi_bernstein3_first(double x, double w[4], double wm[3])
 {
     double s = 1.0 - x;
-    double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
-    wm[0] = 0.0 + s * a0;
+    double a0 = s, a1 = x;
+    wm[0] = s * a0;
     wm[1] = x * a0 + s * a1;
     wm[2] = x * a1;
-    w[0] = 0.0 + s * wm[0];
+    w[0] = s * wm[0];
     w[1] = x * wm[0] + s * wm[1];
     w[2] = x * wm[1] + s * wm[2];
     w[3] = x * wm[2];
@@ -97,6 +100,10 @@ void bsi_project_first(const bs_patch *p, const double *h, const double *hu, con
  * and S_v (by 3) into d0..d2. bsi_cubic_pos_normal: positions and the regular normal rule
  * (bsi_regular_normal) fused; flag[b] = 1.0 marks points left to bsi_normal, and their count is
  * returned. The _f32 twins store each double result rounded to float. */
+/* The grid's contraction along u of one row (u-weights bu, and bum for S_u) for deg_v = 3: q, qu,
+ * qv get 4 sums per coordinate, as the general contraction computes them (same bits). */
+void bsi_contract_cubic(const bs_patch *p, const double *bu, const double *bum, int du, int dv,
+                        double *q, double *qu, double *qv);
 #define BSI_CUBIC_KERNELS(ROWS, POS_NORMAL, T)                                                      \
     void ROWS(size_t nb, const double *vcol, const double *q, const double *qu, const double *qv,  \
               double m, T *s0, T *s1, T *s2, T *u0, T *u1, T *u2, T *d0, T *d1, T *d2);            \
