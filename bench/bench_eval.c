@@ -5,6 +5,8 @@
  * Workload: the 32 bicubic patches of the Utah teapot, a G x G grid of points per patch, outputs as
  * structure-of-arrays (one array per coordinate), for G = 64 and 256. A second table does the same
  * with float outputs (bs_patch_eval_grid_f32) against a store-only loop that writes floats.
+ * Every rate is the best of repeated runs; store-only, grid and scattered (double and float) run in
+ * turn, round after round, so that each sees the same load.
  * Usage: bench_eval [teapot.bpt] [seconds per measurement]
  *        bench_eval --once METHOD WORKLOAD G [teapot.bpt]   (one run, for bench/callgrind.sh)
  */
@@ -239,21 +241,31 @@ static int run_once(const context *cx, enum method m)
     return 0;
 }
 
-/* Best rate over repeated runs for about `budget` seconds, in million points per second. */
+/* Best rate of each of nm methods, in million points per second, over rounds that run each method
+ * once in turn for about nm * budget seconds: on a shared machine each method then sees the same
+ * spread of load, and the ratios of one run compare like with like. */
+static int measure_interleaved(const context *cx, const enum method *ms, int nm, double budget, double *rates)
+{
+    double points = (double)(NPATCH * cx->g * cx->g), start = now();
+    for (int k = 0; k < nm; k++)
+        rates[k] = 0.0;
+    for (int rounds = 0; rounds < 3 || now() - start < budget * nm; rounds++)
+        for (int k = 0; k < nm; k++) {
+            double t0 = now();
+            if (!run_once(cx, ms[k]))
+                return 0;
+            double dt = now() - t0;
+            if (dt > 0.0 && 1e-6 * points / dt > rates[k])
+                rates[k] = 1e-6 * points / dt;
+        }
+    return 1;
+}
+
+/* Best rate of one method over repeated runs for about `budget` seconds, in Mpts/s. */
 static double measure(const context *cx, enum method m, double budget)
 {
-    double points = (double)(NPATCH * cx->g * cx->g), best = 0.0, start = now();
-    int runs = 0;
-    while (runs < 3 || now() - start < budget) {
-        double t0 = now();
-        if (!run_once(cx, m))
-            return -1.0;
-        double dt = now() - t0;
-        if (dt > 0.0 && points / dt > best)
-            best = points / dt;
-        runs++;
-    }
-    return best * 1e-6;
+    double rate;
+    return measure_interleaved(cx, &m, 1, budget, &rate) ? rate : -1.0;
 }
 
 #define NMETHOD 6
@@ -385,10 +397,14 @@ int main(int argc, char **argv)
         }
         for (size_t wi = 0; wi < sizeof workloads / sizeof workloads[0]; wi++) {
             context cx = {nets, patches, t, su, sv, g, &workloads[wi], out, fout};
-            double store = measure(&cx, STORE, budget), naive = measure(&cx, NAIVE, budget);
-            double grid = measure(&cx, GRID, budget), scat = measure(&cx, SCATTERED, budget);
-            f32[s][wi][0] = measure(&cx, STORE32, budget);
-            f32[s][wi][1] = measure(&cx, GRID32, budget);
+            /* the naive reference alone (one of its runs takes as long as dozens of the others) */
+            static const enum method ms[5] = {STORE, GRID, SCATTERED, STORE32, GRID32};
+            double r[5], naive = measure(&cx, NAIVE, budget);
+            if (!measure_interleaved(&cx, ms, 5, budget, r))
+                return 1;
+            double store = r[0], grid = r[1], scat = r[2];
+            f32[s][wi][0] = r[3];
+            f32[s][wi][1] = r[4];
             printf("%-5zu %-11s %11.1f %11.1f %9.1f (%4.2f) %9.1f (%4.2f)\n", g, workloads[wi].name, store, naive,
                    grid, grid / store, scat, scat / store);
         }
