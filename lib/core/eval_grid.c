@@ -261,6 +261,11 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
     }
 }
 
+/* Coordinate c of output o (positions, S_u, S_v) of a cubic row, unrolled: per row the choice of
+ * target and the copy-out then cost a few instructions each. */
+#define EACH_CUBIC_OUTPUT(o, c)                                                                    \
+    _Pragma("GCC unroll 3") for (int o = 0; o < 3; o++) _Pragma("GCC unroll 3") for (size_t c = 0; c < 3; c++)
+
 /* row_pass for cubic rows of polynomial 3-D patches asked for positions and/or first partials
  * (gc->cubic is off when a parameter is not finite). */
 static void cubic_row(const grid_call *gc, grid_scratch *g, const double *vcol, size_t nb,
@@ -269,26 +274,22 @@ static void cubic_row(const grid_call *gc, grid_scratch *g, const double *vcol, 
     double m = (double)gc->p->deg_u;
     if (gc->f32) {
         float *fo[3][3];
-        for (int o = 0; o < 3; o++)
-            for (size_t c = 0; c < 3; c++)
-                fo[o][c] = ftarget(gc, o, c, idx0, g->f + (3 * (size_t)o + c) * COLS);
+        EACH_CUBIC_OUTPUT(o, c)
+            fo[o][c] = ftarget(gc, o, c, idx0, g->f + (3 * (size_t)o + c) * COLS);
         bsi_cubic_rows_f32(nb, vcol, g->q, g->qu, g->qv, m, fo[0][0], fo[0][1], fo[0][2],
                            gc->first ? fo[1][0] : NULL, fo[1][1], fo[1][2], fo[2][0], fo[2][1],
                            fo[2][2]);
-        for (int o = 0; o < 3; o++)
-            for (size_t c = 0; c < 3; c++)
-                fstore(gc, o, c, idx0, fo[o][c], nb);
+        EACH_CUBIC_OUTPUT(o, c)
+            fstore(gc, o, c, idx0, fo[o][c], nb);
         return;
     }
     double *po[3][3];
-    for (int o = 0; o < 3; o++)
-        for (size_t c = 0; c < 3; c++)
-            po[o][c] = target(gc, o, c, idx0, g->h + (3 * (size_t)o + c) * COLS);
+    EACH_CUBIC_OUTPUT(o, c)
+        po[o][c] = target(gc, o, c, idx0, g->h + (3 * (size_t)o + c) * COLS);
     bsi_cubic_rows(nb, vcol, g->q, g->qu, g->qv, m, po[0][0], po[0][1], po[0][2],
                    gc->first ? po[1][0] : NULL, po[1][1], po[1][2], po[2][0], po[2][1], po[2][2]);
-    for (int o = 0; o < 3; o++)
-        for (size_t c = 0; c < 3; c++)
-            store(gc, o, c, idx0, po[o][c], nb);
+    EACH_CUBIC_OUTPUT(o, c)
+        store(gc, o, c, idx0, po[o][c], nb);
 }
 
 /* One row pass: nb columns of row u = t starting at output index idx0. */
