@@ -215,7 +215,8 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
     float *fs[3], *fn[3];
     unsigned char *kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
     double *flag = g->hu; /* free in this pass */
-    double m = (double)gc->p->deg_u, zu2 = gc->sc.zu * gc->sc.zu, zv2 = gc->sc.zv * gc->sc.zv;
+    double m = (double)gc->p->deg_u, zu2 = bsi_normal_floor(gc->sc.zu);
+    double zv2 = bsi_normal_floor(gc->sc.zv);
     size_t nflag;
     for (size_t c = 0; c < 3; c++) {
         ps[c] = target(gc, OUT_POS, c, idx0, g->s + c * COLS);

@@ -135,19 +135,27 @@ void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const 
 /* ---- The regular normal rule at one point (lib/core/normal.c, lib/core/eval_grid.c) ----
  * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
  * when the point needs bsi_normal. Inline so that every vectorised caller does the same
- * operations (and gets the same bits). zu2, zv2: the squared zero thresholds of bsi_nscale. */
+ * operations (and gets the same bits). lo_u, lo_v: the lower bounds of |S_u|^2 and |S_v|^2 from
+ * bsi_normal_floor, each test of a lower bound done once. */
+/* The larger of 2^-450 (squares safe to multiply) and z^2 for a zero threshold z of bsi_nscale,
+ * NaN when z^2 is, so that q > bsi_normal_floor(z) is exactly q > 2^-450 && q > z^2. */
+static inline double bsi_normal_floor(double z)
+{
+    double z2 = z * z;
+    return !(z2 <= 0x1p-450) ? z2 : 0x1p-450;
+}
 typedef struct bsi_rnormal {
     double n0, n1, n2, flag;
 } bsi_rnormal;
 static inline bsi_rnormal bsi_regular_normal(double x0, double x1, double x2, double y0,
-                                             double y1, double y2, double zu2, double zv2)
+                                             double y1, double y2, double lo_u, double lo_v)
 {
     double qa = x0 * x0 + x1 * x1 + x2 * x2;
     double qb = y0 * y0 + y1 * y1 + y2 * y2;
     double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
     double qc = c0 * c0 + c1 * c1 + c2 * c2;
-    long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
-              (qb > zv2) & (qc > 0x1p-60 * (qa * qb));
+    long ok = (qa > lo_u) & (qa < 0x1p450) & (qb > lo_v) & (qb < 0x1p450) &
+              (qc > 0x1p-60 * (qa * qb));
     double inv = 1.0 / sqrt(qc);
     bsi_rnormal r;
     r.n0 = c0 * inv;
