@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define NMAX (BS_MAX_DEGREE + 1)
 /* Columns handled per pass: the outputs of one row pass stay in the first-level cache. */
@@ -104,12 +105,6 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
     case 5: combine5(nb, w, q, scaled, scale, dst); return;
     default: combine_any(nt, nb, w, q, scaled, scale, dst); return;
     }
-}
-
-static void fill(double *dst, size_t nb, double x)
-{
-    for (size_t b = 0; b < nb; b++)
-        dst[b] = x;
 }
 
 /* The outputs of one call: double views, or float views for bs_patch_eval_grid_f32 (the same
@@ -236,12 +231,12 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
         if (flag[b] == 0.0)
             continue;
         /* the derivatives again, by the same sums, for the full rule */
-        const double *w = g->wv + b, *wm = g->wvm + b;
-        double su[3], sv[3], r[3];
+        double w[4], wm[3], su[3], sv[3], r[3];
+        bsi_bernstein3_first(vcol[b], w, wm); /* the column's weights, as the loop formed them */
         for (size_t c = 0; c < 3; c++) {
             const double *qu = g->qu + 4 * c, *qv = g->qv + 4 * c;
-            su[c] = m * (w[0] * qu[0] + w[COLS] * qu[1] + w[2 * COLS] * qu[2] + w[3 * COLS] * qu[3]);
-            sv[c] = 3.0 * (wm[0] * qv[0] + wm[COLS] * qv[1] + wm[2 * COLS] * qv[2]);
+            su[c] = m * (w[0] * qu[0] + w[1] * qu[1] + w[2] * qu[2] + w[3] * qu[3]);
+            sv[c] = 3.0 * (wm[0] * qv[0] + wm[1] * qv[1] + wm[2] * qv[2]);
         }
         kd[b] = bsi_normal(gc->p, &gc->sc, t, vcol[b], su, sv, r);
         for (size_t c = 0; c < 3; c++) {
@@ -328,11 +323,11 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             if (gc->wdu)
                 combine(n1, nb, g->wv, g->qu + c * n1, 1, (double)m, hu);
             else
-                fill(hu, nb, 0.0);
+                memset(hu, 0, nb * sizeof *hu); /* +0.0 */
             if (gc->wdv)
                 combine(n, nb, g->wvm, g->qv + c * n1, 1, (double)n, hv);
             else
-                fill(hv, nb, 0.0);
+                memset(hv, 0, nb * sizeof *hv);
         }
         if (cart) {
             ps[c] = h;
@@ -451,26 +446,31 @@ static bs_status eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size
     g.kind = (unsigned char *)(g.f + nfloat);
     g.badv = g.kind + COLS;
 
+    int anybadu = 0;
+    for (size_t a = 0; a < nu; a++)
+        anybadu |= !isfinite(bsi_cget(u, a));
     for (size_t b0 = 0; b0 < nv; b0 += COLS) {
         size_t nb = nv - b0 < COLS ? nv - b0 : COLS;
-        int anybadv = 0, anybadu = 0;
+        int anybadv = 0;
         for (size_t b = 0; b < nb; b++) {
-            double t = bsi_cget(v, b0 + b), w[NMAX], wm[NMAX];
+            double t = bsi_cget(v, b0 + b);
             g.badv[b] = (unsigned char)!isfinite(t);
             anybadv |= g.badv[b];
             vcol[b] = g.badv[b] ? 0.0 : t;
+        }
+        int cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !anybadu && !anybadv;
+        gc.fused = cubic && gc.normals && !wdu && !wdv;
+        /* positions, or positions and first partials, of cubic rows without normals */
+        gc.cubic = cubic && !gc.normals && (gc.wpos || gc.first);
+        /* the column weights, but for cubic rows, which form them in their loops */
+        for (size_t b = 0; b < nb && !gc.fused && !gc.cubic; b++) {
+            double w[NMAX], wm[NMAX];
             bsi_bernstein_first(n, vcol[b], w, wm);
             for (size_t j = 0; j <= n; j++)
                 g.wv[j * COLS + b] = w[j];
             for (size_t j = 0; j < n; j++)
                 g.wvm[j * COLS + b] = wm[j];
         }
-        for (size_t a = 0; a < nu; a++)
-            anybadu |= !isfinite(bsi_cget(u, a));
-        int cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !anybadu && !anybadv;
-        gc.fused = cubic && gc.normals && !wdu && !wdv;
-        /* positions, or positions and first partials, of cubic rows without normals */
-        gc.cubic = cubic && !gc.normals && (gc.wpos || gc.first);
         for (size_t a = 0; a < nu; a++) {
             double t = bsi_cget(u, a);
             int badu = !isfinite(t);
@@ -485,16 +485,14 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
                              const bs_cview *v, const bs_view *pos, const bs_view *du,
                              const bs_view *dv, const bs_view *nrm, unsigned char *kind)
 {
-    const bs_view *out[NOUT] = {pos, du, dv, nrm};
-    const bs_fview *fout[NOUT] = {NULL, NULL, NULL, NULL};
-    return eval_grid(p, nu, u, nv, v, out, fout, kind);
+    return eval_grid(p, nu, u, nv, v, (const bs_view *const[NOUT]){pos, du, dv, nrm},
+                     (const bs_fview *const[NOUT]){NULL, NULL, NULL, NULL}, kind);
 }
 
 bs_status bs_patch_eval_grid_f32(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
                                  const bs_cview *v, const bs_fview *pos, const bs_fview *du,
                                  const bs_fview *dv, const bs_fview *nrm, unsigned char *kind)
 {
-    const bs_view *out[NOUT] = {NULL, NULL, NULL, NULL};
-    const bs_fview *fout[NOUT] = {pos, du, dv, nrm};
-    return eval_grid(p, nu, u, nv, v, out, fout, kind);
+    return eval_grid(p, nu, u, nv, v, (const bs_view *const[NOUT]){NULL, NULL, NULL, NULL},
+                     (const bs_fview *const[NOUT]){pos, du, dv, nrm}, kind);
 }
