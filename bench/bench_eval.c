@@ -3,7 +3,10 @@
  *   store-only  a plain loop that writes the same output arrays (what memory allows),
  *   naive-dC    a per-point de Casteljau evaluator written here (what a straightforward code does).
  * Workload: the 32 bicubic patches of the Utah teapot, a G x G grid of points per patch, outputs as
- * structure-of-arrays (one array per coordinate), for G = 64 and 256.
+ * structure-of-arrays (one array per coordinate), for G = 64 and 256. A second table does the same
+ * with float outputs (bs_patch_eval_grid_f32) against a store-only loop that writes floats.
+ * Every rate is the best of repeated runs; store-only, grid and scattered (double and float) run in
+ * turn, round after round, so that each sees the same load.
  * Usage: bench_eval [teapot.bpt] [seconds per measurement]
  *        bench_eval --once METHOD WORKLOAD G [teapot.bpt]   (one run, for bench/callgrind.sh)
  */
@@ -77,6 +80,16 @@ STORE_CLONES NOINLINE static void store_only(double **arrays, int narrays, size_
     }
 }
 
+/* The float outputs' memory limit: the same loop writing floats. */
+STORE_CLONES NOINLINE static void store_only_f32(float **arrays, int narrays, size_t npts)
+{
+    for (int a = 0; a < narrays; a++) {
+        float *out = arrays[a], x = 1.0f + (float)a;
+        for (size_t i = 0; i < npts; i++)
+            out[i] = x;
+    }
+}
+
 /* de Casteljau of 4 values down to the last two (a0, a1); the point is (1-t)a0 + t a1. */
 static void casteljau_last_two(const double b[4], double t, double *a0, double *a1)
 {
@@ -140,21 +153,36 @@ static void views_at(double **arrays, int first, int count, size_t offset, size_
     }
 }
 
-static int lib_grid(bs_patch **patches, const double *t, size_t g, const workload *w, double **out)
+static void fviews_at(float **arrays, int first, size_t offset, size_t n, bs_fview *views)
+{
+    for (int c = 0; c < 3; c++) {
+        views[c].data = arrays[first + c] + offset;
+        views[c].count = n;
+        views[c].stride = 0;
+    }
+}
+
+/* The grid evaluator into out, or with float outputs into fout when it is not NULL. */
+static int lib_grid(bs_patch **patches, const double *t, size_t g, const workload *w, double **out, float **fout)
 {
     bs_cview tv = {t, g, 0};
     for (size_t k = 0; k < NPATCH; k++) {
-        bs_view pos[3], du[3], dv[3], nrm[3];
+        bs_view v[9];
+        bs_fview f[9];
         size_t off = k * g * g;
-        views_at(out, 0, 3, off, g * g, pos);
-        if (w->derivs) {
-            views_at(out, 3, 3, off, g * g, du);
-            views_at(out, 6, 3, off, g * g, dv);
+        if (fout != NULL) {
+            for (int a = 0; a < 9; a += 3)
+                fviews_at(fout, a, off, g * g, f + a);
+        } else {
+            views_at(out, 0, 9, off, g * g, v);
         }
-        if (w->normals)
-            views_at(out, 3, 3, off, g * g, nrm);
-        if (bs_patch_eval_grid(patches[k], g, &tv, g, &tv, pos, w->derivs ? du : NULL, w->derivs ? dv : NULL,
-                               w->normals ? nrm : NULL, NULL) != BS_OK)
+        /* normals go to the arrays of S_u */
+        int d = w->derivs, n = w->normals;
+        bs_status st = fout != NULL ? bs_patch_eval_grid_f32(patches[k], g, &tv, g, &tv, f, d ? f + 3 : NULL,
+                                                             d ? f + 6 : NULL, n ? f + 3 : NULL, NULL)
+                                    : bs_patch_eval_grid(patches[k], g, &tv, g, &tv, v, d ? v + 3 : NULL,
+                                                         d ? v + 6 : NULL, n ? v + 3 : NULL, NULL);
+        if (st != BS_OK)
             return 0;
     }
     return 1;
@@ -195,46 +223,60 @@ typedef struct context {
     size_t g;
     const workload *w;
     double **out;
+    float **fout; /* the same arrays, written as floats */
 } context;
 
-enum method { STORE, NAIVE, GRID, SCATTERED };
+enum method { STORE, NAIVE, GRID, SCATTERED, STORE32, GRID32 };
 
 static int run_once(const context *cx, enum method m)
 {
     switch (m) {
     case STORE: store_only(cx->out, cx->w->narrays, NPATCH * cx->g * cx->g); return 1;
     case NAIVE: naive_grid(cx->nets, cx->t, cx->g, cx->w, cx->out); return 1;
-    case GRID: return lib_grid(cx->patches, cx->t, cx->g, cx->w, cx->out);
+    case GRID: return lib_grid(cx->patches, cx->t, cx->g, cx->w, cx->out, NULL);
     case SCATTERED: return lib_scattered(cx->patches, cx->su, cx->sv, cx->g, cx->w, cx->out);
+    case STORE32: store_only_f32(cx->fout, cx->w->narrays, NPATCH * cx->g * cx->g); return 1;
+    case GRID32: return lib_grid(cx->patches, cx->t, cx->g, cx->w, NULL, cx->fout);
     }
     return 0;
 }
 
-/* Best rate over repeated runs for about `budget` seconds, in million points per second. */
-static double measure(const context *cx, enum method m, double budget)
+/* Best rate of each of nm methods, in million points per second, over rounds that run each method
+ * once in turn for about nm * budget seconds: on a shared machine each method then sees the same
+ * spread of load, and the ratios of one run compare like with like. */
+static int measure_interleaved(const context *cx, const enum method *ms, int nm, double budget, double *rates)
 {
-    double points = (double)(NPATCH * cx->g * cx->g), best = 0.0, start = now();
-    int runs = 0;
-    while (runs < 3 || now() - start < budget) {
-        double t0 = now();
-        if (!run_once(cx, m))
-            return -1.0;
-        double dt = now() - t0;
-        if (dt > 0.0 && points / dt > best)
-            best = points / dt;
-        runs++;
-    }
-    return best * 1e-6;
+    double points = (double)(NPATCH * cx->g * cx->g), start = now();
+    for (int k = 0; k < nm; k++)
+        rates[k] = 0.0;
+    for (int rounds = 0; rounds < 3 || now() - start < budget * nm; rounds++)
+        for (int k = 0; k < nm; k++) {
+            double t0 = now();
+            if (!run_once(cx, ms[k]))
+                return 0;
+            double dt = now() - t0;
+            if (dt > 0.0 && 1e-6 * points / dt > rates[k])
+                rates[k] = 1e-6 * points / dt;
+        }
+    return 1;
 }
 
-static const char *const method_names[] = {"store", "naive", "grid", "scattered"};
+/* Best rate of one method over repeated runs for about `budget` seconds, in Mpts/s. */
+static double measure(const context *cx, enum method m, double budget)
+{
+    double rate;
+    return measure_interleaved(cx, &m, 1, budget, &rate) ? rate : -1.0;
+}
+
+#define NMETHOD 6
+static const char *const method_names[NMETHOD] = {"store", "naive", "grid", "scattered", "store32", "grid32"};
 
 /* One run of one method, so that an instruction counter sees exactly that work. */
 static int run_single(double nets[NPATCH][NCTRL * 3], bs_patch **patches, char **argv)
 {
     int m = -1;
     const workload *w = NULL;
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < NMETHOD; k++)
         if (strcmp(argv[0], method_names[k]) == 0)
             m = k;
     for (size_t k = 0; k < sizeof workloads / sizeof workloads[0]; k++)
@@ -242,7 +284,7 @@ static int run_single(double nets[NPATCH][NCTRL * 3], bs_patch **patches, char *
             w = &workloads[k];
     size_t g = (size_t)atoi(argv[2]);
     if (m < 0 || w == NULL || g < 2 || g > 4096) {
-        fprintf(stderr, "bench_eval --once: METHOD is store|naive|grid|scattered, WORKLOAD pos|pos+du+dv|pos+normal\n");
+        fprintf(stderr, "bench_eval --once: METHOD is store|naive|grid|scattered|store32|grid32, WORKLOAD pos|pos+du+dv|pos+normal\n");
         return 2;
     }
     size_t npts = NPATCH * g * g;
@@ -256,7 +298,10 @@ static int run_single(double nets[NPATCH][NCTRL * 3], bs_patch **patches, char *
         su[i] = t[i % g];
         sv[i] = t[(i / g) % g];
     }
-    context cx = {nets, patches, t, su, sv, g, w, out};
+    float *fout[9];
+    for (int a = 0; a < 9; a++)
+        fout[a] = (float *)(void *)out[a];
+    context cx = {nets, patches, t, su, sv, g, w, out, fout};
     int ok = run_once(&cx, (enum method)m);
     printf("%s %s G=%zu: %zu points\n", method_names[m], w->name, g, npts);
     for (int a = 0; a < 9; a++)
@@ -281,7 +326,7 @@ static void tessellation_vs_grid(bs_patch **patches, double budget)
         out[a] = malloc(npts * sizeof(double));
     for (size_t a = 0; a < g; a++)
         t[a] = (double)a / (double)TESS;
-    context cx = {NULL, patches, t, NULL, NULL, g, &workloads[2], out};
+    context cx = {NULL, patches, t, NULL, NULL, g, &workloads[2], out, NULL};
     double grid = measure(&cx, GRID, budget); /* Mpts/s */
     double best = 0.0, start = now();
     size_t verts = 0;
@@ -331,12 +376,16 @@ int main(int argc, char **argv)
     printf("%-5s %-11s %11s %11s %17s %17s\n", "G", "workload", "store-only", "naive-dC", "grid (x store)",
            "scattered (x st.)");
     const size_t sizes[2] = {64, 256};
+    double f32[2][3][2]; /* float outputs: store-only and grid, per size and workload */
     for (int s = 0; s < 2; s++) {
         size_t g = sizes[s], npts = NPATCH * g * g;
         double *t = malloc(g * sizeof(double)), *su = malloc(npts * sizeof(double)), *sv = malloc(npts * sizeof(double));
         double *out[9];
-        for (int a = 0; a < 9; a++)
+        float *fout[9];
+        for (int a = 0; a < 9; a++) {
             out[a] = malloc(npts * sizeof(double));
+            fout[a] = (float *)(void *)out[a];
+        }
         for (size_t a = 0; a < g; a++)
             t[a] = (double)a / (double)(g - 1);
         unsigned long long state = 12345;
@@ -347,9 +396,15 @@ int main(int argc, char **argv)
             sv[i] = (double)(state >> 11) * 0x1.0p-53;
         }
         for (size_t wi = 0; wi < sizeof workloads / sizeof workloads[0]; wi++) {
-            context cx = {nets, patches, t, su, sv, g, &workloads[wi], out};
-            double store = measure(&cx, STORE, budget), naive = measure(&cx, NAIVE, budget);
-            double grid = measure(&cx, GRID, budget), scat = measure(&cx, SCATTERED, budget);
+            context cx = {nets, patches, t, su, sv, g, &workloads[wi], out, fout};
+            /* the naive reference alone (one of its runs takes as long as dozens of the others) */
+            static const enum method ms[5] = {STORE, GRID, SCATTERED, STORE32, GRID32};
+            double r[5], naive = measure(&cx, NAIVE, budget);
+            if (!measure_interleaved(&cx, ms, 5, budget, r))
+                return 1;
+            double store = r[0], grid = r[1], scat = r[2];
+            f32[s][wi][0] = r[3];
+            f32[s][wi][1] = r[4];
             printf("%-5zu %-11s %11.1f %11.1f %9.1f (%4.2f) %9.1f (%4.2f)\n", g, workloads[wi].name, store, naive,
                    grid, grid / store, scat, scat / store);
         }
@@ -359,6 +414,12 @@ int main(int argc, char **argv)
         free(su);
         free(sv);
     }
+    printf("float outputs (bs_patch_eval_grid_f32), Mpts/s\n%-5s %-11s %11s %17s\n", "G", "workload",
+           "store-only", "grid (x store)");
+    for (int s = 0; s < 2; s++)
+        for (int wi = 0; wi < 3; wi++)
+            printf("%-5zu %-11s %11.1f %9.1f (%4.2f)\n", sizes[s], workloads[wi].name, f32[s][wi][0],
+                   f32[s][wi][1], f32[s][wi][1] / f32[s][wi][0]);
     tessellation_vs_grid(patches, budget);
     for (int k = 0; k < NPATCH; k++)
         bs_patch_destroy(patches[k]);

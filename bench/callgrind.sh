@@ -11,9 +11,11 @@ trap 'rm -rf "$tmp"' EXIT
 points=$((32 * g * g))
 printf '%-10s %-11s %12s\n' method workload "instr/point"
 for w in pos pos+du+dv pos+normal; do
-  for m in store naive grid scattered; do
+  for m in store naive grid scattered store32 grid32; do
     case "$m" in
-      store) fn="store_only*" ;; # the clone the CPU dispatch picked
+      store) fn="store_only.*" ;; # the clone the CPU dispatch picked
+      store32) fn="store_only_f32*" ;;
+      grid32) fn=bs_patch_eval_grid_f32 ;;
       naive) fn=naive_grid ;;
       grid) fn=bs_patch_eval_grid ;;
       scattered) if [ "$w" = pos+normal ]; then fn=bs_patch_eval_normal; else fn=bs_patch_eval; fi ;;

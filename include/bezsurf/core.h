@@ -118,6 +118,18 @@ typedef struct bs_cview {
     ptrdiff_t stride;   /**< bytes between consecutive elements; 0 means sizeof(double) */
 } bs_cview;
 
+/**
+ * A strided output buffer of floats, for results wanted in single precision (e.g. for a GPU).
+ * The rules of bs_view apply with float in place of double: a stride of 0 means sizeof(float),
+ * `data` must be aligned for float and `stride` a multiple of sizeof(float).
+ * @since 1.1
+ */
+typedef struct bs_fview {
+    float *data;       /**< element 0 */
+    size_t count;      /**< number of elements the view can hold */
+    ptrdiff_t stride;  /**< bytes between consecutive elements; 0 means sizeof(float) */
+} bs_fview;
+
 /* ------------------------------------------------------------------------------------------------
  * Patches. A patch of degree (m, n) has an (m+1) x (n+1) net of control points of dimension dim.
  * Packed control points: point (i,j) coordinate c is at ctrl[(i*(n+1) + j)*dim + c], i along u, j
@@ -349,6 +361,38 @@ BS_API bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cvie
 BS_API bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
                                     const bs_cview *v, const bs_view *pos, const bs_view *du,
                                     const bs_view *dv, const bs_view *nrm, unsigned char *kind);
+
+/**
+ * @brief bs_patch_eval_grid() with float outputs: every value is the double result of
+ * bs_patch_eval_grid() for the same arguments, correctly rounded to float (round to nearest even;
+ * beyond the float range it becomes an infinity, a NaN stays a NaN). So the accuracy contract of
+ * the double results holds with one float rounding added, and the normal kinds are the same.
+ * Arguments are checked in the same order and with the same statuses as bs_patch_eval_grid(),
+ * float views by the rules of bs_fview; on failure nothing is written.
+ * @param[in]  p     the patch.
+ * @param[in]  nu    number of u-parameters; 0 is a no-op.
+ * @param[in]  u     view of nu u-parameters (double).
+ * @param[in]  nv    number of v-parameters; 0 is a no-op.
+ * @param[in]  v     view of nv v-parameters (double).
+ * @param[out] pos   NULL or dim float views of nu*nv elements receiving S.
+ * @param[out] du    NULL or dim float views receiving dS/du.
+ * @param[out] dv    NULL or dim float views receiving dS/dv.
+ * @param[out] nrm   NULL or 3 float views receiving unit normals (dim must be 3 when not NULL).
+ * @param[out] kind  NULL or nu*nv bytes receiving the normal kinds (dim must be 3 when not NULL).
+ * @return BS_OK on success (also when nu or nv is 0).
+ * @return BS_ERR_INVALID_ARG if p, u or v is NULL, or a view's data is NULL or misaligned or its
+ *         stride not a multiple of its element size.
+ * @return BS_ERR_DIMENSION if nrm or kind is given and the patch's dim is not 3 (checked before
+ *         the views).
+ * @return BS_ERR_SIZE if u or v is shorter than nu or nv, nu*nv overflows size_t (checked after u
+ *         and v), or an output view holds fewer than nu*nv elements or its byte extent overflows.
+ * @return BS_ERR_NO_MEMORY if the scratch space (under 300 kB, independent of nu and nv) cannot be
+ *         allocated.
+ * @since 1.1
+ */
+BS_API bs_status bs_patch_eval_grid_f32(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                                        const bs_cview *v, const bs_fview *pos, const bs_fview *du,
+                                        const bs_fview *dv, const bs_fview *nrm, unsigned char *kind);
 
 #ifdef __cplusplus
 }

@@ -220,6 +220,39 @@ BS_API bs_status bs_mesh_copy_normals(const bs_mesh *m, const bs_view nrm[3]);
 BS_API bs_status bs_mesh_copy_uv(const bs_mesh *m, const bs_view uv[2]);
 
 /**
+ * @brief bs_mesh_copy_positions() into float views, e.g. for a GPU vertex buffer (an interleaved
+ * x, y, z buffer is 3 views with a stride of 3 * sizeof(float)). Each value is the double that
+ * bs_mesh_copy_positions() gives, correctly rounded to float.
+ * @param[in]  m    the mesh.
+ * @param[out] xyz  3 float views (see bs_fview): x, y and z of each vertex.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or xyz is NULL or a view's data is NULL or misaligned for
+ *         float or its stride not a multiple of sizeof(float); BS_ERR_SIZE if a view is too short
+ *         (nothing is written then). With 0 vertices the views are not read.
+ * @since 1.1
+ */
+BS_API bs_status bs_mesh_copy_positions_f32(const bs_mesh *m, const bs_fview xyz[3]);
+
+/**
+ * @brief bs_mesh_copy_normals() into float views: each value is the double normal coordinate,
+ * correctly rounded to float.
+ * @param[in]  m    the mesh.
+ * @param[out] nrm  3 float views: the normal's x, y and z of each vertex.
+ * @return as bs_mesh_copy_positions_f32().
+ * @since 1.1
+ */
+BS_API bs_status bs_mesh_copy_normals_f32(const bs_mesh *m, const bs_fview nrm[3]);
+
+/**
+ * @brief bs_mesh_copy_uv() into float views: each parameter is the double one, correctly rounded
+ * to float.
+ * @param[in]  m    the mesh.
+ * @param[out] uv   2 float views: u and v of each vertex.
+ * @return as bs_mesh_copy_positions_f32().
+ * @since 1.1
+ */
+BS_API bs_status bs_mesh_copy_uv_f32(const bs_mesh *m, const bs_fview uv[2]);
+
+/**
  * @brief Copy the per-vertex patch ids (the patch each vertex was evaluated on).
  * @param[in]  m    the mesh.
  * @param[out] ids  room for cap ids (not read when there are no vertices).

@@ -26,6 +26,34 @@ static void binomial_row(unsigned k, double *c)
     }
 }
 
+/* The homogeneous partials hd[(a*(mb+1) + b)*nc + c], a <= ma, b <= mb, from the basis derivatives
+ * wu (along u) and wv (along v): u contracted first (i ascending), then v (j ascending). n1 =
+ * deg_v + 1 is a parameter so that bicubic patches (limit normals, curvature) get loops of fixed
+ * length over j, vectorised across j: the same operations per entry (same bits). */
+static inline void contract_table(const bs_patch *p, size_t n1, size_t ma, size_t mb,
+                                  const double *wu, const double *wv, double *restrict q,
+                                  double *restrict hd)
+{
+    size_t m = p->deg_u, nc = p->ncoord;
+    for (size_t c = 0; c < nc; c++) {
+        const double *net = p->hom + c * p->nctrl;
+        for (size_t a = 0; a <= ma; a++) {
+            const double *w = wu + a * (m + 1);
+            for (size_t j = 0; j < n1; j++)
+                q[j] = -0.0;
+            for (size_t i = 0; i <= m; i++)
+                for (size_t j = 0; j < n1; j++)
+                    q[j] += w[i] * net[i * n1 + j];
+            for (size_t b = 0; b <= mb; b++) {
+                double acc = -0.0;
+                for (size_t j = 0; j < n1; j++)
+                    acc += wv[b * n1 + j] * q[j];
+                hd[(a * (mb + 1) + b) * nc + c] = acc;
+            }
+        }
+    }
+}
+
 void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
                      double *scratch, double *out)
 {
@@ -37,23 +65,10 @@ void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigne
         bsi_bernstein_deriv(m, (unsigned)a, u, wu + a * (m + 1));
     for (size_t b = 0; b <= mb; b++)
         bsi_bernstein_deriv(n, (unsigned)b, v, wv + b * (n + 1));
-    for (size_t c = 0; c < nc; c++) {
-        const double *net = p->hom + c * p->nctrl;
-        for (size_t a = 0; a <= ma; a++) {
-            const double *w = wu + a * (m + 1);
-            for (size_t j = 0; j <= n; j++)
-                q[j] = -0.0;
-            for (size_t i = 0; i <= m; i++)
-                for (size_t j = 0; j <= n; j++)
-                    q[j] += w[i] * net[i * (n + 1) + j];
-            for (size_t b = 0; b <= mb; b++) {
-                double acc = -0.0;
-                for (size_t j = 0; j <= n; j++)
-                    acc += wv[b * (n + 1) + j] * q[j];
-                hd[(a * (mb + 1) + b) * nc + c] = acc;
-            }
-        }
-    }
+    if (n == 3)
+        contract_table(p, 4, ma, mb, wu, wv, q, hd);
+    else
+        contract_table(p, n + 1, ma, mb, wu, wv, q, hd);
     size_t kb1 = (size_t)kb + 1;
     if (!p->rational) {
         for (size_t a = 0; a <= ka; a++)

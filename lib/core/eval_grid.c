@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define NMAX (BS_MAX_DEGREE + 1)
 /* Columns handled per pass: the outputs of one row pass stay in the first-level cache. */
@@ -18,17 +19,18 @@ typedef struct grid_scratch {
     double *h, *hu, *hv;   /* [c][COLS] homogeneous results of one pass */
     double *s, *su, *sv;   /* [c][COLS] Cartesian results not written in place */
     double *nrm;           /* [3][COLS] normals not written in place */
+    float *f;              /* [9][COLS] float results not written in place */
     unsigned char *kind;   /* [COLS] normal kinds not written in place */
     unsigned char *badv;   /* [COLS] non-finite v */
 } grid_scratch;
 
-/* Contract the u-direction for one row, as bsi_eval_first_block does per column j; n1 = deg_v + 1
- * is a parameter so that the cubic case below gets loops of fixed length. */
-BSI_INLINE void contract_row_n(const bs_patch *p, size_t n1, const double *bu, const double *bum,
-                               int du, int dv, double *restrict q, double *restrict qu,
-                               double *restrict qv)
+/* Contract the u-direction for one row, as bsi_eval_first_block does per column j (degree 3 in v
+ * goes to bsi_contract_cubic instead: the same operations with the sums in registers). */
+BSI_HOT static void contract_row(const bs_patch *p, const double *bu, const double *bum, int du,
+                                 int dv, double *restrict q, double *restrict qu,
+                                 double *restrict qv)
 {
-    size_t m = p->deg_u, n = n1 - 1;
+    size_t m = p->deg_u, n1 = p->deg_v + 1, n = n1 - 1;
     for (size_t c = 0; c < p->ncoord; c++) {
         const double *net = p->hom + c * p->nctrl;
         double *qc = q + c * n1, *quc = qu + c * n1, *qvc = qv + c * n1;
@@ -49,15 +51,6 @@ BSI_INLINE void contract_row_n(const bs_patch *p, size_t n1, const double *bu, c
                     qvc[j] += w * (row[j + 1] - row[j]);
         }
     }
-}
-
-BSI_HOT static void contract_row(const bs_patch *p, const double *bu, const double *bum, int du,
-                                 int dv, double *q, double *qu, double *qv)
-{
-    if (p->deg_v == 3)
-        contract_row_n(p, 4, bu, bum, du, dv, q, qu, qv);
-    else
-        contract_row_n(p, p->deg_v + 1, bu, bum, du, dv, q, qu, qv);
 }
 
 /* dst[b] = scale * sum_j w[j][b] q[j], j ascending from -0.0 (so the first term is exact), the
@@ -114,134 +107,99 @@ static void combine(size_t nt, size_t nb, const double *w, const double *q, int 
     }
 }
 
-/* The column weights of the point, recomputed from its parameter rather than loaded from the
- * table: the same bits (bsi_bernstein_first uses bsi_bernstein3_first), and when the outputs are
- * bound for main memory, seven loads per point stall behind the queued stores and cost up to
- * 2.4 times the time (docs/performance.md). */
-#define CUBIC_WEIGHTS(t)                                                                           \
-    double cw_[4], cwm_[3];                                                                        \
-    bsi_bernstein3_first(t, cw_, cwm_);                                                            \
-    double w0 = cw_[0], w1 = cw_[1], w2 = cw_[2], w3 = cw_[3];                                     \
-    double v0 = cwm_[0], v1 = cwm_[1], v2 = cwm_[2];                                              \
-    (void)v0, (void)v1, (void)v2
-#define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
-#define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
-/* Cubic rows of a polynomial 3-D patch: the three coordinates' combine4 sums in one loop, so
- * that each point's weights serve all of them. Positions, and when u0 != NULL also S_u (scaled by
- * m) into u0..u2 and S_v (by 3) into d0..d2; same operations per point as combine() (same bits). */
-BSI_HOT static void cubic_rows(size_t nb, const double *restrict vcol,
-                               const double *restrict q, const double *restrict qu,
-                               const double *restrict qv, double m, double *restrict s0,
-                               double *restrict s1, double *restrict s2, double *restrict u0,
-                               double *restrict u1, double *restrict u2, double *restrict d0,
-                               double *restrict d1, double *restrict d2)
-{
-    if (u0 == NULL)
-        for (size_t b = 0; b < nb; b++) {
-            CUBIC_WEIGHTS(vcol[b]);
-            s0[b] = VAL(q);
-            s1[b] = VAL(q + 4);
-            s2[b] = VAL(q + 8);
-        }
-    else
-        for (size_t b = 0; b < nb; b++) {
-            CUBIC_WEIGHTS(vcol[b]);
-            s0[b] = VAL(q);
-            s1[b] = VAL(q + 4);
-            s2[b] = VAL(q + 8);
-            u0[b] = m * VAL(qu);
-            u1[b] = m * VAL(qu + 4);
-            u2[b] = m * VAL(qu + 8);
-            d0[b] = DV(qv);
-            d1[b] = DV(qv + 4);
-            d2[b] = DV(qv + 8);
-        }
-}
+/* The outputs of one call: double views, or float views for bs_patch_eval_grid_f32 (the same
+ * doubles, each rounded to float when stored). */
+enum { OUT_POS, OUT_DU, OUT_DV, OUT_NRM, NOUT };
 
-/* Cubic rows of a polynomial 3-D patch, positions and normals only: the three coordinates'
- * combine4 sums (value, S_u scaled by m, S_v by 3) and the regular normal rule, fused so that the
- * derivatives never leave registers. Same operations per point as combine() followed by
- * bsi_normal_block (same bits); flag[b] = 1.0 marks points left to bsi_normal, and the count
- * of such points is returned. */
-BSI_HOT static size_t cubic_pos_normal(size_t nb, const double *restrict vcol,
-                                       const double *restrict q, const double *restrict qu,
-                                       const double *restrict qv, double m, double zu2,
-                                       double zv2, double *restrict s0, double *restrict s1,
-                                       double *restrict s2, double *restrict n0,
-                                       double *restrict n1, double *restrict n2,
-                                       double *restrict flag)
-{
-    size_t nflag = 0;
-    for (size_t b = 0; b < nb; b++) {
-        CUBIC_WEIGHTS(vcol[b]);
-        s0[b] = VAL(q);
-        s1[b] = VAL(q + 4);
-        s2[b] = VAL(q + 8);
-        bsi_rnormal r = bsi_regular_normal(m * VAL(qu), m * VAL(qu + 4), m * VAL(qu + 8), DV(qv),
-                                           DV(qv + 4), DV(qv + 8), zu2, zv2);
-        n0[b] = r.n0;
-        n1[b] = r.n1;
-        n2[b] = r.n2;
-        flag[b] = r.flag;
-        nflag += r.flag != 0.0;
-    }
-    return nflag;
-}
-#undef CUBIC_WEIGHTS
-#undef VAL
-#undef DV
+typedef struct grid_call {
+    const bs_patch *p;
+    const bs_view *out[NOUT];   /* double outputs; all NULL for the float twin */
+    const bs_fview *fout[NOUT]; /* float outputs; all NULL for doubles */
+    double *dpk[NOUT][BS_MAX_DIM]; /* data of the packed double views, else NULL */
+    float *fpk[NOUT][3];           /* data of the packed float views of the cubic loops, else NULL */
+    unsigned char *kind;
+    int f32, wpos;              /* floats wanted; positions wanted */
+    int first, normals, wdu, wdv;
+    int fused; /* bsi_cubic_pos_normal applies */
+    int cubic; /* bsi_cubic_rows applies */
+    bsi_nscale sc;
+} grid_call;
 
-static void fill(double *dst, size_t nb, double x)
-{
-    for (size_t b = 0; b < nb; b++)
-        dst[b] = x;
-}
-
-/* Where coordinate c of a result goes: straight into the caller's array when it is packed,
+/* Where coordinate c of output o goes: straight into the caller's array when it is packed,
  * otherwise into scratch (copied out by store()). */
-static double *target(const bs_view *views, size_t c, size_t idx0, double *scratch)
+BSI_INLINE double *target(const grid_call *gc, int o, size_t c, size_t idx0, double *scratch)
 {
-    if (views != NULL && bsi_stride(views[c].stride) == (ptrdiff_t)sizeof(double))
-        return (double *)views[c].data + idx0;
-    return scratch;
+    return gc->dpk[o][c] != NULL ? gc->dpk[o][c] + idx0 : scratch;
 }
 
-static void store(const bs_view *views, size_t c, size_t idx0, const double *src, size_t nb)
+BSI_INLINE float *ftarget(const grid_call *gc, int o, size_t c, size_t idx0, float *scratch)
 {
-    if (views == NULL || src == (const double *)views[c].data + idx0)
-        return;
-    for (size_t b = 0; b < nb; b++)
-        *bsi_at(&views[c], idx0 + b) = src[b];
+    return gc->fpk[o][c] != NULL ? gc->fpk[o][c] + idx0 : scratch;
 }
 
-static bs_status check_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
-                            const bs_cview *v, const bs_view *pos, const bs_view *du,
-                            const bs_view *dv, const bs_view *nrm, size_t *total)
+static void copy_out(const grid_call *gc, int o, size_t c, size_t idx0, const double *src, size_t nb)
+{
+    const bs_view *views = gc->out[o];
+    const bs_fview *fviews = gc->fout[o];
+    if (views != NULL)
+        for (size_t b = 0; b < nb; b++)
+            *bsi_at(&views[c], idx0 + b) = src[b];
+    if (fviews != NULL)
+        for (size_t b = 0; b < nb; b++)
+            *bsi_fat(&fviews[c], idx0 + b) = (float)src[b];
+}
+
+/* Doubles of coordinate c of output o to the caller (rounded to float for the float twin), when
+ * they were not written in place. */
+BSI_INLINE void store(const grid_call *gc, int o, size_t c, size_t idx0, const double *src, size_t nb)
+{
+    if (gc->dpk[o][c] == NULL && (gc->out[o] != NULL || gc->fout[o] != NULL))
+        copy_out(gc, o, c, idx0, src, nb);
+}
+
+/* Floats of coordinate c of output o (from the cubic loops), when not written in place. */
+BSI_INLINE void fstore(const grid_call *gc, int o, size_t c, size_t idx0, const float *src, size_t nb)
+{
+    const bs_fview *fviews = gc->fout[o];
+    if (gc->fpk[o][c] == NULL && fviews != NULL)
+        for (size_t b = 0; b < nb; b++)
+            *bsi_fat(&fviews[c], idx0 + b) = src[b];
+}
+
+/* The packed views, whose arrays the loops write directly. */
+static void find_packed(grid_call *gc)
+{
+    for (int o = 0; o < NOUT; o++) {
+        size_t k = o == OUT_NRM ? 3 : gc->p->dim;
+        for (size_t c = 0; c < BS_MAX_DIM; c++) {
+            const bs_view *d = gc->out[o];
+            const bs_fview *f = gc->fout[o];
+            gc->dpk[o][c] = d != NULL && c < k && bsi_stride(d[c].stride) == (ptrdiff_t)sizeof(double)
+                                ? d[c].data : NULL;
+            if (c < 3)
+                gc->fpk[o][c] = f != NULL && c < k && (f[c].stride == 0 || f[c].stride == (ptrdiff_t)sizeof(float))
+                                    ? f[c].data : NULL;
+        }
+    }
+}
+
+static bs_status check_grid(const grid_call *gc, size_t nu, const bs_cview *u, size_t nv,
+                            const bs_cview *v, size_t *total)
 {
     bs_status st;
-    size_t dim = p->dim;
     if ((st = bsi_check_cview(u, nu)) != BS_OK || (st = bsi_check_cview(v, nv)) != BS_OK)
         return st;
     if (nu > SIZE_MAX / nv)
         return BS_ERR_SIZE;
     *total = nu * nv;
-    if ((pos && (st = bsi_check_views(pos, dim, *total)) != BS_OK) ||
-        (du && (st = bsi_check_views(du, dim, *total)) != BS_OK) ||
-        (dv && (st = bsi_check_views(dv, dim, *total)) != BS_OK) ||
-        (nrm && (st = bsi_check_views(nrm, 3, *total)) != BS_OK))
-        return st;
+    for (int o = 0; o < NOUT; o++) {
+        size_t k = o == OUT_NRM ? 3 : gc->p->dim;
+        if ((gc->out[o] && (st = bsi_check_views(gc->out[o], k, *total)) != BS_OK) ||
+            (gc->fout[o] && (st = bsi_check_fviews(gc->fout[o], k, *total)) != BS_OK))
+            return st;
+    }
     return BS_OK;
 }
-
-typedef struct grid_call {
-    const bs_patch *p;
-    const bs_view *pos, *du, *dv, *nrm;
-    unsigned char *kind;
-    int first, normals, wdu, wdv;
-    int fused; /* cubic_pos_normal applies */
-    int cubic; /* cubic_rows applies */
-    bsi_nscale sc;
-} grid_call;
 
 /* row_pass for cubic rows of polynomial 3-D patches asked for positions and normals only. Points
  * with non-finite parameters are left to row_pass (gc->fused is off when there are any). */
@@ -249,38 +207,85 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
                       size_t nb, size_t idx0)
 {
     double *ps[3], *pn[3];
-    for (size_t c = 0; c < 3; c++) {
-        ps[c] = target(gc->pos, c, idx0, g->s + c * COLS);
-        pn[c] = target(gc->nrm, c, idx0, g->nrm + c * COLS);
-    }
+    float *fs[3], *fn[3];
     unsigned char *kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
     double *flag = g->hu; /* free in this pass */
-    size_t nflag = cubic_pos_normal(nb, vcol, g->q, g->qu, g->qv, (double)gc->p->deg_u,
-                                    gc->sc.zu * gc->sc.zu, gc->sc.zv * gc->sc.zv, ps[0], ps[1],
-                                    ps[2], pn[0], pn[1], pn[2], flag);
+    double m = (double)gc->p->deg_u, zu2 = bsi_normal_floor(gc->sc.zu);
+    double zv2 = bsi_normal_floor(gc->sc.zv);
+    size_t nflag;
+    for (size_t c = 0; c < 3; c++) {
+        ps[c] = target(gc, OUT_POS, c, idx0, g->s + c * COLS);
+        pn[c] = target(gc, OUT_NRM, c, idx0, g->nrm + c * COLS);
+        fs[c] = ftarget(gc, OUT_POS, c, idx0, g->f + c * COLS);
+        fn[c] = ftarget(gc, OUT_NRM, c, idx0, g->f + (3 + c) * COLS);
+    }
+    if (gc->f32)
+        nflag = bsi_cubic_pos_normal_f32(nb, vcol, g->q, g->qu, g->qv, m, zu2, zv2, fs[0], fs[1],
+                                         fs[2], fn[0], fn[1], fn[2], flag);
+    else
+        nflag = bsi_cubic_pos_normal(nb, vcol, g->q, g->qu, g->qv, m, zu2, zv2, ps[0], ps[1],
+                                     ps[2], pn[0], pn[1], pn[2], flag);
     for (size_t b = 0; b < nb; b++)
         kd[b] = BS_NORMAL_REGULAR;
     for (size_t b = 0; nflag > 0 && b < nb; b++) { /* most rows have no flagged point */
         if (flag[b] == 0.0)
             continue;
         /* the derivatives again, by the same sums, for the full rule */
-        const double *w = g->wv + b, *wm = g->wvm + b;
-        double su[3], sv[3], r[3];
+        double w[4], wm[3], su[3], sv[3], r[3];
+        bsi_bernstein3_first(vcol[b], w, wm); /* the column's weights, as the loop formed them */
         for (size_t c = 0; c < 3; c++) {
             const double *qu = g->qu + 4 * c, *qv = g->qv + 4 * c;
-            su[c] = (double)gc->p->deg_u *
-                    (w[0] * qu[0] + w[COLS] * qu[1] + w[2 * COLS] * qu[2] + w[3 * COLS] * qu[3]);
-            sv[c] = 3.0 * (wm[0] * qv[0] + wm[COLS] * qv[1] + wm[2 * COLS] * qv[2]);
+            su[c] = m * (w[0] * qu[0] + w[1] * qu[1] + w[2] * qu[2] + w[3] * qu[3]);
+            sv[c] = 3.0 * (wm[0] * qv[0] + wm[1] * qv[1] + wm[2] * qv[2]);
         }
         kd[b] = bsi_normal(gc->p, &gc->sc, t, vcol[b], su, sv, r);
-        pn[0][b] = r[0];
-        pn[1][b] = r[1];
-        pn[2][b] = r[2];
+        for (size_t c = 0; c < 3; c++) {
+            if (gc->f32)
+                fn[c][b] = (float)r[c];
+            else
+                pn[c][b] = r[c];
+        }
     }
     for (size_t c = 0; c < 3; c++) {
-        store(gc->pos, c, idx0, ps[c], nb);
-        store(gc->nrm, c, idx0, pn[c], nb);
+        if (gc->f32) {
+            fstore(gc, OUT_POS, c, idx0, fs[c], nb);
+            fstore(gc, OUT_NRM, c, idx0, fn[c], nb);
+        } else {
+            store(gc, OUT_POS, c, idx0, ps[c], nb);
+            store(gc, OUT_NRM, c, idx0, pn[c], nb);
+        }
     }
+}
+
+/* Coordinate c of output o (positions, S_u, S_v) of a cubic row, unrolled: per row the choice of
+ * target and the copy-out then cost a few instructions each. */
+#define EACH_CUBIC_OUTPUT(o, c)                                                                    \
+    _Pragma("GCC unroll 3") for (int o = 0; o < 3; o++) _Pragma("GCC unroll 3") for (size_t c = 0; c < 3; c++)
+
+/* row_pass for cubic rows of polynomial 3-D patches asked for positions and/or first partials
+ * (gc->cubic is off when a parameter is not finite). */
+static void cubic_row(const grid_call *gc, grid_scratch *g, const double *vcol, size_t nb,
+                      size_t idx0)
+{
+    double m = (double)gc->p->deg_u;
+    if (gc->f32) {
+        float *fo[3][3];
+        EACH_CUBIC_OUTPUT(o, c)
+            fo[o][c] = ftarget(gc, o, c, idx0, g->f + (3 * (size_t)o + c) * COLS);
+        bsi_cubic_rows_f32(nb, vcol, g->q, g->qu, g->qv, m, fo[0][0], fo[0][1], fo[0][2],
+                           gc->first ? fo[1][0] : NULL, fo[1][1], fo[1][2], fo[2][0], fo[2][1],
+                           fo[2][2]);
+        EACH_CUBIC_OUTPUT(o, c)
+            fstore(gc, o, c, idx0, fo[o][c], nb);
+        return;
+    }
+    double *po[3][3];
+    EACH_CUBIC_OUTPUT(o, c)
+        po[o][c] = target(gc, o, c, idx0, g->h + (3 * (size_t)o + c) * COLS);
+    bsi_cubic_rows(nb, vcol, g->q, g->qu, g->qv, m, po[0][0], po[0][1], po[0][2],
+                   gc->first ? po[1][0] : NULL, po[1][1], po[1][2], po[2][0], po[2][1], po[2][2]);
+    EACH_CUBIC_OUTPUT(o, c)
+        store(gc, o, c, idx0, po[o][c], nb);
 }
 
 /* One row pass: nb columns of row u = t starting at output index idx0. */
@@ -291,46 +296,38 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1, dim = p->dim;
     double bu[NMAX], bum[NMAX];
     bsi_bernstein_first(m, badu ? 0.0 : t, bu, bum);
-    contract_row(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
-    int rational = p->rational, first = gc->first;
-    /* Set below for every coordinate; NULL until then, so no indeterminate pointer is ever passed. */
-    double *ps[BS_MAX_DIM] = {NULL}, *pu[BS_MAX_DIM] = {NULL}, *pv[BS_MAX_DIM] = {NULL};
+    if (n == 3)
+        bsi_contract_cubic(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
+    else
+        contract_row(p, bu, bum, gc->wdu, gc->wdv, g->q, g->qu, g->qv);
     if (gc->fused) {
         fused_row(gc, g, t, vcol, nb, idx0);
         return;
     }
     if (gc->cubic) {
-        for (size_t c = 0; c < 3; c++) {
-            ps[c] = target(gc->pos, c, idx0, g->h + c * COLS);
-            pu[c] = target(gc->du, c, idx0, g->hu + c * COLS);
-            pv[c] = target(gc->dv, c, idx0, g->hv + c * COLS);
-        }
-        cubic_rows(nb, vcol, g->q, g->qu, g->qv, (double)m, ps[0], ps[1], ps[2],
-                   first ? pu[0] : NULL, pu[1], pu[2], pv[0], pv[1], pv[2]);
-        for (size_t c = 0; c < 3; c++) {
-            store(gc->pos, c, idx0, ps[c], nb);
-            store(gc->du, c, idx0, pu[c], nb);
-            store(gc->dv, c, idx0, pv[c], nb);
-        }
+        cubic_row(gc, g, vcol, nb, idx0);
         return;
     }
+    int rational = p->rational, first = gc->first;
+    /* Set below for every coordinate; NULL until then, so no indeterminate pointer is ever passed. */
+    double *ps[BS_MAX_DIM] = {NULL}, *pu[BS_MAX_DIM] = {NULL}, *pv[BS_MAX_DIM] = {NULL};
     for (size_t c = 0; c < p->ncoord; c++) {
         /* Polynomial patches write Cartesian results directly; rational ones go through h. */
         int cart = !rational && c < dim;
-        double *h = cart ? target(gc->pos, c, idx0, g->h + c * COLS) : g->h + c * COLS;
-        double *hu = cart ? target(gc->du, c, idx0, g->hu + c * COLS) : g->hu + c * COLS;
-        double *hv = cart ? target(gc->dv, c, idx0, g->hv + c * COLS) : g->hv + c * COLS;
-        if (gc->pos != NULL || rational || !first)
+        double *h = cart ? target(gc, OUT_POS, c, idx0, g->h + c * COLS) : g->h + c * COLS;
+        double *hu = cart ? target(gc, OUT_DU, c, idx0, g->hu + c * COLS) : g->hu + c * COLS;
+        double *hv = cart ? target(gc, OUT_DV, c, idx0, g->hv + c * COLS) : g->hv + c * COLS;
+        if (gc->wpos || rational || !first)
             combine(n1, nb, g->wv, g->q + c * n1, 0, 1.0, h);
         if (first) {
             if (gc->wdu)
                 combine(n1, nb, g->wv, g->qu + c * n1, 1, (double)m, hu);
             else
-                fill(hu, nb, 0.0);
+                memset(hu, 0, nb * sizeof *hu); /* +0.0 */
             if (gc->wdv)
                 combine(n, nb, g->wvm, g->qv + c * n1, 1, (double)n, hv);
             else
-                fill(hv, nb, 0.0);
+                memset(hv, 0, nb * sizeof *hv);
         }
         if (cart) {
             ps[c] = h;
@@ -343,12 +340,12 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
         const double *w = g->h + dim * COLS, *wu = g->hu + dim * COLS, *wv = g->hv + dim * COLS;
         for (size_t c = 0; c < dim; c++) {
             const double *h = g->h + c * COLS, *hu = g->hu + c * COLS, *hv = g->hv + c * COLS;
-            double *s = ps[c] = target(gc->pos, c, idx0, g->s + c * COLS);
+            double *s = ps[c] = target(gc, OUT_POS, c, idx0, g->s + c * COLS);
             for (size_t b = 0; b < nb; b++)
                 s[b] = h[b] / w[b];
             if (first) {
-                double *su = pu[c] = target(gc->du, c, idx0, g->su + c * COLS);
-                double *sv = pv[c] = target(gc->dv, c, idx0, g->sv + c * COLS);
+                double *su = pu[c] = target(gc, OUT_DU, c, idx0, g->su + c * COLS);
+                double *sv = pv[c] = target(gc, OUT_DV, c, idx0, g->sv + c * COLS);
                 for (size_t b = 0; b < nb; b++) {
                     su[b] = (hu[b] - wu[b] * s[b]) / w[b];
                     sv[b] = (hv[b] - wv[b] * s[b]) / w[b];
@@ -360,7 +357,7 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
     unsigned char *kd = NULL;
     if (gc->normals) {
         for (size_t c = 0; c < 3; c++)
-            pn[c] = target(gc->nrm, c, idx0, g->nrm + c * COLS);
+            pn[c] = target(gc, OUT_NRM, c, idx0, g->nrm + c * COLS);
         kd = gc->kind != NULL ? gc->kind + idx0 : g->kind;
         bsi_normal_block(p, &gc->sc, nb, &t, 0, vcol, (const double *const *)pu,
                          (const double *const *)pv, pn, kd);
@@ -371,7 +368,7 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             if (!badu && !g->badv[b])
                 continue;
             for (size_t c = 0; c < dim; c++) {
-                if (gc->pos != NULL || rational || !first) /* then ps[c] was set above */
+                if (gc->wpos || rational || !first) /* then ps[c] was set above */
                     ps[c][b] = NAN; // NOLINT(clang-analyzer-core.NullDereference)
                 if (first)
                     pu[c][b] = pv[c][b] = NAN;
@@ -382,47 +379,54 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
             }
         }
     for (size_t c = 0; c < dim; c++) {
-        store(gc->pos, c, idx0, ps[c], nb);
-        store(gc->du, c, idx0, pu[c], nb);
-        store(gc->dv, c, idx0, pv[c], nb);
+        store(gc, OUT_POS, c, idx0, ps[c], nb);
+        store(gc, OUT_DU, c, idx0, pu[c], nb);
+        store(gc, OUT_DV, c, idx0, pv[c], nb);
     }
-    for (size_t c = 0; c < 3 && gc->nrm != NULL; c++)
-        store(gc->nrm, c, idx0, pn[c], nb);
+    for (size_t c = 0; c < 3 && gc->normals; c++)
+        store(gc, OUT_NRM, c, idx0, pn[c], nb);
 }
 
-bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
-                             const bs_cview *v, const bs_view *pos, const bs_view *du,
-                             const bs_view *dv, const bs_view *nrm, unsigned char *kind)
+/* Both public grid evaluators: out (doubles) or fout (floats) holds the four outputs. */
+static bs_status eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                           const bs_cview *v, const bs_view *const out[NOUT],
+                           const bs_fview *const fout[NOUT], unsigned char *kind)
 {
     if (p == NULL)
         return BS_ERR_INVALID_ARG;
-    if ((nrm != NULL || kind != NULL) && p->dim != 3)
+    int wnrm = out[OUT_NRM] != NULL || fout[OUT_NRM] != NULL;
+    if ((wnrm || kind != NULL) && p->dim != 3)
         return BS_ERR_DIMENSION;
     if (nu == 0 || nv == 0)
         return BS_OK;
-    size_t total;
-    bs_status st = check_grid(p, nu, u, nv, v, pos, du, dv, nrm, &total);
-    if (st != BS_OK)
-        return st;
-
-    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1, nc = p->ncoord;
+    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1, nc = p->ncoord, total;
     grid_call gc;
     gc.p = p;
-    gc.pos = pos;
-    gc.du = du;
-    gc.dv = dv;
-    gc.nrm = nrm;
+    for (int o = 0; o < NOUT; o++) {
+        gc.out[o] = out[o];
+        gc.fout[o] = fout[o];
+    }
+    bs_status st = check_grid(&gc, nu, u, nv, v, &total);
+    if (st != BS_OK)
+        return st;
+    find_packed(&gc);
+    int wdu = out[OUT_DU] != NULL || fout[OUT_DU] != NULL;
+    int wdv = out[OUT_DV] != NULL || fout[OUT_DV] != NULL;
     gc.kind = kind;
-    gc.normals = nrm != NULL || kind != NULL;
-    gc.first = du != NULL || dv != NULL || gc.normals;
+    gc.f32 = fout[OUT_POS] != NULL || fout[OUT_DU] != NULL || fout[OUT_DV] != NULL ||
+             fout[OUT_NRM] != NULL;
+    gc.wpos = out[OUT_POS] != NULL || fout[OUT_POS] != NULL;
+    gc.normals = wnrm || kind != NULL;
+    gc.first = wdu || wdv || gc.normals;
     gc.wdu = gc.first && m > 0;
     gc.wdv = gc.first && n > 0;
     if (gc.normals)
         bsi_normal_scale(p, &gc.sc);
 
     size_t ndouble = 2 * n1 * COLS + 3 * nc * n1 + 3 * nc * COLS + 3 * nc * COLS + 3 * COLS + COLS;
+    size_t nfloat = 9 * COLS;
     grid_scratch g;
-    double *mem = malloc(ndouble * sizeof(double) + 2 * COLS);
+    double *mem = malloc(ndouble * sizeof(double) + nfloat * sizeof(float) + 2 * COLS);
     if (mem == NULL)
         return BS_ERR_NO_MEMORY;
     g.wv = mem;
@@ -438,30 +442,35 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
     g.sv = g.su + nc * COLS;
     g.nrm = g.sv + nc * COLS;
     double *vcol = g.nrm + 3 * COLS;
-    g.kind = (unsigned char *)(vcol + COLS);
+    g.f = (float *)(void *)(vcol + COLS);
+    g.kind = (unsigned char *)(g.f + nfloat);
     g.badv = g.kind + COLS;
 
+    int anybadu = 0;
+    for (size_t a = 0; a < nu; a++)
+        anybadu |= !isfinite(bsi_cget(u, a));
     for (size_t b0 = 0; b0 < nv; b0 += COLS) {
         size_t nb = nv - b0 < COLS ? nv - b0 : COLS;
-        int anybadv = 0, anybadu = 0;
+        int anybadv = 0;
         for (size_t b = 0; b < nb; b++) {
-            double t = bsi_cget(v, b0 + b), w[NMAX], wm[NMAX];
+            double t = bsi_cget(v, b0 + b);
             g.badv[b] = (unsigned char)!isfinite(t);
             anybadv |= g.badv[b];
             vcol[b] = g.badv[b] ? 0.0 : t;
+        }
+        int cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !anybadu && !anybadv;
+        gc.fused = cubic && gc.normals && !wdu && !wdv;
+        /* positions, or positions and first partials, of cubic rows without normals */
+        gc.cubic = cubic && !gc.normals && (gc.wpos || gc.first);
+        /* the column weights, but for cubic rows, which form them in their loops */
+        for (size_t b = 0; b < nb && !gc.fused && !gc.cubic; b++) {
+            double w[NMAX], wm[NMAX];
             bsi_bernstein_first(n, vcol[b], w, wm);
             for (size_t j = 0; j <= n; j++)
                 g.wv[j * COLS + b] = w[j];
             for (size_t j = 0; j < n; j++)
                 g.wvm[j * COLS + b] = wm[j];
         }
-        for (size_t a = 0; a < nu; a++)
-            anybadu |= !isfinite(bsi_cget(u, a));
-        gc.fused = !p->rational && p->dim == 3 && n == 3 && m > 0 && gc.normals && du == NULL &&
-                   dv == NULL && !anybadu && !anybadv;
-        /* positions, or positions and first partials, of cubic rows without normals */
-        gc.cubic = !p->rational && p->dim == 3 && n == 3 && m > 0 && !gc.normals &&
-                   (pos != NULL || gc.first) && !anybadu && !anybadv;
         for (size_t a = 0; a < nu; a++) {
             double t = bsi_cget(u, a);
             int badu = !isfinite(t);
@@ -470,4 +479,20 @@ bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, si
     }
     free(mem);
     return BS_OK;
+}
+
+bs_status bs_patch_eval_grid(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                             const bs_cview *v, const bs_view *pos, const bs_view *du,
+                             const bs_view *dv, const bs_view *nrm, unsigned char *kind)
+{
+    return eval_grid(p, nu, u, nv, v, (const bs_view *const[NOUT]){pos, du, dv, nrm},
+                     (const bs_fview *const[NOUT]){NULL, NULL, NULL, NULL}, kind);
+}
+
+bs_status bs_patch_eval_grid_f32(const bs_patch *p, size_t nu, const bs_cview *u, size_t nv,
+                                 const bs_cview *v, const bs_fview *pos, const bs_fview *du,
+                                 const bs_fview *dv, const bs_fview *nrm, unsigned char *kind)
+{
+    return eval_grid(p, nu, u, nv, v, (const bs_view *const[NOUT]){NULL, NULL, NULL, NULL},
+                     (const bs_fview *const[NOUT]){pos, du, dv, nrm}, kind);
 }

@@ -48,6 +48,8 @@ bs_status bsi_patch_from_hom(size_t deg_u, size_t deg_v, size_t dim, int rationa
  * address of the first or the last element wraps around the address space. */
 bs_status bsi_check_views(const bs_view *views, size_t k, size_t n);
 bs_status bsi_check_cview(const bs_cview *view, size_t n);
+/* The same checks for float views (alignment and stride in units of sizeof(float)). */
+bs_status bsi_check_fviews(const bs_fview *views, size_t k, size_t n);
 
 /* Byte stride of a view, with 0 meaning packed. */
 static inline ptrdiff_t bsi_stride(ptrdiff_t stride) { return stride ? stride : (ptrdiff_t)sizeof(double); }
@@ -56,6 +58,11 @@ static inline ptrdiff_t bsi_stride(ptrdiff_t stride) { return stride ? stride : 
 static inline double *bsi_at(const bs_view *v, size_t k)
 {
     return (double *)(void *)((char *)v->data + (ptrdiff_t)k * bsi_stride(v->stride));
+}
+static inline float *bsi_fat(const bs_fview *v, size_t k)
+{
+    ptrdiff_t s = v->stride ? v->stride : (ptrdiff_t)sizeof(float);
+    return (float *)(void *)((char *)v->data + (ptrdiff_t)k * s);
 }
 static inline double bsi_cget(const bs_cview *v, size_t k)
 {

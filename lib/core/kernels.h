@@ -28,15 +28,18 @@ void bsi_bernstein(size_t deg, double t, double *b);
 /* b[0..deg] = B(deg,i)(t) and, when deg > 0, bm[0..deg-1] = B(deg-1,i)(t) (the weights of the
  * first-derivative difference net). b is bit-identical to bsi_bernstein(deg, t, b). */
 void bsi_bernstein_first(size_t deg, double t, double *b, double *bm);
-/* bsi_bernstein_first for degree 3, written out: the same operations (same bits). */
+/* bsi_bernstein_first for degree 3, written out: the operations of the recurrence without its
+ * additions to 0.0 and multiplications by 1.0, which change no bit here (s = 1 - x is never -0.0,
+ * so s, s*s and s*s*s are never -0.0 either, and |s| >= 2^-53 keeps s*s*s from underflowing to
+ * zero), and save the grid's cubic loops three additions per point. */
 BSI_INLINE void bsi_bernstein3_first(double x, double w[4], double wm[3])
 {
     double s = 1.0 - x;
-    double a0 = 0.0 + s * 1.0, a1 = x * 1.0;
-    wm[0] = 0.0 + s * a0;
+    double a0 = s, a1 = x;
+    wm[0] = s * a0;
     wm[1] = x * a0 + s * a1;
     wm[2] = x * a1;
-    w[0] = 0.0 + s * wm[0];
+    w[0] = s * wm[0];
     w[1] = x * wm[0] + s * wm[1];
     w[2] = x * wm[1] + s * wm[2];
     w[3] = x * wm[2];
@@ -89,6 +92,27 @@ void bsi_project_first(const bs_patch *p, const double *h, const double *hu, con
                        size_t stride, double *s, double *su, double *sv);
 
 
+/* ---- Cubic rows of the grid evaluator (lib/core/grid_cubic.c) ----
+ * Row u = t of a polynomial 3-D patch of degree 3 in v, from the row's coefficients along u
+ * (q, qu, qv: 3 coordinates of 4, as contracted by the grid evaluator), at the nb columns vcol,
+ * into packed arrays; the same operations per point as the grid's combine sums (same bits).
+ * bsi_cubic_rows: positions into s0..s2 and, when u0 != NULL, S_u (scaled by m) into u0..u2
+ * and S_v (by 3) into d0..d2. bsi_cubic_pos_normal: positions and the regular normal rule
+ * (bsi_regular_normal) fused; flag[b] = 1.0 marks points left to bsi_normal, and their count is
+ * returned. The _f32 twins store each double result rounded to float. */
+/* The grid's contraction along u of one row (u-weights bu, and bum for S_u) for deg_v = 3: q, qu,
+ * qv get 4 sums per coordinate, as the general contraction computes them (same bits). */
+void bsi_contract_cubic(const bs_patch *p, const double *bu, const double *bum, int du, int dv,
+                        double *q, double *qu, double *qv);
+#define BSI_CUBIC_KERNELS(ROWS, POS_NORMAL, T)                                                      \
+    void ROWS(size_t nb, const double *vcol, const double *q, const double *qu, const double *qv,  \
+              double m, T *s0, T *s1, T *s2, T *u0, T *u1, T *u2, T *d0, T *d1, T *d2);            \
+    size_t POS_NORMAL(size_t nb, const double *vcol, const double *q, const double *qu,            \
+                      const double *qv, double m, double zu2, double zv2, T *s0, T *s1, T *s2,     \
+                      T *n0, T *n1, T *n2, double *flag)
+BSI_CUBIC_KERNELS(bsi_cubic_rows, bsi_cubic_pos_normal, double);
+BSI_CUBIC_KERNELS(bsi_cubic_rows_f32, bsi_cubic_pos_normal_f32, float);
+
 /* ---- Normals (lib/core/normal.c) ---- */
 
 /* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
@@ -113,19 +137,27 @@ void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const 
 /* ---- The regular normal rule at one point (lib/core/normal.c, lib/core/eval_grid.c) ----
  * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
  * when the point needs bsi_normal. Inline so that every vectorised caller does the same
- * operations (and gets the same bits). zu2, zv2: the squared zero thresholds of bsi_nscale. */
+ * operations (and gets the same bits). lo_u, lo_v: the lower bounds of |S_u|^2 and |S_v|^2 from
+ * bsi_normal_floor, each test of a lower bound done once. */
+/* The larger of 2^-450 (squares safe to multiply) and z^2 for a zero threshold z of bsi_nscale,
+ * NaN when z^2 is, so that q > bsi_normal_floor(z) is exactly q > 2^-450 && q > z^2. */
+static inline double bsi_normal_floor(double z)
+{
+    double z2 = z * z;
+    return !(z2 <= 0x1p-450) ? z2 : 0x1p-450;
+}
 typedef struct bsi_rnormal {
     double n0, n1, n2, flag;
 } bsi_rnormal;
 static inline bsi_rnormal bsi_regular_normal(double x0, double x1, double x2, double y0,
-                                             double y1, double y2, double zu2, double zv2)
+                                             double y1, double y2, double lo_u, double lo_v)
 {
     double qa = x0 * x0 + x1 * x1 + x2 * x2;
     double qb = y0 * y0 + y1 * y1 + y2 * y2;
     double c0 = x1 * y2 - x2 * y1, c1 = x2 * y0 - x0 * y2, c2 = x0 * y1 - x1 * y0;
     double qc = c0 * c0 + c1 * c1 + c2 * c2;
-    long ok = (qa > 0x1p-450) & (qa < 0x1p450) & (qb > 0x1p-450) & (qb < 0x1p450) & (qa > zu2) &
-              (qb > zv2) & (qc > 0x1p-60 * (qa * qb));
+    long ok = (qa > lo_u) & (qa < 0x1p450) & (qb > lo_v) & (qb < 0x1p450) &
+              (qc > 0x1p-60 * (qa * qb));
     double inv = 1.0 / sqrt(qc);
     bsi_rnormal r;
     r.n0 = c0 * inv;

@@ -277,7 +277,7 @@ void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const 
     const double *restrict b0 = sv[0], *restrict b1 = sv[1], *restrict b2 = sv[2];
     double *restrict n0 = nrm[0], *restrict n1 = nrm[1], *restrict n2 = nrm[2];
     unsigned char *restrict kd = kind;
-    double zu2 = sc->zu * sc->zu, zv2 = sc->zv * sc->zv;
+    double zu2 = bsi_normal_floor(sc->zu), zv2 = bsi_normal_floor(sc->zv);
     enum { CHUNK = 64 };
     for (size_t s0 = 0; s0 < nb; s0 += CHUNK) {
         size_t ne = nb - s0 < CHUNK ? nb - s0 : CHUNK;

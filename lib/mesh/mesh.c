@@ -25,19 +25,25 @@ size_t bs_mesh_triangle_count(const bs_mesh *m) { return m ? m->ntri : 0; }
 size_t bs_mesh_strip_count(const bs_mesh *m) { return m ? m->nstrip : 0; }
 size_t bs_mesh_strip_index_count(const bs_mesh *m) { return m ? m->nstrip_idx : 0; }
 
-/* Scatter n packed k-tuples into k views after checking them all. */
-static bs_status copy_tuples(const double *src, size_t n, size_t k, const bs_view *views)
+/* Scatter n packed k-tuples into k views (or, for the float twins, k float views, each value
+ * rounded to float) after checking them all. */
+static bs_status copy_tuples(const double *src, size_t n, size_t k, const bs_view *views,
+                             const bs_fview *fviews)
 {
-    if (views == NULL)
+    if (views == NULL && fviews == NULL)
         return BS_ERR_INVALID_ARG;
     if (n == 0)
         return BS_OK;
-    bs_status st = bsi_check_views(views, k, n);
+    bs_status st = views ? bsi_check_views(views, k, n) : bsi_check_fviews(fviews, k, n);
     if (st != BS_OK)
         return st;
     for (size_t c = 0; c < k; c++)
-        for (size_t i = 0; i < n; i++)
-            *bsi_at(&views[c], i) = src[i * k + c];
+        for (size_t i = 0; i < n; i++) {
+            if (views)
+                *bsi_at(&views[c], i) = src[i * k + c];
+            else
+                *bsi_fat(&fviews[c], i) = (float)src[i * k + c];
+        }
     return BS_OK;
 }
 
@@ -54,17 +60,32 @@ static bs_status copy_ids(const uint32_t *src, size_t n, uint32_t *dst, size_t c
 
 bs_status bs_mesh_copy_positions(const bs_mesh *m, const bs_view xyz[3])
 {
-    return m ? copy_tuples(m->pos, m->nvert, 3, xyz) : BS_ERR_INVALID_ARG;
+    return m ? copy_tuples(m->pos, m->nvert, 3, xyz, NULL) : BS_ERR_INVALID_ARG;
 }
 
 bs_status bs_mesh_copy_normals(const bs_mesh *m, const bs_view nrm[3])
 {
-    return m ? copy_tuples(m->nrm, m->nvert, 3, nrm) : BS_ERR_INVALID_ARG;
+    return m ? copy_tuples(m->nrm, m->nvert, 3, nrm, NULL) : BS_ERR_INVALID_ARG;
 }
 
 bs_status bs_mesh_copy_uv(const bs_mesh *m, const bs_view uv[2])
 {
-    return m ? copy_tuples(m->uv, m->nvert, 2, uv) : BS_ERR_INVALID_ARG;
+    return m ? copy_tuples(m->uv, m->nvert, 2, uv, NULL) : BS_ERR_INVALID_ARG;
+}
+
+bs_status bs_mesh_copy_positions_f32(const bs_mesh *m, const bs_fview xyz[3])
+{
+    return m ? copy_tuples(m->pos, m->nvert, 3, NULL, xyz) : BS_ERR_INVALID_ARG;
+}
+
+bs_status bs_mesh_copy_normals_f32(const bs_mesh *m, const bs_fview nrm[3])
+{
+    return m ? copy_tuples(m->nrm, m->nvert, 3, NULL, nrm) : BS_ERR_INVALID_ARG;
+}
+
+bs_status bs_mesh_copy_uv_f32(const bs_mesh *m, const bs_fview uv[2])
+{
+    return m ? copy_tuples(m->uv, m->nvert, 2, NULL, uv) : BS_ERR_INVALID_ARG;
 }
 
 bs_status bs_mesh_copy_corner_uv(const bs_mesh *m, const bs_view uv[2])

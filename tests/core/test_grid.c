@@ -86,10 +86,7 @@ static void test_random_grids(void)
         bs_patch *p = tnet_patch(&t);
         size_t nu = sizes[trial % 9][0], nv = sizes[trial % 9][1];
         double *u = malloc(nu * sizeof(double)), *v = malloc(nv * sizeof(double));
-        for (size_t a = 0; a < nu; a++)
-            u[a] = nu == 1 ? 0.3 : (double)a / (double)(nu - 1);
-        for (size_t b = 0; b < nv; b++)
-            v[b] = bs_test_rand(&rng, -0.1, 1.1);
+        grid_params(&rng, nu, u, nv, v);
         if (nv > 3)
             v[2] = NAN;
         if (nu > 2)
@@ -105,17 +102,15 @@ static void test_random_grids(void)
 /* Teapot patches: including the collapsed edges, where limit normals are taken. */
 static void test_teapot_grid(void)
 {
-    static double ctrl[32][48];
-    size_t np = load_bpt(BS_DATA_DIR "/teapot.bpt", ctrl, 32);
+    bs_patch *patches[32];
+    size_t np = teapot_patches(BS_DATA_DIR "/teapot.bpt", patches);
     CHECK(np == 32);
     double u[11], v[11];
     for (int k = 0; k <= 10; k++)
         u[k] = v[k] = k / 10.0;
     for (size_t k = 0; k < np; k++) {
-        bs_patch *p = NULL;
-        CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl[k], NULL, &p), BS_OK);
-        compare(p, 11, u, 11, v);
-        bs_patch_destroy(p);
+        compare(patches[k], 11, u, 11, v);
+        bs_patch_destroy(patches[k]);
     }
 }
 
@@ -129,10 +124,7 @@ static void test_cubic_rows(void)
         bs_patch *p = tnet_patch(&t);
         size_t nu = 5, nv = 300;
         double u[5], v[300];
-        for (size_t a = 0; a < nu; a++)
-            u[a] = (double)a / (double)(nu - 1);
-        for (size_t b = 0; b < nv; b++)
-            v[b] = bs_test_rand(&rng, -0.1, 1.1);
+        grid_params(&rng, nu, u, nv, v);
         compare(p, nu, u, nv, v);
         bs_patch_destroy(p);
         tnet_free(&t);

@@ -182,4 +182,26 @@ static inline size_t load_bpt(const char *path, double (*ctrl)[48], size_t cap)
     return np;
 }
 
+/* The teapot's patches as objects (path: its .bpt file); returns the count made, 0 on failure.
+ * Release each with bs_patch_destroy(). */
+static inline size_t teapot_patches(const char *path, bs_patch *out[32])
+{
+    static double ctrl[32][48];
+    size_t np = load_bpt(path, ctrl, 32);
+    for (size_t k = 0; k < np; k++)
+        if (bs_patch_create(3, 3, 3, ctrl[k], NULL, &out[k]) != BS_OK)
+            return k;
+    return np;
+}
+
+/* Grid parameters: u evenly spaced over [0,1] (0.3 alone when nu = 1), v random in
+ * [-0.1, 1.1), so that the grid also extrapolates a little. */
+static inline void grid_params(unsigned long long *rng, size_t nu, double *u, size_t nv, double *v)
+{
+    for (size_t a = 0; a < nu; a++)
+        u[a] = nu == 1 ? 0.3 : (double)a / (double)(nu - 1);
+    for (size_t b = 0; b < nv; b++)
+        v[b] = bs_test_rand(rng, -0.1, 1.1);
+}
+
 #endif
