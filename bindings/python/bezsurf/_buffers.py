@@ -18,7 +18,7 @@ import sys
 from typing import (TYPE_CHECKING, Any, Iterable, List, Optional, Sequence, Tuple, Union)
 
 from ._enums import NORMAL_KINDS, NormalKind
-from ._lib import CView, View
+from ._lib import CView, FView, View
 
 try:  # numpy is optional
     import numpy as np
@@ -203,29 +203,33 @@ class PointsIn:
 
 
 class Output:
-    """An (n, k) double result the library writes through k views."""
+    """An (n, k) double (or, with ``float32``, float) result the library writes through k views."""
 
     __slots__ = ("n", "k", "array", "columns", "views", "given")
 
-    def __init__(self, n: int, k: int, out: Any = None, what: str = "out") -> None:
+    def __init__(self, n: int, k: int, out: Any = None, what: str = "out",
+                 float32: bool = False) -> None:
         self.n = n
         self.k = k
         self.array: Any = None
         self.columns: List["array.array[float]"] = []
         self.given = out is not None
-        views = (View * k)()
+        view: Any = FView if float32 else View
+        views = (view * k)()
         if out is not None or np is not None:
-            arr = _check_out(out, (n, k), what) if out is not None else \
-                np.empty((n, k), dtype=np.float64, order="F")
+            dtype = np.float32 if float32 else np.float64
+            arr = _check_out(out, (n, k), what, dtype) if out is not None else \
+                np.empty((n, k), dtype=dtype, order="F")
             base = int(arr.ctypes.data)
             for c in range(k):
-                views[c] = View(base + c * arr.strides[1], n, arr.strides[0])
+                views[c] = view(base + c * arr.strides[1], n, arr.strides[0])
             self.array = arr
         else:
             # k packed columns (the library's fast path), zipped into n tuples at C speed.
+            code, size = ("f", 4) if float32 else ("d", _DOUBLE)
             for c in range(k):
-                col = array.array("d", bytes(_DOUBLE * max(n, 1)))
-                views[c] = View(col.buffer_info()[0], n, _DOUBLE)
+                col = array.array(code, bytes(size * max(n, 1)))
+                views[c] = view(col.buffer_info()[0], n, size)
                 self.columns.append(col)
         self.views = views
 
@@ -237,17 +241,18 @@ class Output:
         return list(zip(*(col[: self.n] for col in self.columns)))
 
 
-def _check_out(out: Any, shape: Tuple[int, ...], what: str) -> Any:
+def _check_out(out: Any, shape: Tuple[int, ...], what: str, dtype: Any = None) -> Any:
     if not is_ndarray(out):
         raise TypeError(f"{what} must be a numpy array, not {type_name(out)}")
-    if out.dtype != np.float64:
-        raise TypeError(f"{what} must have dtype float64, not {out.dtype}")
+    dtype = np.dtype(np.float64 if dtype is None else dtype)
+    if out.dtype != dtype:
+        raise TypeError(f"{what} must have dtype {dtype}, not {out.dtype}")
     if out.shape != shape:
         raise ValueError(f"{what} must have shape {shape}, not {out.shape}")
     if not out.flags.writeable:
         raise ValueError(f"{what} is read-only")
     if not out.flags.aligned:
-        raise ValueError(f"{what} is not aligned for doubles")
+        raise ValueError(f"{what} is not aligned for {dtype}")
     # Zero strides would alias elements (and 0 means "packed" to the library).
     for axis, size in enumerate(shape):
         if size > 1 and out.strides[axis] == 0:

@@ -36,6 +36,12 @@ class View(ctypes.Structure):
     _fields_ = [("data", c_void_p), ("count", c_size_t), ("stride", c_ssize_t)]
 
 
+class FView(ctypes.Structure):
+    """``bs_fview``: a strided output buffer of floats (since 1.1)."""
+
+    _fields_ = [("data", c_void_p), ("count", c_size_t), ("stride", c_ssize_t)]
+
+
 class CView(ctypes.Structure):
     """``bs_cview``: a strided input buffer of doubles."""
 
@@ -95,6 +101,7 @@ STATUS = _Status()
 HANDLE = c_void_p
 HANDLE_OUT = POINTER(c_void_p)
 VIEWS = POINTER(View)
+FVIEWS = POINTER(FView)
 CVIEW = POINTER(CView)
 DOUBLES = c_void_p      # a double * (input or output), passed as an address
 BYTES = c_void_p        # an unsigned char * output
@@ -124,6 +131,8 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_patch_eval_normal", (HANDLE, c_size_t, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
     ("bs_patch_eval_grid", (HANDLE, c_size_t, CVIEW, c_size_t, CVIEW, VIEWS, VIEWS, VIEWS, VIEWS,
                             BYTES), STATUS),
+    ("bs_patch_eval_grid_f32", (HANDLE, c_size_t, CVIEW, c_size_t, CVIEW, FVIEWS, FVIEWS, FVIEWS,
+                                FVIEWS, BYTES), STATUS),
     # ops.h: exact operations
     ("bs_patch_split", (HANDLE, c_int, c_double, HANDLE_OUT, HANDLE_OUT), STATUS),
     ("bs_patch_split4", (HANDLE, c_double, c_double, HANDLE_OUT), STATUS),
@@ -183,6 +192,9 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_mesh_copy_triangles", (HANDLE, IDS, c_size_t), STATUS),
     ("bs_mesh_copy_triangle_patch_ids", (HANDLE, IDS, c_size_t), STATUS),
     ("bs_mesh_copy_corner_uv", (HANDLE, VIEWS), STATUS),
+    ("bs_mesh_copy_positions_f32", (HANDLE, FVIEWS), STATUS),
+    ("bs_mesh_copy_normals_f32", (HANDLE, FVIEWS), STATUS),
+    ("bs_mesh_copy_uv_f32", (HANDLE, FVIEWS), STATUS),
     ("bs_mesh_copy_strips", (HANDLE, IDS, c_size_t, IDS, c_size_t), STATUS),
     ("bs_mesh_write", (HANDLE, c_int, c_char_p), STATUS),
     ("bs_mesh_write_memory", (HANDLE, c_int, c_void_p, c_size_t, SIZE_OUT), STATUS),
@@ -325,5 +337,5 @@ def load() -> Library:
 
 LIB = load()
 
-__all__ = ["ABI_MAJOR", "SONAME", "View", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "CTessOptions", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+__all__ = ["ABI_MAJOR", "SONAME", "View", "FView", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "CTessOptions", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
            "error_for", "c_double", "c_ubyte", "c_uint32"]

@@ -103,23 +103,29 @@ class Mesh(Handle):
         """Number of triangle strips (0 unless tessellated with ``strips=True``)."""
         return int(LIB.bs_mesh_strip_count(self._ptr))
 
-    def _views(self, fn: Callable[..., Any], n: int, k: int, out: OutArray) -> Points:
-        res = B.Output(n, k, out)
+    def _views(self, fn: Callable[..., Any], n: int, k: int, out: OutArray,
+               float32: bool = False) -> Points:
+        res = B.Output(n, k, out, "out", float32)
         fn(self._ptr, res.views)
         result: Points = res.result()
         return result
 
-    def positions(self, *, out: OutArray = None) -> Points:
-        """Vertex positions, (vertex_count, 3)."""
-        return self._views(LIB.bs_mesh_copy_positions, self.vertex_count, 3, out)
+    def positions(self, *, out: OutArray = None, float32: bool = False) -> Points:
+        """Vertex positions, (vertex_count, 3); with ``float32`` as float32, each value the
+        double correctly rounded (since 1.1)."""
+        fn = LIB.bs_mesh_copy_positions_f32 if float32 else LIB.bs_mesh_copy_positions
+        return self._views(fn, self.vertex_count, 3, out, float32)
 
-    def normals(self, *, out: OutArray = None) -> Points:
-        """Unit vertex normals, (vertex_count, 3); never NaN."""
-        return self._views(LIB.bs_mesh_copy_normals, self.vertex_count, 3, out)
+    def normals(self, *, out: OutArray = None, float32: bool = False) -> Points:
+        """Unit vertex normals, (vertex_count, 3); never NaN. ``float32`` as for positions()."""
+        fn = LIB.bs_mesh_copy_normals_f32 if float32 else LIB.bs_mesh_copy_normals
+        return self._views(fn, self.vertex_count, 3, out, float32)
 
-    def uv(self, *, out: OutArray = None) -> Points:
-        """Vertex (u, v) parameters on the patch each vertex was evaluated on, (vertex_count, 2)."""
-        return self._views(LIB.bs_mesh_copy_uv, self.vertex_count, 2, out)
+    def uv(self, *, out: OutArray = None, float32: bool = False) -> Points:
+        """Vertex (u, v) parameters on the patch each vertex was evaluated on, (vertex_count, 2).
+        ``float32`` as for positions()."""
+        fn = LIB.bs_mesh_copy_uv_f32 if float32 else LIB.bs_mesh_copy_uv
+        return self._views(fn, self.vertex_count, 2, out, float32)
 
     def corner_uv(self, *, out: OutArray = None) -> Points:
         """(u, v) of every triangle corner on the triangle's own patch, (3 * triangle_count, 2)."""

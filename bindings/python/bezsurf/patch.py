@@ -383,48 +383,54 @@ class Patch(Handle):
 
     @overload
     def eval_grid(self, u: Params, v: Params, *, derivatives: Literal[False] = ...,
-                  normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+                  normals: Literal[False] = ..., out: OutArray = ...,
+                  float32: bool = ...) -> Points: ...
 
     @overload
     def eval_grid(self, u: Params, v: Params, *, derivatives: Literal[True], normals: bool = ...,
                   out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
-                  normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+                  normal_out: OutArray = ..., kind_out: OutArray = ...,
+                  float32: bool = ...) -> Evaluation: ...
 
     @overload
     def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: Literal[True],
                   out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
-                  normal_out: OutArray = ..., kind_out: OutArray = ...) -> Evaluation: ...
+                  normal_out: OutArray = ..., kind_out: OutArray = ...,
+                  float32: bool = ...) -> Evaluation: ...
 
     @overload
     def eval_grid(self, u: Params, v: Params, *, derivatives: bool = ..., normals: bool = ...,
                   out: OutArray = ..., du_out: OutArray = ..., dv_out: OutArray = ...,
                   normal_out: OutArray = ...,
-                  kind_out: OutArray = ...) -> Union[Points, Evaluation]: ...
+                  kind_out: OutArray = ..., float32: bool = ...) -> Union[Points, Evaluation]: ...
 
     def eval_grid(self, u: Params, v: Params, *, derivatives: bool = False,
                   normals: bool = False, out: OutArray = None, du_out: OutArray = None,
                   dv_out: OutArray = None, normal_out: OutArray = None,
-                  kind_out: OutArray = None) -> Any:
+                  kind_out: OutArray = None, float32: bool = False) -> Any:
         """Evaluate on the tensor grid of every u[a] with every v[b].
 
         Point (a, b) is row a*len(v) + b of results of shape (len(u)*len(v), dim) (for numpy,
         ``result.reshape(len(u), len(v), dim)`` is a view). Returns positions, or an
         :class:`Evaluation` when ``derivatives`` or ``normals`` is set, as :meth:`eval` does.
+        With ``float32`` the results are float32 (numpy) arrays, each value the double result
+        correctly rounded (bs_patch_eval_grid_f32, since 1.1); ``out=`` arrays are then float32.
         """
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
         call = _Call(u, v, grid=True)
-        pos = call.output(self.dim, out, "out")
+        pos = call.output(self.dim, out, "out", float32)
         dus = dvs = nrm = kinds = None
         if derivatives:
-            dus = call.output(self.dim, du_out, "du_out")
-            dvs = call.output(self.dim, dv_out, "dv_out")
+            dus = call.output(self.dim, du_out, "du_out", float32)
+            dvs = call.output(self.dim, dv_out, "dv_out", float32)
         if normals:
-            nrm = call.output(3, normal_out, "normal_out")
+            nrm = call.output(3, normal_out, "normal_out", float32)
             kinds = call.kinds(kind_out)
         call.check_disjoint()
-        LIB.bs_patch_eval_grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views,
-                               dus.views if dus else None, dvs.views if dvs else None,
-                               nrm.views if nrm else None, kinds.address if kinds else None)
+        grid = LIB.bs_patch_eval_grid_f32 if float32 else LIB.bs_patch_eval_grid
+        grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views,
+             dus.views if dus else None, dvs.views if dvs else None,
+             nrm.views if nrm else None, kinds.address if kinds else None)
         if not derivatives and not normals:
             return pos.result()
         return Evaluation(*(x.result() if x is not None else None
@@ -611,8 +617,8 @@ class _Call:
                 raise ValueError(f"u and v must have the same length ({du.count} != {dv.count})")
             self.n = du.count
 
-    def output(self, k: int, out: Any, what: str) -> B.Output:
-        res = B.Output(self.n, k, out, what)
+    def output(self, k: int, out: Any, what: str, float32: bool = False) -> B.Output:
+        res = B.Output(self.n, k, out, what, float32)
         if out is not None:
             self.given.append((what, out))
         return res

@@ -233,6 +233,18 @@ pub struct bs_tess_options {
     pub max_triangles: usize,
 }
 
+/// A strided float output view (`bs_fview`, core.h, since 1.1): stride in bytes, 0 = packed.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct bs_fview {
+    /// Element 0 (written).
+    pub data: *mut f32,
+    /// Number of elements.
+    pub count: usize,
+    /// Bytes between elements; 0 means `size_of::<f32>()`.
+    pub stride: isize,
+}
+
 /// Opaque locator (`bs_locator`, since 1.1).
 #[repr(C)]
 pub struct bs_locator {
@@ -628,6 +640,25 @@ extern "C" {
         dmax: *const bs_view,
         kind: *mut c_uchar,
     ) -> bs_status;
+    /// The grid evaluator with float outputs, each the double result rounded (since 1.1).
+    pub fn bs_patch_eval_grid_f32(
+        p: *const bs_patch,
+        nu: usize,
+        u: *const bs_cview,
+        nv: usize,
+        v: *const bs_cview,
+        pos: *const bs_fview,
+        du: *const bs_fview,
+        dv: *const bs_fview,
+        nrm: *const bs_fview,
+        kind: *mut c_uchar,
+    ) -> bs_status;
+    /// Vertex positions as floats (since 1.1).
+    pub fn bs_mesh_copy_positions_f32(m: *const bs_mesh, xyz: *const bs_fview) -> bs_status;
+    /// Vertex normals as floats (since 1.1).
+    pub fn bs_mesh_copy_normals_f32(m: *const bs_mesh, nrm: *const bs_fview) -> bs_status;
+    /// Vertex (u, v) as floats (since 1.1).
+    pub fn bs_mesh_copy_uv_f32(m: *const bs_mesh, uv: *const bs_fview) -> bs_status;
     /// Certified closest points of a patch to n query points (since 1.1).
     pub fn bs_patch_closest_point(
         p: *const bs_patch,

@@ -236,3 +236,31 @@ fn rational_quarter_circle() {
     p.eval_deriv(1, 0, &[0.0], &[0.5], &mut du).unwrap();
     close(&du, &[0.0, 2.0 * w]);
 }
+
+#[test]
+fn float_grid_is_the_double_grid_rounded() {
+    let pot = bezsurf::Surface::builtin("teapot").unwrap();
+    let lid = pot.get(20).unwrap(); // a patch with a pole: limit normals
+    let (u, v) = ([0.0, 0.25, 0.5, 1.0], [0.0, 0.1, 0.9]);
+    let n = u.len() * v.len();
+    let (mut pos, mut nrm, mut kind) = (vec![0.0; 3 * n], vec![0.0; 3 * n], vec![0u8; n]);
+    lid.eval_grid(&u[..], &v[..], bezsurf::Outputs::new().pos(&mut pos).normal(&mut nrm).kind(&mut kind))
+        .unwrap();
+    let (mut pf, mut nf, mut kf) = (vec![0f32; 3 * n], vec![0f32; 3 * n], vec![0u8; n]);
+    let out = bezsurf::GridF32 {
+        pos: Some(&mut pf),
+        normal: Some(&mut nf),
+        kind: Some(&mut kf),
+        ..Default::default()
+    };
+    lid.eval_grid_f32(&u, &v, out).unwrap();
+    let round = |x: &[f64]| x.iter().map(|&a| a as f32).collect::<Vec<f32>>();
+    assert_eq!(pf, round(&pos));
+    assert_eq!(nf, round(&nrm));
+    assert_eq!(kf, kind);
+    let mut short = vec![0f32; 3 * n - 1];
+    let e = lid
+        .eval_grid_f32(&u, &v, bezsurf::GridF32 { pos: Some(&mut short), ..Default::default() })
+        .unwrap_err();
+    assert_eq!(e.kind(), bezsurf::ErrorKind::Size);
+}

@@ -30,6 +30,7 @@ int main(void)
 {
     SIZE(bs_view); OFF(bs_view, data); OFF(bs_view, count); OFF(bs_view, stride);
     SIZE(bs_cview); OFF(bs_cview, data); OFF(bs_cview, count); OFF(bs_cview, stride);
+    SIZE(bs_fview); OFF(bs_fview, data); OFF(bs_fview, count); OFF(bs_fview, stride);
     SIZE(bs_curve); OFF(bs_curve, degree); OFF(bs_curve, dim); OFF(bs_curve, ctrl);
     OFF(bs_curve, weights);
     SIZE(bs_parse_error); OFF(bs_parse_error, line); OFF(bs_parse_error, column);
@@ -114,6 +115,11 @@ fn sys_matches_the_c_header() {
         ("offset bs_cview.data", offset_of!(sys::bs_cview, data) as i64),
         ("offset bs_cview.count", offset_of!(sys::bs_cview, count) as i64),
         ("offset bs_cview.stride", offset_of!(sys::bs_cview, stride) as i64),
+        ("size bs_fview", size_of::<sys::bs_fview>() as i64),
+        ("align bs_fview", align_of::<sys::bs_fview>() as i64),
+        ("offset bs_fview.data", offset_of!(sys::bs_fview, data) as i64),
+        ("offset bs_fview.count", offset_of!(sys::bs_fview, count) as i64),
+        ("offset bs_fview.stride", offset_of!(sys::bs_fview, stride) as i64),
         ("size bs_curve", size_of::<sys::bs_curve>() as i64),
         ("align bs_curve", align_of::<sys::bs_curve>() as i64),
         ("offset bs_curve.degree", offset_of!(sys::bs_curve, degree) as i64),

@@ -158,3 +158,13 @@ fn meshes_are_send_and_sync() {
     fn check<T: Send + Sync>() {}
     check::<bezsurf::Mesh>();
 }
+
+#[test]
+fn float_read_back_is_the_doubles_rounded() {
+    let cup = bezsurf::Surface::builtin("teacup").unwrap();
+    let m = cup.tessellate_uniform(3, 3, bezsurf::TessFlags::NONE).unwrap();
+    let round = |v: Vec<f64>| v.into_iter().map(|x| x as f32).collect::<Vec<f32>>();
+    assert_eq!(m.positions_f32(), round(m.positions()));
+    assert_eq!(m.normals_f32(), round(m.normals()));
+    assert_eq!(m.uv_f32(), round(m.uv()));
+}
