@@ -44,22 +44,6 @@ static void point_normal(const bs_patch *p, double u, double v, double x[3], dou
     CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, xv, nv, kind), BS_OK);
 }
 
-/* Diagonal of the box of every control point. */
-static double diagonal(const bs_surface *s)
-{
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t i = 0; i < bs_surface_count(s); i++) {
-        double a[3], b[3];
-        bs_patch_bounds(bs_surface_get(s, i), a, b);
-        for (int c = 0; c < 3; c++) {
-            lo[c] = fmin(lo[c], a[c]);
-            hi[c] = fmax(hi[c], b[c]);
-        }
-    }
-    return sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 /* S at the hit in long double from the patch's net: on the ray within tau at the hit's t. */
 static long double off_ray(const bs_patch *p, const hit *h, const double o[3], const double d[3])
 {
@@ -196,7 +180,7 @@ static void tea(const char *name, int per_patch)
     CHECK_STATUS(bs_surface_create_builtin(name, &s), BS_OK);
     CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
     CHECK(bs_locator_dim(L) == 3);
-    double D = diagonal(s);
+    double D = shape_diagonal(s);
     tally inside = {0}, sides = {0}, corners = {0};
     for (size_t i = 0; i < bs_surface_count(s); i++) {
         int closed[4];
@@ -235,7 +219,7 @@ static void pole(void)
     bs_locator *L = NULL;
     CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
     CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
-    double D = diagonal(s);
+    double D = shape_diagonal(s);
     tally ty = {0};
     size_t poles = 0;
     for (size_t i = 0; i < bs_surface_count(s); i++) {

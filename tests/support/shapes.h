@@ -1,4 +1,4 @@
-/* Exact shapes shared by the query tests. */
+/* Exact shapes, and the scale D of a surface, shared by the query tests. */
 #ifndef BS_TEST_SHAPES_H
 #define BS_TEST_SHAPES_H
 
@@ -24,6 +24,28 @@ static inline bs_patch *shape_sphere_octant(double r)
         }
     bs_patch *p = NULL;
     return bs_patch_create(2, 2, 3, ctrl, w, &p) == BS_OK ? p : NULL;
+}
+
+/* D: the diagonal of the box of every control point of a surface. */
+static inline double shape_diagonal(const bs_surface *s)
+{
+    size_t dim = bs_surface_dim(s);
+    double lo[BS_MAX_DIM], hi[BS_MAX_DIM], d = 0;
+    for (size_t c = 0; c < dim; c++) {
+        lo[c] = INFINITY;
+        hi[c] = -INFINITY;
+    }
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        double a[BS_MAX_DIM], b[BS_MAX_DIM];
+        bs_patch_bounds(bs_surface_get(s, i), a, b);
+        for (size_t c = 0; c < dim; c++) {
+            lo[c] = fmin(lo[c], a[c]);
+            hi[c] = fmax(hi[c], b[c]);
+        }
+    }
+    for (size_t c = 0; c < dim; c++)
+        d = hypot(d, hi[c] - lo[c]);
+    return d;
 }
 
 #endif
