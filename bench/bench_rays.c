@@ -16,6 +16,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
+#ifdef __GLIBC__
+#include <malloc.h> /* mallinfo2: the locator's memory */
+#endif
 
 static double now(void)
 {
@@ -113,6 +116,19 @@ static size_t baseline_trace(const baseline *b, const rays *r, size_t n, int ran
     return hits;
 }
 
+/* The two locator passes as functions of their own, so that callgrind can count each:
+ * valgrind --tool=callgrind --toggle-collect=primary_pass build/bench/bench_rays 256 0 */
+__attribute__((noinline)) bs_status primary_pass(const bs_locator *L, const rays *r);
+__attribute__((noinline)) bs_status primary_pass(const bs_locator *L, const rays *r)
+{
+    return trace(L, r, 0, r->n, 0);
+}
+__attribute__((noinline)) bs_status secondary_pass(const bs_locator *L, const rays *r);
+__attribute__((noinline)) bs_status secondary_pass(const bs_locator *L, const rays *r)
+{
+    return trace(L, r, 0, r->n, 1);
+}
+
 static size_t count_hits(const rays *r, size_t n)
 {
     size_t h = 0;
@@ -136,10 +152,17 @@ int main(int argc, char **argv)
     bs_locator *L = NULL;
     if (N == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK)
         return 1;
+    double bytes = -1;
+#ifdef __GLIBC__
+    bytes = -(double)(mallinfo2().uordblks + mallinfo2().hblkhd); /* heap and mmap-ed blocks */
+#endif
     double t0 = now();
     if (bs_locator_create(s, &L) != BS_OK)
         return 1;
     double build = now() - t0;
+#ifdef __GLIBC__
+    bytes += (double)(mallinfo2().uordblks + mallinfo2().hblkhd);
+#endif
     baseline b = {bs_surface_count(s), NULL, NULL, NULL};
     b.L = calloc(b.np, sizeof *b.L);
     b.lo = malloc(b.np * sizeof *b.lo);
@@ -185,7 +208,7 @@ int main(int argc, char **argv)
             }
         }
     t0 = now();
-    if (trace(L, &pr, 0, nrays, 0) != BS_OK)
+    if (primary_pass(L, &pr) != BS_OK)
         return 1;
     double tp = now() - t0;
     size_t hp = count_hits(&pr, nrays);
@@ -208,14 +231,19 @@ int main(int argc, char **argv)
         sr.range[1][k] = 1e300;
     }
     t0 = now();
-    if (trace(L, &sr, 0, nrays, 1) != BS_OK)
+    if (secondary_pass(L, &sr) != BS_OK)
         return 1;
     double ts = now() - t0;
     size_t hs = count_hits(&sr, nrays);
     /* the baseline on the first fraction of each set (spread over the image: every k-th ray) */
     size_t nb = (size_t)((double)nrays * frac), stride = nb ? nrays / nb : 1;
     rays pb, sb;
-    if (nb == 0 || !rays_alloc(&pb, nb) || !rays_alloc(&sb, nb))
+    if (nb == 0) { /* no baseline */
+        printf("primary %zux%zu: %.0f rays/s (%zu hits); secondary %.0f rays/s (%zu hits)\n", N, N,
+               (double)nrays / tp, hp, (double)nrays / ts, hs);
+        return 0;
+    }
+    if (!rays_alloc(&pb, nb) || !rays_alloc(&sb, nb))
         return 1;
     for (size_t k = 0; k < nb; k++)
         for (int c = 0; c < 3; c++) {
@@ -233,7 +261,8 @@ int main(int argc, char **argv)
     t0 = now();
     size_t hbs = baseline_trace(&b, &sb, nb, 1);
     double tbs = now() - t0;
-    printf("teapot: 32 patches, locator built in %.3f ms\n", build * 1e3);
+    printf("teapot: %zu patches, locator built in %.3f ms, %.0f bytes allocated (%.0f per patch)\n", b.np,
+           build * 1e3, bytes, bytes / (double)b.np);
     printf("primary   %zux%zu: %9.0f rays/s (%zu hits); baseline (every patch box, no hierarchy) "
            "%9.0f rays/s on %zu of them (%zu hits): %.1fx\n",
            N, N, (double)nrays / tp, hp, (double)nb / tbp, nb, hbp, ((double)nb / tbp) > 0 ? ((double)nrays / tp) / ((double)nb / tbp) : 0);

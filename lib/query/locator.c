@@ -10,33 +10,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-void bsi_net_halve(const double *net, size_t m, size_t n, size_t nc, int dir, double *lo,
-                   double *hi)
-{
-    /* along u, curve j runs over i with stride (n+1) nc; along v over j with stride nc */
-    size_t deg = dir == BS_DIR_U ? m : n, step = dir == BS_DIR_U ? (n + 1) * nc : nc;
-    size_t ncurve = dir == BS_DIR_U ? n + 1 : m + 1, cstep = dir == BS_DIR_U ? nc : (n + 1) * nc;
-    double b[BS_MAX_DEGREE + 1];
-    for (size_t q = 0; q < ncurve; q++)
-        for (size_t c = 0; c < nc; c++) {
-            size_t base = q * cstep + c;
-            for (size_t k = 0; k <= deg; k++)
-                b[k] = net[base + k * step];
-            if (lo)
-                lo[base] = b[0];
-            if (hi)
-                hi[base + deg * step] = b[deg];
-            for (size_t r = 1; r <= deg; r++) {
-                for (size_t k = 0; k + r <= deg; k++)
-                    b[k] = (b[k] + b[k + 1]) * 0.5;
-                if (lo)
-                    lo[base + r * step] = b[0];
-                if (hi)
-                    hi[base + (deg - r) * step] = b[deg - r];
-            }
-        }
-}
-
 /* The homogeneous net of p interleaved: point k is w P_0 .. w P_dim-1, w. */
 static void hom_net(const bs_patch *p, double *out)
 {

@@ -40,9 +40,40 @@ struct bs_locator {
 
 /* Halve a net of (m+1) x (n+1) points of nc interleaved doubles at the parameter 1/2 along dir
  * (BS_DIR_U: along i, the rows) into lo and hi (either may be NULL). Only midpoints (a+b)/2 are
- * formed, so a shared side or a reversed one halves to the same bits in both patches. */
-void bsi_net_halve(const double *net, size_t m, size_t n, size_t nc, int dir, double *lo,
-                   double *hi);
+ * formed, so a shared side or a reversed one halves to the same bits in both patches. Inline, so
+ * that the ray test's calls with nc = 4 are compiled for that nc. */
+static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t nc, int dir,
+                                 double *lo, double *hi)
+{
+    /* along u, curve q runs over i with a step of (n+1) points; along v over j, one point */
+    size_t deg = dir == BS_DIR_U ? m : n, step = dir == BS_DIR_U ? (n + 1) * nc : nc;
+    size_t ncurve = dir == BS_DIR_U ? n + 1 : m + 1, cstep = dir == BS_DIR_U ? nc : (n + 1) * nc;
+    double b[(BS_MAX_DEGREE + 1) * (BS_MAX_DIM + 1)];
+    for (size_t q = 0; q < ncurve; q++) {
+        const double *in = net + q * cstep;
+        size_t base = q * cstep;
+        for (size_t k = 0; k <= deg; k++)
+            for (size_t c = 0; c < nc; c++)
+                b[k * nc + c] = in[k * step + c];
+        for (size_t c = 0; c < nc; c++) {
+            if (lo)
+                lo[base + c] = b[c];
+            if (hi)
+                hi[base + deg * step + c] = b[deg * nc + c];
+        }
+        for (size_t r = 1; r <= deg; r++) {
+            for (size_t k = 0; k + r <= deg; k++)
+                for (size_t c = 0; c < nc; c++)
+                    b[k * nc + c] = (b[k * nc + c] + b[(k + 1) * nc + c]) * 0.5;
+            for (size_t c = 0; c < nc; c++) {
+                if (lo)
+                    lo[base + r * step + c] = b[c];
+                if (hi)
+                    hi[base + (deg - r) * step + c] = b[(deg - r) * nc + c];
+            }
+        }
+    }
+}
 
 /* Build the hierarchy over L->nleaf leaves whose boxes are in leaf_box (2*dim doubles each, as
  * node boxes): fills L->nodes, L->nnode, L->box and reorders L->leaves. BS_ERR_NO_MEMORY. */

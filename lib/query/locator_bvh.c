@@ -103,6 +103,11 @@ bs_status bsi_loc_build_bvh(bs_locator *L, double *leaf_box)
         builder b = {L, leaf_box, cen, perm, 1};
         build_node(&b, 0, 0, n);
         L->nnode = b.next;
+        /* give back the nodes a tree with up to LEAF_MAX leaves per node did not use */
+        bsi_loc_node *nodes = realloc(L->nodes, L->nnode * sizeof *L->nodes);
+        double *box = realloc(L->box, L->nnode * 2 * dim * sizeof(double));
+        L->nodes = nodes ? nodes : L->nodes;
+        L->box = box ? box : L->box;
         for (size_t k = 0; k < n; k++)
             sorted[k] = L->leaves[perm[k]];
         bsi_loc_leaf *old = L->leaves;

@@ -2,22 +2,22 @@
  * A ray against one sub-patch of the locator. The net is expressed in a frame of the ray: two
  * unit vectors e1, e2 across it and its unit direction d, so that X_k = w (P - o).e_k and
  * T = w (P - o).d are again a Bezier net (the homogeneous net when rational), and the hits are
- * the common zeros of (X1, X2): a 2-D Bezier patch. Sub-patches whose projected net keeps the
- * origin outside its box (enlarged by the rounding of the projection and the halvings, which is
- * what keeps shared sides watertight: both patches see the same bits there) or whose t range
- * lies outside what is wanted are discarded; the others are halved in both directions, nearest
- * first. From the first level below a leaf on, Newton's method on (X1, X2), started at the centre and kept
- * inside the sub-patch, looks for the zero; a zero is taken as the only one of its sub-patch when
- * the hodographs of (X1, X2) along s and along r lie in two cones that do not meet (the map is
- * then one to one there), else the search goes on below it. Newton steps are damped
- * (Levenberg-Marquardt) so that they stay finite at poles, where X_s vanishes along a side.
+ * the common zeros of (X1, X2): a 2-D Bezier patch. A piece of it is discarded when its projected
+ * net keeps the origin outside its box (enlarged by the rounding of the projection and the
+ * halvings, which is what keeps shared sides watertight: both patches see the same bits there),
+ * or its t range lies outside what is wanted. Otherwise Newton's method on (X1, X2), started at
+ * the centre and kept inside the piece, looks for the zero, with damped (Levenberg-Marquardt)
+ * steps that stay finite at poles, where X_s vanishes along a side. A zero found is the only one
+ * of its piece when the hodographs of (X1, X2) along s and along r lie in two cones that do not
+ * meet (the map is then one to one there); a piece without one is discarded when the origin is
+ * shown to lie outside the convex hull of its projected net. Anything else is halved in both
+ * directions, the nearest quarter searched first, down to a fixed depth.
  */
 #include "query/locator.h"
 
 #include <float.h>
 #include <math.h>
 
-#define NEWTON_DEPTH 1 /* levels below a leaf before Newton is tried */
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
 #define SLOTS (3 * MAX_DEPTH + 4)
 #define NC 4 /* X1, X2, T, W */
@@ -89,6 +89,7 @@ static int newton(const double *net, size_t m, size_t n, const pending *e, doubl
     double slo = fmax(0.0, e->s0 - pad), shi = fmin(1.0, e->s0 + e->w + pad);
     double rlo = fmax(0.0, e->r0 - pad), rhi = fmin(1.0, e->r0 + e->w + pad);
     double s = e->s0 + 0.5 * e->w, r = e->r0 + 0.5 * e->w, best = INFINITY;
+    int worse = 0; /* steps in a row that found nothing nearer */
     *s_out = s;
     *r_out = r;
     *t_out = INFINITY;
@@ -97,6 +98,7 @@ static int newton(const double *net, size_t m, size_t n, const pending *e, doubl
         eval_net(net, m, n, s, r, f, fs, fr);
         double dist = hypot(f[0], f[1]) / f[3];
         if (dist < best) {
+            worse = dist < 0.5 * best ? 0 : worse + 1;
             best = dist;
             *s_out = s;
             *r_out = r;
@@ -104,7 +106,9 @@ static int newton(const double *net, size_t m, size_t n, const pending *e, doubl
             g[0] = f[0];
             g[1] = f[1];
         }
-        if (!(dist > floor_dist))
+        else
+            worse++;
+        if (!(dist > floor_dist) || worse >= 4) /* converged, or no longer converging */
             break;
         /* (J^T J + lambda I) step = -J^T f */
         double a11 = fs[0] * fs[0] + fs[1] * fs[1], a12 = fs[0] * fr[0] + fs[1] * fr[1];
@@ -126,57 +130,67 @@ static int newton(const double *net, size_t m, size_t n, const pending *e, doubl
     return best <= tol;
 }
 
-/* The differences of the projected net along dir (x, y pairs into v); returns how many, leaving
- * out those below 1e-9 of the largest: at a pole (a collapsed side) they vanish but for the
- * rounding and the differing weights of the pole's copies, and every zero on that side is the
- * same point. */
-static size_t differences(const double *net, size_t m, size_t n, int dir, double *v)
+/* The cone of the differences of the projected net along dir: its two extreme vectors lo, hi
+ * (the others lie between them). 0 if they do not all lie within 90 degrees of their sum, or
+ * none is left. Differences below 1e-9 of the largest are left out: at a pole (a collapsed side)
+ * they vanish but for the rounding and the differing weights of the pole's copies, and every zero
+ * on that side is the same point. */
+static int cone(const double *net, size_t m, size_t n, int dir, double lo[2], double hi[2])
 {
-    size_t ni = dir == BS_DIR_U ? m : m + 1, nj = dir == BS_DIR_U ? n + 1 : n, k = 0;
+    size_t ni = dir == BS_DIR_U ? m : m + 1, nj = dir == BS_DIR_U ? n + 1 : n;
     size_t step = dir == BS_DIR_U ? (n + 1) * NC : NC;
-    double big = 0.0;
+    double sx = 0.0, sy = 0.0, big = 0.0;
     for (size_t i = 0; i < ni; i++)
-        for (size_t j = 0; j < nj; j++, k++) {
+        for (size_t j = 0; j < nj; j++) {
             const double *a = net + (i * (n + 1) + j) * NC;
-            v[2 * k] = a[step] - a[0];
-            v[2 * k + 1] = a[step + 1] - a[1];
-            big = greater(big, greater(fabs(v[2 * k]), fabs(v[2 * k + 1])));
+            double x = a[step] - a[0], y = a[step + 1] - a[1];
+            sx += x;
+            sy += y;
+            big = greater(big, greater(fabs(x), fabs(y)));
         }
-    size_t kept = 0;
-    for (size_t q = 0; q < k; q++)
-        if (greater(fabs(v[2 * q]), fabs(v[2 * q + 1])) > 1e-9 * big) {
-            v[2 * kept] = v[2 * q];
-            v[2 * kept++ + 1] = v[2 * q + 1];
+    double tlo = INFINITY, thi = -INFINITY; /* tangents of the angles to the sum */
+    for (size_t i = 0; i < ni; i++)
+        for (size_t j = 0; j < nj; j++) {
+            const double *a = net + (i * (n + 1) + j) * NC;
+            double x = a[step] - a[0], y = a[step + 1] - a[1];
+            if (!(greater(fabs(x), fabs(y)) > 1e-9 * big))
+                continue;
+            double along = sx * x + sy * y, across = sx * y - sy * x;
+            if (!(along > 0.0))
+                return 0;
+            double tn = across / along;
+            if (tn < tlo) {
+                tlo = tn;
+                lo[0] = x;
+                lo[1] = y;
+            }
+            if (tn > thi) {
+                thi = tn;
+                hi[0] = x;
+                hi[1] = y;
+            }
         }
-    return kept;
+    return tlo <= thi;
 }
 
 /* 1 if (X1, X2) is one to one on the sub-patch of this net: every difference along s crossed with
- * every difference along r has the same sign, so any two vectors of the cones the partials lie
- * in are independent, and N(q) - N(p) = ds A + dr B (A, B in those cones) vanishes only for
- * ds = dr = 0. Scratch v holds 2 (m+1)(n+1) pairs. */
-static int one_to_one(const double *net, size_t m, size_t n, double *v)
+ * every difference along r has the same sign (checked on the cones' extremes, which span the
+ * rest), so any two vectors of the cones the partials lie in are independent, and
+ * N(q) - N(p) = ds A + dr B (A, B in those cones) vanishes only for ds = dr = 0. */
+static int one_to_one(const double *net, size_t m, size_t n)
 {
-    if (m == 0 || n == 0)
+    double s[2][2], r[2][2];
+    if (m == 0 || n == 0 || !cone(net, m, n, BS_DIR_U, s[0], s[1]) || !cone(net, m, n, BS_DIR_V, r[0], r[1]))
         return 0;
-    size_t ns = differences(net, m, n, BS_DIR_U, v);
-    double *w = v + 2 * ns;
-    size_t nr = differences(net, m, n, BS_DIR_V, w);
-    if (ns == 0 || nr == 0)
-        return 0;
-    double sign = 0.0;
-    for (size_t a = 0; a < ns; a++)
-        for (size_t b = 0; b < nr; b++) {
-            double x = v[2 * a] * w[2 * b + 1] - v[2 * a + 1] * w[2 * b];
-            double scale = (fabs(v[2 * a]) + fabs(v[2 * a + 1])) * (fabs(w[2 * b]) + fabs(w[2 * b + 1]));
-            if (!(fabs(x) > 1e-9 * scale))
-                return 0;
-            if (sign == 0.0)
-                sign = x;
-            else if ((x > 0.0) != (sign > 0.0))
-                return 0;
+    int pos = 0, neg = 0;
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++) {
+            double x = s[a][0] * r[b][1] - s[a][1] * r[b][0];
+            double scale = (fabs(s[a][0]) + fabs(s[a][1])) * (fabs(r[b][0]) + fabs(r[b][1]));
+            pos += x > 1e-9 * scale;
+            neg += x < -1e-9 * scale;
         }
-    return 1;
+    return pos == 4 || neg == 4;
 }
 
 /* Box of the projected net: 1 if the origin lies within tol of it (X1, X2), and its t range. */
@@ -196,18 +210,43 @@ static int near_origin(const double *net, size_t np, double tol, double *tlo, do
     return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
 }
 
-/* 1 if every point of the net lies more than tol beyond the origin along the direction g, which
- * is then not in the convex hull: along the direction from the ray to the nearest point Newton
- * found, a sub-patch that only skims the ray is excluded long before its box is. */
-static int beyond(const double *net, size_t np, const double g[2], double tol)
+/* 1 if the origin lies more than tol outside the convex hull of the projected net's points (the
+ * net then has no zero). A few steps of the Frank-Wolfe (Gilbert) iteration for the point of the
+ * hull nearest to the origin, started at g (the point nearest to the ray that Newton found):
+ * the support point in the direction of the current point gives a separating line as soon as it
+ * lies beyond tol. pts: scratch for np points. Boxes that only skim the ray are excluded long
+ * before their axis-aligned box is. */
+static int separated(const double *net, size_t np, const double g[2], double tol, double *pts)
 {
-    double len = hypot(g[0], g[1]);
-    if (!(len > 0.0))
-        return 0;
-    for (size_t k = 0; k < np; k++)
-        if (!((net[k * NC] * g[0] + net[k * NC + 1] * g[1]) / (len * net[k * NC + 3]) > tol))
+    for (size_t k = 0; k < np; k++) {
+        double inv = 1.0 / net[k * NC + 3];
+        pts[2 * k] = net[k * NC] * inv;
+        pts[2 * k + 1] = net[k * NC + 1] * inv;
+    }
+    double x = g[0], y = g[1];
+    for (int it = 0; it < 8; it++) {
+        double len = hypot(x, y);
+        if (!(len > tol))
             return 0;
-    return 1;
+        size_t at = 0;
+        double low = INFINITY;
+        for (size_t k = 0; k < np; k++) {
+            double h = pts[2 * k] * x + pts[2 * k + 1] * y;
+            if (h < low) {
+                low = h;
+                at = k;
+            }
+        }
+        if (low > tol * len)
+            return 1;
+        /* the point of the segment from (x, y) to the support point nearest to the origin */
+        double dx = pts[2 * at] - x, dy = pts[2 * at + 1] - y, dd = dx * dx + dy * dy;
+        double lam = dd > 0.0 ? -(x * dx + y * dy) / dd : 0.0;
+        lam = lam < 0.0 ? 0.0 : lam > 1.0 ? 1.0 : lam;
+        x += lam * dx;
+        y += lam * dy;
+    }
+    return 0;
 }
 
 /* The leaf's net in the ray's frame; returns the largest |P - o| coordinate. */
@@ -256,19 +295,17 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         if (e.tlo > fmin(hit->t, ray->tmax) || !near_origin(net, np, tol, &tlo, &thi) ||
             thi < ray->tmin || tlo > fmin(hit->t, ray->tmax))
             continue;
-        if (e.depth >= NEWTON_DEPTH) {
-            double s, r, t, g[2] = {0.0, 0.0};
-            int found = newton(root, m, n, &e, floor_dist, accept, &s, &r, &t, g);
-            if (found && wanted(ray, t, hit->t)) {
-                hit->t = t;
-                hit->s = s;
-                hit->r = r;
-                hit->leaf = k;
-            }
-            if ((found && one_to_one(net, m, n, half[0])) || (!found && beyond(net, np, g, tol)) ||
-                e.depth == MAX_DEPTH)
-                continue;
+        double s, r, t, g[2] = {0.0, 0.0};
+        int found = newton(root, m, n, &e, floor_dist, accept, &s, &r, &t, g);
+        if (found && wanted(ray, t, hit->t)) {
+            hit->t = t;
+            hit->s = s;
+            hit->r = r;
+            hit->leaf = k;
         }
+        if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, g, tol, half[1])) ||
+            e.depth == MAX_DEPTH)
+            continue;
         /* the four halves, nearest t first */
         bsi_net_halve(net, m, n, NC, BS_DIR_U, half[0], half[1]);
         pending kids[4];

@@ -1,9 +1,9 @@
-/* Rays through a locator: rays aimed at known points of the tea set (inside patches, on every
- * patch side, shared or open, at corners and at the lid's pole) from random directions that
- * cross the surface there (|d.N| >= 1e-3 |d|) must hit that point or an earlier one, checked
- * independently (the point reported, evaluated in long double, lies on the surface and on the
- * ray at the t reported); a rational sphere octant against the exact intersection with its
- * sphere; misses and t ranges. */
+/* Rays through a locator: rays aimed at known points of the tea set (inside patches, on shared
+ * sides, at corners between them and at the lid's pole) from random directions that cross the
+ * surface there (|d.N| >= 1e-3 |d|) must hit that point or an earlier one, checked independently
+ * (the point reported, evaluated in long double, lies on the surface and on the ray at the t
+ * reported); rays leaving the surface for other points of it; a rational sphere octant against
+ * the exact intersection with its sphere; misses and t ranges. */
 #include "harness.h"
 #include "reference.h"
 #include "shapes.h"
@@ -212,6 +212,54 @@ static void tea(const char *name, int per_patch)
     bs_surface_destroy(s);
 }
 
+/* Rays leaving the surface (t from 1e-6) at S(u,v) of patch i aimed at other surface points
+ * crossed transversally: the first hit is there or earlier. */
+static void from_surface(const char *name, int count)
+{
+    bs_surface *s = NULL;
+    bs_locator *L = NULL;
+    CHECK_STATUS(bs_surface_create_builtin(name, &s), BS_OK);
+    CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
+    double D = shape_diagonal(s), tau = 1e-9 * D;
+    tally ty = {0};
+    size_t np = bs_surface_count(s);
+    for (int k = 0; k < count; k++) {
+        double a[3], b[3], na[3], nb[3], d[3], range[2] = {1e-6, 1e30};
+        unsigned char ka, kb;
+        const bs_patch *pa = bs_surface_get(s, bs_test_rand_u64(&rng) % np);
+        const bs_patch *pb = bs_surface_get(s, bs_test_rand_u64(&rng) % np);
+        point_normal(pa, bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), a, na, &ka);
+        point_normal(pb, bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), b, nb, &kb);
+        for (int c = 0; c < 3; c++)
+            d[c] = b[c] - a[c];
+        double dl = sqrt(dot3(d, d));
+        if (kb == BS_NORMAL_UNDEFINED || fabs(dot3(d, nb)) < 1e-3 * dl || dl < 1e-3 * D)
+            continue;
+        hit h;
+        ty.tried++;
+        CHECK_STATUS(shoot(L, a, d, range, &h), BS_OK);
+        if (h.patch == UINT32_MAX) {
+            ty.missed++;
+            CHECKF(0, "miss from the surface (%.17g, %.17g, %.17g) dir (%.17g, %.17g, %.17g)", a[0], a[1],
+                   a[2], d[0], d[1], d[2]);
+            continue;
+        }
+        double late = (h.t - 1) * dl / tau;
+        ty.worst_t = fmax(ty.worst_t, late);
+        ty.late += late > 1;
+        ty.earlier += late < -1;
+        CHECKF(late <= 1 && h.t >= range[0], "late hit from the surface: t %.17g", h.t);
+        long double off = off_ray(bs_surface_get(s, h.patch), &h, a, d) / tau;
+        ty.worst_off = fmax(ty.worst_off, (double)off);
+        CHECKF(off <= 1, "hit off the ray by %.3Lg tau", off);
+    }
+    printf("%s from the surface: %ld rays, %ld missed, %ld late, %ld hit earlier; worst off the ray "
+           "%.2g tau\n", name, ty.tried, ty.missed, ty.late, ty.earlier, ty.worst_off);
+    CHECK(ty.missed == 0 && ty.late == 0);
+    bs_locator_destroy(L);
+    bs_surface_destroy(s);
+}
+
 /* The lid's pole (the collapsed sides of the teapot's top patches) from many directions. */
 static void pole(void)
 {
@@ -351,6 +399,8 @@ int main(void)
     tea("teapot", 40);
     tea("teacup", 40);
     tea("teaspoon", 40);
+    from_surface("teapot", 3000);
+    from_surface("teaspoon", 1000);
     pole();
     sphere();
     misses_and_ranges();
