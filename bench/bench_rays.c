@@ -6,7 +6,9 @@
  * patch, and every ray tested against every patch's box (bs_patch_bounds), the patch's locator
  * called where the box is hit (with the t range cut at the best hit so far). The ratio is the
  * figure; seconds vary from run to run on a loaded machine.
- * Usage: bench_rays [N] [baseline rays as a fraction of N*N, default 1/16]
+ * The same again on the teapot cut into 8 x 8 sub-patches per patch (2,048 patches), where the
+ * hierarchy has more to do. Times are the process's CPU time.
+ * Usage: bench_rays [N] [stride: the ratio on every stride-th ray, default 16; 0: no baseline]
  */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <bezsurf.h>
@@ -23,7 +25,7 @@
 static double now(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts); /* less noisy than wall time on a shared machine */
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -144,41 +146,10 @@ static double uniform(void)
     return (double)(rng >> 11) * 0x1p-53;
 }
 
-int main(int argc, char **argv)
+/* The N x N primary rays: a pinhole camera at eye looking at the teapot's middle, 40 degrees
+ * across. */
+static void camera(rays *pr, size_t N)
 {
-    size_t N = argc > 1 ? (size_t)atol(argv[1]) : 1024, nrays = N * N;
-    double frac = argc > 2 ? atof(argv[2]) : 1.0 / 16;
-    bs_surface *s = NULL;
-    bs_locator *L = NULL;
-    if (N == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK)
-        return 1;
-    double bytes = -1;
-#ifdef __GLIBC__
-    bytes = -(double)(mallinfo2().uordblks + mallinfo2().hblkhd); /* heap and mmap-ed blocks */
-#endif
-    double t0 = now();
-    if (bs_locator_create(s, &L) != BS_OK)
-        return 1;
-    double build = now() - t0;
-#ifdef __GLIBC__
-    bytes += (double)(mallinfo2().uordblks + mallinfo2().hblkhd);
-#endif
-    baseline b = {bs_surface_count(s), NULL, NULL, NULL};
-    b.L = calloc(b.np, sizeof *b.L);
-    b.lo = malloc(b.np * sizeof *b.lo);
-    b.hi = malloc(b.np * sizeof *b.hi);
-    rays pr, sr;
-    if (!b.L || !b.lo || !b.hi || !rays_alloc(&pr, nrays) || !rays_alloc(&sr, nrays))
-        return 1;
-    for (size_t i = 0; i < b.np; i++) {
-        bs_surface *one = NULL;
-        const bs_patch *p = bs_surface_get(s, i);
-        if (bs_surface_create(&one) != BS_OK || bs_surface_add(one, p, NULL) != BS_OK ||
-            bs_locator_create(one, &b.L[i]) != BS_OK || bs_patch_bounds(p, b.lo[i], b.hi[i]) != BS_OK)
-            return 1;
-        bs_surface_destroy(one);
-    }
-    /* camera at eye looking at the teapot's middle, 40 degrees across */
     const double eye[3] = {6.0, -8.0, 5.5}, at[3] = {0.2, 0.0, 1.4}, up[3] = {0, 0, 1};
     double f[3], rgt[3], u[3], fl = 0, rl = 0, half = tan(20.0 * 3.14159265358979 / 180.0);
     for (int c = 0; c < 3; c++) {
@@ -203,81 +174,183 @@ int main(int argc, char **argv)
             double px = (2.0 * ((double)x + 0.5) / (double)N - 1.0) * half;
             double py = (1.0 - 2.0 * ((double)y + 0.5) / (double)N) * half;
             for (int c = 0; c < 3; c++) {
-                pr.o[c][k] = eye[c];
-                pr.d[c][k] = f[c] + px * rgt[c] + py * u[c];
+                pr->o[c][k] = eye[c];
+                pr->d[c][k] = f[c] + px * rgt[c] + py * u[c];
             }
+            pr->range[0][k] = 0.0; /* unused: primary rays take the default range */
+            pr->range[1][k] = 1e300;
         }
-    t0 = now();
-    if (primary_pass(L, &pr) != BS_OK)
-        return 1;
-    double tp = now() - t0;
-    size_t hp = count_hits(&pr, nrays);
-    /* secondary rays: from each primary hit (or, for a miss, from a random primary hit) */
-    size_t ns = 0;
-    for (size_t k = 0; k < nrays; k++)
-        if (pr.patch[k] != UINT32_MAX)
-            pr.patch[ns++] = (uint32_t)k; /* reuse: indices of hits */
-    if (ns == 0)
-        return 1;
-    for (size_t k = 0; k < nrays; k++) {
-        size_t from = pr.patch[k < ns ? k : (size_t)(uniform() * (double)ns)];
+}
+
+/* Secondary rays: from the primary hits (each in turn, then random ones) in uniformly random
+ * directions, leaving the surface they start on (t from 1e-6). 0 if no primary ray hit. */
+static int scatter(const rays *pr, rays *sr)
+{
+    size_t nh = 0, *hits = malloc(pr->n * sizeof *hits);
+    for (size_t k = 0; hits && k < pr->n; k++)
+        if (pr->patch[k] != UINT32_MAX)
+            hits[nh++] = k;
+    if (nh == 0) {
+        free(hits);
+        return 0;
+    }
+    for (size_t k = 0; k < sr->n; k++) {
+        size_t from = hits[k < nh ? k : (size_t)(uniform() * (double)nh)];
         double z = 2 * uniform() - 1, a = 2 * 3.14159265358979 * uniform(), r = sqrt(1 - z * z);
         double dir[3] = {r * cos(a), r * sin(a), z};
         for (int c = 0; c < 3; c++) {
-            sr.o[c][k] = pr.o[c][from] + pr.t[from] * pr.d[c][from];
-            sr.d[c][k] = dir[c];
+            sr->o[c][k] = pr->o[c][from] + pr->t[from] * pr->d[c][from];
+            sr->d[c][k] = dir[c];
         }
-        sr.range[0][k] = 1e-6; /* leave the surface the ray starts on */
-        sr.range[1][k] = 1e300;
+        sr->range[0][k] = 1e-6;
+        sr->range[1][k] = 1e300;
     }
-    t0 = now();
-    if (secondary_pass(L, &sr) != BS_OK)
-        return 1;
-    double ts = now() - t0;
-    size_t hs = count_hits(&sr, nrays);
-    /* the baseline on the first fraction of each set (spread over the image: every k-th ray) */
-    size_t nb = (size_t)((double)nrays * frac), stride = nb ? nrays / nb : 1;
-    rays pb, sb;
-    if (nb == 0) { /* no baseline */
-        printf("primary %zux%zu: %.0f rays/s (%zu hits); secondary %.0f rays/s (%zu hits)\n", N, N,
-               (double)nrays / tp, hp, (double)nrays / ts, hs);
+    free(hits);
+    return 1;
+}
+
+/* Every stride-th ray of r into sub (allocated). */
+static int every(const rays *r, size_t stride, rays *sub)
+{
+    if (!rays_alloc(sub, r->n / stride))
         return 0;
-    }
-    if (!rays_alloc(&pb, nb) || !rays_alloc(&sb, nb))
-        return 1;
-    for (size_t k = 0; k < nb; k++)
+    for (size_t k = 0; k < sub->n; k++) {
         for (int c = 0; c < 3; c++) {
-            pb.o[c][k] = pr.o[c][k * stride];
-            pb.d[c][k] = pr.d[c][k * stride];
-            sb.o[c][k] = sr.o[c][k * stride];
-            sb.d[c][k] = sr.d[c][k * stride];
-            if (c < 2) {
-                sb.range[c][k] = sr.range[c][k * stride];
-            }
+            sub->o[c][k] = r->o[c][k * stride];
+            sub->d[c][k] = r->d[c][k * stride];
         }
+        sub->range[0][k] = r->range[0][k * stride];
+        sub->range[1][k] = r->range[1][k * stride];
+    }
+    return 1;
+}
+
+static bs_status baseline_create(const bs_surface *s, baseline *b)
+{
+    b->np = bs_surface_count(s);
+    b->L = calloc(b->np, sizeof *b->L);
+    b->lo = malloc(b->np * sizeof *b->lo);
+    b->hi = malloc(b->np * sizeof *b->hi);
+    if (!b->L || !b->lo || !b->hi)
+        return BS_ERR_NO_MEMORY;
+    for (size_t i = 0; i < b->np; i++) {
+        bs_surface *one = NULL;
+        const bs_patch *p = bs_surface_get(s, i);
+        bs_status st;
+        if ((st = bs_surface_create(&one)) != BS_OK || (st = bs_surface_add(one, p, NULL)) != BS_OK ||
+            (st = bs_locator_create(one, &b->L[i])) != BS_OK || (st = bs_patch_bounds(p, b->lo[i], b->hi[i])) != BS_OK)
+            return st;
+        bs_surface_destroy(one);
+    }
+    return BS_OK;
+}
+
+static void baseline_destroy(baseline *b)
+{
+    for (size_t i = 0; b->L && i < b->np; i++)
+        bs_locator_destroy(b->L[i]);
+    free(b->L);
+    free(b->lo);
+    free(b->hi);
+}
+
+/* The teapot with every patch cut into k x k sub-patches (bs_patch_subpatch). */
+static bs_surface *cut(const bs_surface *s, int k)
+{
+    bs_surface *out = NULL;
+    if (bs_surface_create(&out) != BS_OK)
+        return NULL;
+    for (size_t i = 0; i < bs_surface_count(s); i++)
+        for (int a = 0; a < k; a++)
+            for (int b = 0; b < k; b++) {
+                bs_patch *p = NULL;
+                if (bs_patch_subpatch(bs_surface_get(s, i), (double)a / k, (double)(a + 1) / k,
+                                      (double)b / k, (double)(b + 1) / k, &p) != BS_OK ||
+                    bs_surface_add(out, p, NULL) != BS_OK) {
+                    bs_patch_destroy(p);
+                    bs_surface_destroy(out);
+                    return NULL;
+                }
+                bs_patch_destroy(p);
+            }
+    return out;
+}
+
+/* One surface: the locator on all the rays, and the locator and the baseline on every
+ * stride-th ray (the same rays for both: their times make the ratio). */
+static int bench(const char *name, const bs_surface *s, rays *pr, rays *sr, size_t stride, int make_secondary)
+{
+    bs_locator *L = NULL;
+    double bytes = 0;
+#ifdef __GLIBC__
+    bytes = -(double)(mallinfo2().uordblks + mallinfo2().hblkhd); /* heap and mmap-ed blocks */
+#endif
+    double t0 = now();
+    if (bs_locator_create(s, &L) != BS_OK)
+        return 0;
+    double build = now() - t0;
+#ifdef __GLIBC__
+    bytes += (double)(mallinfo2().uordblks + mallinfo2().hblkhd);
+#endif
+    size_t np = bs_surface_count(s);
+    printf("%s: %zu patches, locator built in %.1f ms, %.0f bytes allocated (%.0f per patch)\n", name, np,
+           build * 1e3, bytes, bytes / (double)np);
     t0 = now();
-    size_t hbp = baseline_trace(&b, &pb, nb, 0);
-    double tbp = now() - t0;
+    if (primary_pass(L, pr) != BS_OK)
+        return 0;
+    double tp = now() - t0;
+    if (make_secondary && !scatter(pr, sr))
+        return 0;
     t0 = now();
-    size_t hbs = baseline_trace(&b, &sb, nb, 1);
-    double tbs = now() - t0;
-    printf("teapot: %zu patches, locator built in %.3f ms, %.0f bytes allocated (%.0f per patch)\n", b.np,
-           build * 1e3, bytes, bytes / (double)b.np);
-    printf("primary   %zux%zu: %9.0f rays/s (%zu hits); baseline (every patch box, no hierarchy) "
-           "%9.0f rays/s on %zu of them (%zu hits): %.1fx\n",
-           N, N, (double)nrays / tp, hp, (double)nb / tbp, nb, hbp, ((double)nb / tbp) > 0 ? ((double)nrays / tp) / ((double)nb / tbp) : 0);
-    printf("secondary %zu random: %9.0f rays/s (%zu hits); baseline %9.0f rays/s on %zu (%zu hits): %.1fx\n",
-           nrays, (double)nrays / ts, hs, (double)nb / tbs, nb, hbs, ((double)nrays / ts) / ((double)nb / tbs));
-    for (size_t i = 0; i < b.np; i++)
-        bs_locator_destroy(b.L[i]);
-    free(b.L);
-    free(b.lo);
-    free(b.hi);
+    if (secondary_pass(L, sr) != BS_OK)
+        return 0;
+    double ts = now() - t0;
+    printf("  all rays:  primary %.0f rays/s (%zu of %zu hit), secondary %.0f rays/s (%zu of %zu hit)\n",
+           (double)pr->n / tp, count_hits(pr, pr->n), pr->n, (double)sr->n / ts, count_hits(sr, sr->n), sr->n);
+    if (stride == 0) {
+        bs_locator_destroy(L);
+        return 1;
+    }
+    baseline b = {0, NULL, NULL, NULL};
+    rays sub[2];
+    int ok = baseline_create(s, &b) == BS_OK && every(pr, stride, &sub[0]) && every(sr, stride, &sub[1]);
+    for (int k = 0; k < 2 && ok; k++) {
+        t0 = now();
+        ok = trace(L, &sub[k], 0, sub[k].n, k) == BS_OK;
+        double tl = now() - t0;
+        t0 = now();
+        size_t hb = baseline_trace(&b, &sub[k], sub[k].n, k);
+        double tb = now() - t0;
+        printf("  1/%zu of the %s rays: locator %.0f rays/s (%zu hit), baseline (every patch's box, no "
+               "hierarchy) %.0f rays/s (%zu hit): %.1fx\n",
+               stride, k ? "secondary" : "primary", (double)sub[k].n / tl, count_hits(&sub[k], sub[k].n),
+               (double)sub[k].n / tb, hb, tb / tl);
+    }
+    if (ok) {
+        rays_free(&sub[0]);
+        rays_free(&sub[1]);
+    }
+    baseline_destroy(&b);
+    bs_locator_destroy(L);
+    return ok;
+}
+
+int main(int argc, char **argv)
+{
+    size_t N = argc > 1 ? (size_t)atol(argv[1]) : 1024, nrays = N * N;
+    size_t stride = argc > 2 ? (size_t)atol(argv[2]) : 16;
+    bs_surface *s = NULL, *fine = NULL;
+    rays pr, sr;
+    if (N == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK || (fine = cut(s, 8)) == NULL ||
+        !rays_alloc(&pr, nrays) || !rays_alloc(&sr, nrays))
+        return 1;
+    camera(&pr, N);
+    printf("%zux%zu primary rays (a camera at the teapot), as many secondary rays (from the primary "
+           "hits, random directions); seconds of CPU time\n", N, N);
+    int ok = bench("teapot", s, &pr, &sr, stride, 1) && bench("teapot cut 8x8", fine, &pr, &sr, stride, 0);
     rays_free(&pr);
     rays_free(&sr);
-    rays_free(&pb);
-    rays_free(&sb);
-    bs_locator_destroy(L);
+    bs_surface_destroy(fine);
     bs_surface_destroy(s);
-    return 0;
+    return ok ? 0 : 1;
 }
