@@ -85,11 +85,17 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
     build_node(b, child + 1, mid, hi);
 }
 
+/* Nodes of the tree over n leaves: the median cut makes it a function of n alone. */
+static size_t node_count(size_t n)
+{
+    return n <= LEAF_MAX ? 1 : 1 + node_count(n / 2) + node_count(n - n / 2);
+}
+
 bs_status bsi_loc_build_bvh(bs_locator *L, double *leaf_box)
 {
-    size_t dim = L->dim, n = L->nleaf;
-    L->nodes = malloc(2 * n * sizeof *L->nodes);
-    L->box = malloc(2 * n * 2 * dim * sizeof(double));
+    size_t dim = L->dim, n = L->nleaf, nodes = node_count(n);
+    L->nodes = malloc(nodes * sizeof *L->nodes);
+    L->box = malloc(nodes * 2 * dim * sizeof(double));
     double *cen = malloc(n * dim * sizeof(double));
     uint32_t *perm = malloc(n * sizeof *perm);
     bsi_loc_leaf *sorted = malloc(n * sizeof *sorted);
@@ -103,11 +109,6 @@ bs_status bsi_loc_build_bvh(bs_locator *L, double *leaf_box)
         builder b = {L, leaf_box, cen, perm, 1};
         build_node(&b, 0, 0, n);
         L->nnode = b.next;
-        /* give back the nodes a tree with up to LEAF_MAX leaves per node did not use */
-        bsi_loc_node *nodes = realloc(L->nodes, L->nnode * sizeof *L->nodes);
-        double *box = realloc(L->box, L->nnode * 2 * dim * sizeof(double));
-        L->nodes = nodes ? nodes : L->nodes;
-        L->box = box ? box : L->box;
         for (size_t k = 0; k < n; k++)
             sorted[k] = L->leaves[perm[k]];
         bsi_loc_leaf *old = L->leaves;
