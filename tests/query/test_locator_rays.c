@@ -173,11 +173,9 @@ static int closed_side(const bs_surface *s, size_t i, int side)
 
 /* Rays at points inside every patch, on every closed side (shared or a pole), and at corners
  * between two closed sides: on an open side rounding may put the ray just outside the surface. */
-static void tea(const char *name, int per_patch)
+static void tea_on(bs_surface *s, const char *name, int per_patch, int with_sides)
 {
-    bs_surface *s = NULL;
     bs_locator *L = NULL;
-    CHECK_STATUS(bs_surface_create_builtin(name, &s), BS_OK);
     CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
     CHECK(bs_locator_dim(L) == 3);
     double D = shape_diagonal(s);
@@ -185,7 +183,7 @@ static void tea(const char *name, int per_patch)
     for (size_t i = 0; i < bs_surface_count(s); i++) {
         int closed[4];
         for (int side = 0; side < 4; side++)
-            closed[side] = closed_side(s, i, side);
+            closed[side] = with_sides && closed_side(s, i, side);
         for (int k = 0; k < per_patch; k++)
             aim(s, L, i, bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), D, &inside);
         for (int k = 0; k < per_patch; k++) {
@@ -201,7 +199,7 @@ static void tea(const char *name, int per_patch)
     }
     const char *what[3] = {"inside", "on closed sides", "at closed corners"};
     const tally *ty[3] = {&inside, &sides, &corners};
-    for (int k = 0; k < 3; k++) {
+    for (int k = 0; k < (with_sides ? 3 : 1); k++) {
         printf("%s %s: %ld rays, %ld missed, %ld late, %ld hit earlier; worst off the ray %.2g tau, "
                "worst t past the aimed point %.2g tau\n",
                name, what[k], ty[k]->tried, ty[k]->missed, ty[k]->late, ty[k]->earlier, ty[k]->worst_off,
@@ -210,6 +208,41 @@ static void tea(const char *name, int per_patch)
     }
     bs_locator_destroy(L);
     bs_surface_destroy(s);
+}
+
+static void tea(const char *name, int per_patch)
+{
+    bs_surface *s = NULL;
+    CHECK_STATUS(bs_surface_create_builtin(name, &s), BS_OK);
+    tea_on(s, name, per_patch, 1);
+}
+
+/* The teapot as other nets of the same surface: every patch rational with all weights 2 (the
+ * rational path; shared sides stay shared), and elevated to degree (5, 7) (degrees other than
+ * 3; sides elevated along u in one patch and along v in the other are no longer the same bits,
+ * so only points inside are aimed at). */
+static void other_nets(void)
+{
+    bs_surface *t = NULL, *rat = NULL, *high = NULL;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &t), BS_OK);
+    CHECK_STATUS(bs_surface_create(&rat), BS_OK);
+    CHECK_STATUS(bs_surface_create(&high), BS_OK);
+    for (size_t i = 0; i < bs_surface_count(t); i++) {
+        double ctrl[48], w[16];
+        bs_patch *p = NULL;
+        bs_patch_get_ctrl(bs_surface_get(t, i), ctrl, 48, NULL, 0);
+        for (int k = 0; k < 16; k++)
+            w[k] = 2;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl, w, &p), BS_OK);
+        CHECK_STATUS(bs_surface_add(rat, p, NULL), BS_OK);
+        bs_patch_destroy(p);
+        CHECK_STATUS(bs_patch_elevate(bs_surface_get(t, i), 2, 4, &p), BS_OK);
+        CHECK_STATUS(bs_surface_add(high, p, NULL), BS_OK);
+        bs_patch_destroy(p);
+    }
+    bs_surface_destroy(t);
+    tea_on(rat, "teapot, rational", 20, 1);
+    tea_on(high, "teapot, degree (5, 7)", 20, 0);
 }
 
 /* Rays leaving the surface (t from 1e-6) at S(u,v) of patch i aimed at other surface points
@@ -399,6 +432,7 @@ int main(void)
     tea("teapot", 40);
     tea("teacup", 40);
     tea("teaspoon", 40);
+    other_nets();
     from_surface("teapot", 3000);
     from_surface("teaspoon", 1000);
     pole();
