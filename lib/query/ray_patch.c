@@ -19,6 +19,7 @@
 #include <math.h>
 
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
+#define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
 #define SLOTS (3 * MAX_DEPTH + 4)
 #define NC 4 /* X1, X2, T, W */
 
@@ -193,8 +194,10 @@ static int one_to_one(const double *net, size_t m, size_t n)
     return pos == 4 || neg == 4;
 }
 
-/* Box of the projected net: 1 if the origin lies within tol of it (X1, X2), and its t range. */
-static int near_origin(const double *net, size_t np, double tol, double *tlo, double *thi)
+/* Box of the projected net: 1 if the origin lies within tol of it (X1, X2), and its t range;
+ * *within receives the largest |X1|, |X2| over the box. */
+static int near_origin(const double *net, size_t np, double tol, double *tlo, double *thi,
+                       double *within)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t k = 0; k < np; k++) {
@@ -207,6 +210,7 @@ static int near_origin(const double *net, size_t np, double tol, double *tlo, do
     }
     *tlo = lo[2] - tol;
     *thi = hi[2] + tol;
+    *within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
     return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
 }
 
@@ -288,11 +292,11 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
     stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, free_slot[--nfree]};
     for (size_t q = 0; q < len; q++)
         slot[(size_t)stack[0].slot * len + q] = root[q];
-    while (top > 0) {
+    for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
-        double *net = slot + (size_t)e.slot * len, tlo, thi;
+        double *net = slot + (size_t)e.slot * len, tlo, thi, within;
         free_slot[nfree++] = e.slot;
-        if (e.tlo > fmin(hit->t, ray->tmax) || !near_origin(net, np, tol, &tlo, &thi) ||
+        if (e.tlo > fmin(hit->t, ray->tmax) || !near_origin(net, np, tol, &tlo, &thi, &within) ||
             thi < ray->tmin || tlo > fmin(hit->t, ray->tmax))
             continue;
         double s, r, t, g[2] = {0.0, 0.0};
@@ -303,8 +307,10 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
             hit->r = r;
             hit->leaf = k;
         }
+        /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
+         * distance of the ray (seen from far away), where any point of it is as good a hit */
         if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, g, tol, half[1])) ||
-            e.depth == MAX_DEPTH)
+            within <= accept || e.depth == MAX_DEPTH)
             continue;
         /* the four halves, nearest t first */
         bsi_net_halve(net, m, n, NC, BS_DIR_U, half[0], half[1]);
