@@ -59,9 +59,12 @@ static int slab(const double *lo, const double *hi, const bsi_ray *ray, double t
             a = b;
             b = x;
         }
-        /* widened by their rounding (a few ulp), so that no box is lost to it */
-        t0 = fmax(t0, a - 4 * DBL_EPSILON * fabs(a));
-        t1 = fmin(t1, b + 4 * DBL_EPSILON * fabs(b));
+        /* widened by their rounding (a few ulp), so that no box is lost to it; a NaN (a
+         * subnormal direction meeting a box face) narrows nothing */
+        a -= 4 * DBL_EPSILON * fabs(a);
+        b += 4 * DBL_EPSILON * fabs(b);
+        t0 = a > t0 ? a : t0;
+        t1 = b < t1 ? b : t1;
     }
     *tnear = t0;
     return t0 <= t1;

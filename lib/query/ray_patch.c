@@ -253,6 +253,23 @@ static int separated(const double *net, size_t np, const double g[2], double tol
     return 0;
 }
 
+/* Of the four corners of the projected net (points of the surface), the one nearest to the
+ * origin, as (X1, X2) / W into g. */
+static void nearest_corner(const double *net, size_t m, size_t n, double g[2])
+{
+    const size_t corner[4] = {0, n, m * (n + 1), m * (n + 1) + n};
+    double best = INFINITY;
+    for (int k = 0; k < 4; k++) {
+        const double *a = net + corner[k] * NC;
+        double x = a[0] / a[3], y = a[1] / a[3], d = x * x + y * y;
+        if (d < best) {
+            best = d;
+            g[0] = x;
+            g[1] = y;
+        }
+    }
+}
+
 /* The leaf's net in the ray's frame; returns the largest |P - o| coordinate. */
 static double project(const double *net, size_t np, const bsi_ray *ray, double *out)
 {
@@ -299,7 +316,12 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         if (e.tlo > fmin(hit->t, ray->tmax) || !near_origin(net, np, tol, &tlo, &thi, &within) ||
             thi < ray->tmin || tlo > fmin(hit->t, ray->tmax))
             continue;
+        /* most pieces the box test lets through hold no zero: shown first, without Newton,
+         * from the corner of the net nearest to the ray */
         double s, r, t, g[2] = {0.0, 0.0};
+        nearest_corner(net, m, n, g);
+        if (separated(net, np, g, tol, half[1]))
+            continue;
         int found = newton(root, m, n, &e, floor_dist, accept, &s, &r, &t, g);
         if (found && wanted(ray, t, hit->t)) {
             hit->t = t;
