@@ -7,11 +7,13 @@
  * called where the box is hit (with the t range cut at the best hit so far). The ratio is the
  * figure; seconds vary from run to run on a loaded machine.
  * The same again on the teapot cut into 8 x 8 sub-patches per patch (2,048 patches), where the
- * hierarchy has more to do. Times are the process's CPU time.
+ * hierarchy has more to do. Times are CPU time.
  * Usage: bench_rays [N] [stride: the ratio on every stride-th ray, default 16; 0: the teapot
  *        alone, no baseline, no cut teapot]
  */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
+#include "rays_camera.h"
+
 #include <bezsurf.h>
 
 #include <math.h>
@@ -22,13 +24,6 @@
 #ifdef __GLIBC__
 #include <malloc.h> /* mallinfo2: the locator's memory */
 #endif
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts); /* less noisy than wall time on a shared machine */
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 typedef struct rays {
     size_t n;
@@ -147,40 +142,14 @@ static double uniform(void)
     return (double)(rng >> 11) * 0x1p-53;
 }
 
-/* The N x N primary rays: a pinhole camera at eye looking at the teapot's middle, 40 degrees
- * across. */
+/* The N x N primary rays of the camera (rays_camera.h). */
 static void camera(rays *pr, size_t N)
 {
-    const double eye[3] = {6.0, -8.0, 5.5}, at[3] = {0.2, 0.0, 1.4}, up[3] = {0, 0, 1};
-    double f[3], rgt[3], u[3], fl = 0, rl = 0, half = tan(20.0 * 3.14159265358979 / 180.0);
-    for (int c = 0; c < 3; c++) {
-        f[c] = at[c] - eye[c];
-        fl += f[c] * f[c];
+    camera_rays(N, pr->o, pr->d);
+    for (size_t k = 0; k < N * N; k++) {
+        pr->range[0][k] = 0.0; /* unused: primary rays take the default range */
+        pr->range[1][k] = 1e300;
     }
-    for (int c = 0; c < 3; c++)
-        f[c] /= sqrt(fl);
-    rgt[0] = f[1] * up[2] - f[2] * up[1];
-    rgt[1] = f[2] * up[0] - f[0] * up[2];
-    rgt[2] = f[0] * up[1] - f[1] * up[0];
-    for (int c = 0; c < 3; c++)
-        rl += rgt[c] * rgt[c];
-    for (int c = 0; c < 3; c++)
-        rgt[c] /= sqrt(rl);
-    u[0] = rgt[1] * f[2] - rgt[2] * f[1];
-    u[1] = rgt[2] * f[0] - rgt[0] * f[2];
-    u[2] = rgt[0] * f[1] - rgt[1] * f[0];
-    for (size_t y = 0; y < N; y++)
-        for (size_t x = 0; x < N; x++) {
-            size_t k = y * N + x;
-            double px = (2.0 * ((double)x + 0.5) / (double)N - 1.0) * half;
-            double py = (1.0 - 2.0 * ((double)y + 0.5) / (double)N) * half;
-            for (int c = 0; c < 3; c++) {
-                pr->o[c][k] = eye[c];
-                pr->d[c][k] = f[c] + px * rgt[c] + py * u[c];
-            }
-            pr->range[0][k] = 0.0; /* unused: primary rays take the default range */
-            pr->range[1][k] = 1e300;
-        }
 }
 
 /* Secondary rays: from the primary hits (each in turn, then random ones) in uniformly random
