@@ -77,7 +77,7 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
 
 /* Build the hierarchy over L->nleaf leaves whose boxes are in leaf_box (2*dim doubles each, as
  * node boxes): fills L->nodes, L->nnode, L->box and reorders L->leaves. BS_ERR_NO_MEMORY. */
-bs_status bsi_loc_build_bvh(bs_locator *L, double *leaf_box);
+bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box);
 
 /* A ray in the frame it is tested in: origin o, unit direction d, and e1, e2 completing an
  * orthonormal frame; t in units of |d| = 1, from tmin (exclusive when open) to tmax. */

@@ -91,7 +91,7 @@ static size_t node_count(size_t n)
     return n <= LEAF_MAX ? 1 : 1 + node_count(n / 2) + node_count(n - n / 2);
 }
 
-bs_status bsi_loc_build_bvh(bs_locator *L, double *leaf_box)
+bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
 {
     size_t dim = L->dim, n = L->nleaf, nodes = node_count(n);
     L->nodes = malloc(nodes * sizeof *L->nodes);
