@@ -1,4 +1,4 @@
-/* What the ray benchmarks share: CPU time, and the camera's primary rays at the teapot. */
+/* What the locator benchmarks share: CPU time, and the camera's primary rays at the teapot. */
 #ifndef BS_BENCH_RAYS_CAMERA_H
 #define BS_BENCH_RAYS_CAMERA_H
 
@@ -7,7 +7,7 @@
 #include <time.h>
 
 /* Seconds of the calling thread's CPU time: less noisy than wall time on a shared machine. */
-static double now(void)
+static inline double now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
@@ -16,7 +16,7 @@ static double now(void)
 
 /* N x N primary rays from a pinhole camera at eye looking at the teapot's middle, 40 degrees
  * across: ray y*N + x from o, direction d (not unit). */
-static void camera_rays(size_t N, double *o[3], double *d[3])
+static inline void camera_rays(size_t N, double *o[3], double *d[3])
 {
     const double eye[3] = {6.0, -8.0, 5.5}, at[3] = {0.2, 0.0, 1.4}, up[3] = {0, 0, 1};
     double f[3], rgt[3], u[3], fl = 0, rl = 0, half = tan(20.0 * 3.14159265358979 / 180.0);
