@@ -323,6 +323,7 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         if (separated(net, np, g, tol, half[1]))
             continue;
         int found = newton(root, m, n, &e, floor_dist, accept, &s, &r, &t, g);
+        found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
         if (found && wanted(ray, t, hit->t)) {
             hit->t = t;
             hit->s = s;
@@ -330,7 +331,7 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
             hit->leaf = k;
         }
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
-         * distance of the ray (seen from far away), where any point of it is as good a hit */
+         * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
         if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, g, tol, half[1])) ||
             within <= accept || e.depth == MAX_DEPTH)
             continue;
