@@ -224,8 +224,9 @@ static double hull_distance2(const bs_patch *p, const double *q)
     return d2;
 }
 
+/* The search for one finite q; pos receives S(uv) as bs_patch_eval gives it when 1 is returned. */
 static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d2, double uv[2],
-                        size_t *boxes)
+                        double *pos, size_t *boxes)
 {
     bsi_cl_setup(w, q);
     double s = w->s1 * w->s2;
@@ -235,7 +236,7 @@ static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best
         *boxes = visited;
     if (!(st.f < INFINITY))
         return 0; /* every box was farther than the caller's best */
-    double pos[BS_MAX_DIM], d2 = distance2(w->p, q, st.uv, pos);
+    double d2 = distance2(w->p, q, st.uv, pos);
     if (!(d2 < *best_d2) && *best_d2 < INFINITY)
         return 0;
     *best_d2 = d2;
@@ -254,7 +255,8 @@ int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, 
     bsi_cl *w = bsi_cl_create(p);
     if (w == NULL)
         return -1;
-    int r = closest_with(w, q, d_scale, best_d2, uv, boxes);
+    double pos[BS_MAX_DIM];
+    int r = closest_with(w, q, d_scale, best_d2, uv, pos, boxes);
     bsi_cl_free(w);
     return r;
 }
@@ -311,9 +313,8 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         }
         if (finite) {
             double best = INFINITY;
-            (void)closest_with(w, x, 0.0, &best, at, NULL); /* always 1 with no best to beat */
-            (void)distance2(p, x, at, y);
-            d = distance(y, x, dim);
+            if (closest_with(w, x, 0.0, &best, at, y, NULL) == 1) /* always, with no best to beat */
+                d = distance(y, x, dim);
         }
         if (uv) {
             *bsi_at(&uv[0], k) = at[0];
