@@ -277,7 +277,8 @@ static double check_query(const bs_patch *p, const double *ctrl, const double *w
     size_t deg = m > n ? m : n, grid = 4 * deg + 17 > G ? G : 4 * deg + 17;
     ld d = reference(&r, grid);
     double D = net_diag(ctrl, (m + 1) * (n + 1), dim), tau = 1e-9 * (D + (double)d);
-    double excess = (double)((ld)a.dist - d) / tau;
+    double diff = (double)((ld)a.dist - d);
+    double excess = tau > 0 ? diff / tau : diff > 0 ? INFINITY : 0.0; /* tau = 0: a point patch */
     worst_excess = fmax(worst_excess, excess);
     queries++;
     CHECKF(excess <= 1.0, "%s (deg %zu,%zu dim %zu%s): distance %.17g, reference %.17Lg: %.3g tau",
@@ -474,6 +475,38 @@ static void cone(void)
     bs_patch_destroy(p);
 }
 
+/* Degenerate nets: degree 0 in a direction or both, every point the same, a collapsed row in
+ * the plane (a fold), weights from 1e-3 to 1e3, q on a control point. */
+static void degenerate(void)
+{
+    static const size_t deg[][3] = {{0, 0, 3}, {0, 3, 3}, {4, 0, 2}, {2, 3, 3}, {3, 3, 2}, {3, 2, 3}};
+    unsigned long long rng = 77;
+    double ctrl[16 * 3], w[16], q[3];
+    for (size_t t = 0; t < sizeof deg / sizeof deg[0]; t++) {
+        size_t m = deg[t][0], n = deg[t][1], dim = deg[t][2], pts = (m + 1) * (n + 1);
+        random_net(&rng, m, n, dim, ctrl, w);
+        if (t == 3) /* every point the same */
+            for (size_t k = 1; k < pts; k++)
+                memcpy(ctrl + k * dim, ctrl, dim * sizeof(double));
+        if (t == 4) /* row i = 0 collapsed */
+            for (size_t j = 1; j <= n; j++)
+                memcpy(ctrl + j * dim, ctrl, dim * sizeof(double));
+        for (size_t k = 0; k < pts; k++)
+            w[k] = t == 5 ? pow(10.0, bs_test_rand(&rng, -3, 3)) : w[k];
+        bs_patch *p;
+        CHECK_STATUS(bs_patch_create(m, n, dim, ctrl, w, &p), BS_OK);
+        refp r = {{m, n, dim, ctrl, w}, q};
+        for (int k = 0; k < 6; k++) {
+            if (k == 0)
+                memcpy(q, ctrl + (pts - 1) * dim, dim * sizeof(double));
+            else
+                point_near(&rng, &r, bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), 0.5 * k, q);
+            check_query(p, ctrl, w, q, "degenerate");
+        }
+        bs_patch_destroy(p);
+    }
+}
+
 /* Argument rules, NaN queries, strided batches against one point at a time. */
 static void arguments(void)
 {
@@ -547,6 +580,7 @@ int main(void)
     sphere_centre();
     scales();
     cone();
+    degenerate();
     printf("closest points: %d queries, largest excess over the reference %.3g tau (contract 1)\n",
            queries, worst_excess);
     arguments();
