@@ -12,8 +12,9 @@
  * child with the nearer bounding box first. In a surviving box the point of its smallest
  * coefficient is a candidate: where f there is below the best, projected Newton over the whole
  * domain (closest_newton.c) polishes it, so the best is a local minimum (interior, on an edge or
- * at a corner) as soon as there is one below it. Every bound allows for the rounding of the
- * halving and of the coefficients.
+ * at a corner) as soon as there is one below it, and a square around it is certified by
+ * convexity (certify below), which prunes the boxes next to the minimum at any size. Every bound
+ * allows for the rounding of the halving, of the coefficients and of the evaluation.
  *
  * The work is capped (BOX_CAP boxes a query); docs/queries.md says what the cap means.
  */
@@ -71,31 +72,43 @@ static int pruned(const search *s, double lb) { return lb >= current(s) - tolera
 
 /* Certify a square around the best point x* (a local minimum from Newton) in which no point
  * is closer: the second-order closure. With c = f(x*) and G = N - c W (G >= 0 exactly where
- * f >= c; G(x*) = 0), if G is convex over the square then G(x) >= grad G(x*) . (x - x*) there,
- * and grad G(x*) = W(x*) grad f(x*) is Newton's residual (zero at an interior minimum, pointing
- * out of the domain at a minimum on an edge or a corner): f >= c - rho max W / min W, rho the
- * largest decrease of the linear term over the square. The boxes inside the square are then
- * pruned whatever their size, instead of being split until their own bounds reach T. */
+ * f >= c; G(x*) = 0), if G is convex over the square, with Hessian at least lambda, then
+ * G(x) >= g_G . (x - x*) + lambda/2 |x - x*|^2 there, g_G = grad G(x*) = W(x*) grad f(x*) being
+ * Newton's residual (zero at an interior minimum, pointing out of the domain at a minimum on an
+ * edge or a corner). So f >= c - min(rho max W / min W, max W^2 |grad f|^2 / (2 lambda min W))
+ * over the square, rho the largest decrease of the linear term on it, and every box inside the
+ * square is pruned whatever its size, instead of being split until its own bounds reach T. */
 static void certify(bsi_cl *w, search *s)
 {
     double g[2], c = bsi_cl_grad(w, s->uv, g);
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
     double rho_w = 1.0 / w->wmin;
-    double noise = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w *
-                   sqrt((double)w->dim) + net_error(w, 16);
+    double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w * sqrt((double)w->dim);
+    double noise = dr + net_error(w, 16);
+    /* the gradient's own rounding: 2 |r| |S_u| with |r| off by dr, |S_u| <= 2 m rho_w (scaled) */
+    double dg[2] = {4.0 * dr * (double)w->m * rho_w, 4.0 * dr * (double)w->n * rho_w};
+    double g2 = 0.0;
+    for (int i = 0; i < 2; i++)
+        g2 += (fabs(g[i]) + dg[i]) * (fabs(g[i]) + dg[i]);
     for (double r = 0.125; r >= 0x1p-12; r *= 0.25) {
         double x[4] = {fmax(0.0, s->uv[0] - r), fmin(1.0, s->uv[0] + r), fmax(0.0, s->uv[1] - r),
                        fmin(1.0, s->uv[1] + r)};
         bsi_cl_bound b;
-        double ratio;
+        double wlo, whi;
         bsi_cl_region(w, x);
         bsi_cl_fbound(w, w->region, &b);
-        if (!bsi_cl_convex(w, &b, c, &ratio))
+        double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi);
+        if (!(lambda > 0.0))
             continue;
-        double rho = 0.0;
-        for (int i = 0; i < 2; i++)
-            rho -= fmin(0.0, fmin(g[i] * (x[2 * i] - s->uv[i]), g[i] * (x[2 * i + 1] - s->uv[i])));
-        double lbf = fmax(c - rho * ratio, b.lbf);
+        double rho = 0.0, width = 0.0; /* width: the longer side, over a direction that counts */
+        for (int i = 0; i < 2; i++) {
+            rho += dg[i] * (x[2 * i + 1] - x[2 * i]) -
+                   fmin(0.0, fmin(g[i] * (x[2 * i] - s->uv[i]), g[i] * (x[2 * i + 1] - s->uv[i])));
+            if ((i == 0 ? w->m : w->n) > 0)
+                width = fmax(width, x[2 * i + 1] - x[2 * i]);
+        }
+        double strong = whi * whi * g2 * width * width / (2.0 * lambda * wlo);
+        double lbf = fmax(c - fmin(rho * whi / wlo, strong), b.lbf);
         region *rg = &s->reg[s->nreg++ % REGIONS];
         for (int i = 0; i < 4; i++)
             rg->x[i] = x[i];
@@ -135,7 +148,7 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
 
 /* Whether box b survives: its bounds against the best (its second-order bound computed, and
  * counted in *visited, only when the first-order one does not prune it); its candidate tried. */
-static int survives(bsi_cl *w, search *s, const box *b, size_t *visited)
+static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
 {
     double err = net_error(w, b->depth);
     if (pruned(s, sqrt(b->aabb) - err) || in_region(s, b))
@@ -147,6 +160,8 @@ static int survives(bsi_cl *w, search *s, const box *b, size_t *visited)
     if (pruned(s, lb))
         return 0;
     try_candidate(w, s, b, &fb);
+    if (fb.dir >= 0)
+        b->dir = fb.dir; /* the direction in which the second-order bound is loosest */
     return !pruned(s, lb);
 }
 

@@ -7,6 +7,7 @@
  * of tau = 1e-9 (D + d) (the contract: at most 1). */
 #include "harness.h"
 #include "reference.h"
+#include "shapes.h"
 
 #include <bezsurf.h>
 #include <float.h>
@@ -382,20 +383,10 @@ static void teapot(void)
     bs_surface_destroy(s);
 }
 
-/* A rational sphere octant of radius R (u along the meridian from the pole at u = 0). */
 #define R 2.5
 static bs_patch *sphere_octant(double *ctrl, double *w)
 {
-    const double h = sqrt(0.5);
-    const double a[3][2] = {{1, 0}, {1, 1}, {0, 1}}, wa[3] = {1, h, 1};
-    const double mer[3][2] = {{0, R}, {R, R}, {R, 0}};
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            ctrl[(i * 3 + j) * 3] = mer[i][0] * a[j][0];
-            ctrl[(i * 3 + j) * 3 + 1] = mer[i][0] * a[j][1];
-            ctrl[(i * 3 + j) * 3 + 2] = mer[i][1];
-            w[i * 3 + j] = wa[i] * wa[j];
-        }
+    shape_sphere_octant(R, ctrl, w);
     bs_patch *p = NULL;
     CHECK_STATUS(bs_patch_create(2, 2, 3, ctrl, w, &p), BS_OK);
     return p;
@@ -472,6 +463,28 @@ static void cone(void)
     const double q[5][3] = {{0, 0, -1}, {0.1, 0.1, -0.05}, {-0.2, 0.3, 0.1}, {0, 0, 3}, {0.3, 0.4, 0.5}};
     for (int k = 0; k < 5; k++)
         check_query(p, ctrl, w, q[k], "cone");
+    bs_patch_destroy(p);
+}
+
+/* A cylinder seen from its axis: the minima form a line of the domain (every point of a circle
+ * is closest), at the patch's mid-height or not, and for the degree-elevated patch. */
+static void cylinder_axis(void)
+{
+    double ctrl[18], w[6];
+    shape_cylinder_quarter(R, 4.0, ctrl, w);
+    bs_patch *p, *e;
+    CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, w, &p), BS_OK);
+    CHECK_STATUS(bs_patch_elevate(p, 4, 3, &e), BS_OK);
+    const double q[4][3] = {{0, 0, 2}, {0, 0, 2.1}, {1e-9, 0, 1.3}, {0, 0, -0.5}};
+    for (int k = 0; k < 4; k++) {
+        check_query(p, ctrl, w, q[k], "cylinder axis");
+        answer an;
+        CHECK_STATUS(closest(e, q[k], &an), BS_OK);
+        double want = k == 3 ? hypot(R, 0.5) : R - q[k][0]; /* below the rim, or radially out */
+        CHECKF(fabs(an.dist - want) <= 1e-9 * (2 * R + want), "elevated cylinder: %.17g, want %.17g",
+               an.dist, want);
+    }
+    bs_patch_destroy(e);
     bs_patch_destroy(p);
 }
 
@@ -580,6 +593,7 @@ int main(void)
     sphere_centre();
     scales();
     cone();
+    cylinder_axis();
     degenerate();
     printf("closest points: %d queries, largest excess over the reference %.3g tau (contract 1)\n",
            queries, worst_excess);
