@@ -88,9 +88,10 @@ static void certify(bsi_cl *w, search *s)
     /* the gradient's own rounding: 2 |r| |S_u| with |r| off by dr, |S_u| <= 2 m rho_w (scaled) */
     double dg[2] = {4.0 * dr * (double)w->m * rho_w, 4.0 * dr * (double)w->n * rho_w};
     double g2 = 0.0;
-    for (int i = 0; i < 2; i++)
+    for (size_t i = 0; i < 2; i++)
         g2 += (fabs(g[i]) + dg[i]) * (fabs(g[i]) + dg[i]);
-    for (double r = 0.125; r >= 0x1p-12; r *= 0.25) {
+    for (int t = 0; t < 5; t++) { /* half-widths 1/8, 1/32, ..., 1/2048 */
+        double r = ldexp(0.125, -2 * t);
         double x[4] = {fmax(0.0, s->uv[0] - r), fmin(1.0, s->uv[0] + r), fmax(0.0, s->uv[1] - r),
                        fmin(1.0, s->uv[1] + r)};
         bsi_cl_bound b;
@@ -101,7 +102,7 @@ static void certify(bsi_cl *w, search *s)
         if (!(lambda > 0.0))
             continue;
         double rho = 0.0, width = 0.0; /* width: the longer side, over a direction that counts */
-        for (int i = 0; i < 2; i++) {
+        for (size_t i = 0; i < 2; i++) {
             rho += dg[i] * (x[2 * i + 1] - x[2 * i]) -
                    fmin(0.0, fmin(g[i] * (x[2 * i] - s->uv[i]), g[i] * (x[2 * i + 1] - s->uv[i])));
             if ((i == 0 ? w->m : w->n) > 0)
@@ -319,7 +320,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
     if (w == NULL)
         return BS_ERR_NO_MEMORY;
     for (size_t k = 0; k < n; k++) {
-        double x[BS_MAX_DIM], at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
+        double x[BS_MAX_DIM] = {0.0}, at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
         int finite = 1;
         for (size_t c = 0; c < dim; c++) {
             x[c] = bsi_cget(&q[c], k);

@@ -300,8 +300,9 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
     b->err = err;
     b->rel = rel;
     b->dir = slack_direction(w, m, n);
-    b->su = m > 0 ? (double)(arg / n2) / (double)(2 * m) : 0.5;
-    b->sv = n > 0 ? (double)(arg % n2) / (double)(2 * n) : 0.5;
+    size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
+    b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
+    b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
 }
 
 /* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
