@@ -12,8 +12,9 @@
  * child with the nearer bounding box first. In a surviving box the point of its smallest
  * coefficient is a candidate: where f there is below the best, projected Newton over the whole
  * domain (closest_newton.c) polishes it, so the best is a local minimum (interior, on an edge or
- * at a corner) as soon as there is one below it. Every bound allows for the rounding of the
- * halving and of the coefficients.
+ * at a corner) as soon as there is one below it, and a square around it is certified by
+ * convexity (certify below), which prunes the boxes next to the minimum at any size. Every bound
+ * allows for the rounding of the halving, of the coefficients and of the evaluation.
  *
  * The work is capped (BOX_CAP boxes a query); docs/queries.md says what the cap means.
  */
@@ -71,31 +72,44 @@ static int pruned(const search *s, double lb) { return lb >= current(s) - tolera
 
 /* Certify a square around the best point x* (a local minimum from Newton) in which no point
  * is closer: the second-order closure. With c = f(x*) and G = N - c W (G >= 0 exactly where
- * f >= c; G(x*) = 0), if G is convex over the square then G(x) >= grad G(x*) . (x - x*) there,
- * and grad G(x*) = W(x*) grad f(x*) is Newton's residual (zero at an interior minimum, pointing
- * out of the domain at a minimum on an edge or a corner): f >= c - rho max W / min W, rho the
- * largest decrease of the linear term over the square. The boxes inside the square are then
- * pruned whatever their size, instead of being split until their own bounds reach T. */
+ * f >= c; G(x*) = 0), if G is convex over the square, with Hessian at least lambda, then
+ * G(x) >= g_G . (x - x*) + lambda/2 |x - x*|^2 there, g_G = grad G(x*) = W(x*) grad f(x*) being
+ * Newton's residual (zero at an interior minimum, pointing out of the domain at a minimum on an
+ * edge or a corner). So f >= c - min(rho max W / min W, max W^2 |grad f|^2 / (2 lambda min W))
+ * over the square, rho the largest decrease of the linear term on it, and every box inside the
+ * square is pruned whatever its size, instead of being split until its own bounds reach T. */
 static void certify(bsi_cl *w, search *s)
 {
     double g[2], c = bsi_cl_grad(w, s->uv, g);
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
     double rho_w = 1.0 / w->wmin;
-    double noise = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w *
-                   sqrt((double)w->dim) + net_error(w, 16);
-    for (double r = 0.125; r >= 0x1p-12; r *= 0.25) {
+    double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w * sqrt((double)w->dim);
+    double noise = dr + net_error(w, 16);
+    /* the gradient's own rounding: 2 |r| |S_u| with |r| off by dr, |S_u| <= 2 m rho_w (scaled) */
+    double dg[2] = {4.0 * dr * (double)w->m * rho_w, 4.0 * dr * (double)w->n * rho_w};
+    double g2 = 0.0;
+    for (size_t i = 0; i < 2; i++)
+        g2 += (fabs(g[i]) + dg[i]) * (fabs(g[i]) + dg[i]);
+    for (int t = 0; t < 5; t++) { /* half-widths 1/8, 1/32, ..., 1/2048 */
+        double r = ldexp(0.125, -2 * t);
         double x[4] = {fmax(0.0, s->uv[0] - r), fmin(1.0, s->uv[0] + r), fmax(0.0, s->uv[1] - r),
                        fmin(1.0, s->uv[1] + r)};
         bsi_cl_bound b;
-        double ratio;
+        double wlo, whi;
         bsi_cl_region(w, x);
         bsi_cl_fbound(w, w->region, &b);
-        if (!bsi_cl_convex(w, &b, c, &ratio))
+        double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi);
+        if (!(lambda > 0.0))
             continue;
-        double rho = 0.0;
-        for (int i = 0; i < 2; i++)
-            rho -= fmin(0.0, fmin(g[i] * (x[2 * i] - s->uv[i]), g[i] * (x[2 * i + 1] - s->uv[i])));
-        double lbf = fmax(c - rho * ratio, b.lbf);
+        double rho = 0.0, width = 0.0; /* width: the longer side, over a direction that counts */
+        for (size_t i = 0; i < 2; i++) {
+            rho += dg[i] * (x[2 * i + 1] - x[2 * i]) -
+                   fmin(0.0, fmin(g[i] * (x[2 * i] - s->uv[i]), g[i] * (x[2 * i + 1] - s->uv[i])));
+            if ((i == 0 ? w->m : w->n) > 0)
+                width = fmax(width, x[2 * i + 1] - x[2 * i]);
+        }
+        double strong = whi * whi * g2 * width * width / (2.0 * lambda * wlo);
+        double lbf = fmax(c - fmin(rho * whi / wlo, strong), b.lbf);
         region *rg = &s->reg[s->nreg++ % REGIONS];
         for (int i = 0; i < 4; i++)
             rg->x[i] = x[i];
@@ -135,7 +149,7 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
 
 /* Whether box b survives: its bounds against the best (its second-order bound computed, and
  * counted in *visited, only when the first-order one does not prune it); its candidate tried. */
-static int survives(bsi_cl *w, search *s, const box *b, size_t *visited)
+static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
 {
     double err = net_error(w, b->depth);
     if (pruned(s, sqrt(b->aabb) - err) || in_region(s, b))
@@ -147,6 +161,8 @@ static int survives(bsi_cl *w, search *s, const box *b, size_t *visited)
     if (pruned(s, lb))
         return 0;
     try_candidate(w, s, b, &fb);
+    if (fb.dir >= 0)
+        b->dir = fb.dir; /* the direction in which the second-order bound is loosest */
     return !pruned(s, lb);
 }
 
@@ -224,8 +240,9 @@ static double hull_distance2(const bs_patch *p, const double *q)
     return d2;
 }
 
+/* The search for one finite q; pos receives S(uv) as bs_patch_eval gives it when 1 is returned. */
 static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d2, double uv[2],
-                        size_t *boxes)
+                        double *pos, size_t *boxes)
 {
     bsi_cl_setup(w, q);
     double s = w->s1 * w->s2;
@@ -235,7 +252,7 @@ static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best
         *boxes = visited;
     if (!(st.f < INFINITY))
         return 0; /* every box was farther than the caller's best */
-    double pos[BS_MAX_DIM], d2 = distance2(w->p, q, st.uv, pos);
+    double d2 = distance2(w->p, q, st.uv, pos);
     if (!(d2 < *best_d2) && *best_d2 < INFINITY)
         return 0;
     *best_d2 = d2;
@@ -254,7 +271,8 @@ int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, 
     bsi_cl *w = bsi_cl_create(p);
     if (w == NULL)
         return -1;
-    int r = closest_with(w, q, d_scale, best_d2, uv, boxes);
+    double pos[BS_MAX_DIM];
+    int r = closest_with(w, q, d_scale, best_d2, uv, pos, boxes);
     bsi_cl_free(w);
     return r;
 }
@@ -302,7 +320,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
     if (w == NULL)
         return BS_ERR_NO_MEMORY;
     for (size_t k = 0; k < n; k++) {
-        double x[BS_MAX_DIM], at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
+        double x[BS_MAX_DIM] = {0.0}, at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
         int finite = 1;
         for (size_t c = 0; c < dim; c++) {
             x[c] = bsi_cget(&q[c], k);
@@ -311,9 +329,8 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         }
         if (finite) {
             double best = INFINITY;
-            (void)closest_with(w, x, 0.0, &best, at, NULL); /* always 1 with no best to beat */
-            (void)distance2(p, x, at, y);
-            d = distance(y, x, dim);
+            if (closest_with(w, x, 0.0, &best, at, y, NULL) == 1) /* always, with no best to beat */
+                d = distance(y, x, dim);
         }
         if (uv) {
             *bsi_at(&uv[0], k) = at[0];

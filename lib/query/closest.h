@@ -28,7 +28,9 @@ typedef struct bsi_cl {
     double *region;    /* the net of a region around a minimum */
     double *cart;      /* (m+1)(n+1) dim: the Cartesian points of one net */
     double *scaled;    /* np: one net times the binomials C(m,i) C(n,j) */
-    double *nco, *wco; /* (2m+1)(2n+1): Bernstein coefficients of N = |w (S - q)|^2 and W = w^2 */
+    double *nco, *wco; /* (2m+1)(2n+1): Bernstein coefficients of N = |w (S - q)|^2 and W = w^2,
+                        * times the binomials C(2m,k) C(2n,l) */
+    double *fco;       /* (2m+1)(2n+1): the ratios N_kl / W_kl, which f is a convex combination of */
     double *binom;     /* Pascal rows m, n, 2m, 2n */
     double *line;      /* max(m,n) + 1: one line of a net being split */
     double *dscratch;  /* bsi_deriv_table_scratch(p, 2, 2) */
@@ -46,7 +48,8 @@ typedef struct bsi_cl_bound {
     double lbf;    /* lower bound on f over the box from the Bernstein coefficients of f, the
                     * rounding of their computation allowed for */
     double su, sv; /* where the smallest coefficient sits, in the box's own parameters */
-    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V), -1 for a constant patch */
+    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V), -1 for a constant patch;
+                    * bsi_cl_fbound sets it from the coefficients of f, -1 when they do not tell */
     double err;    /* rounding of the coefficients of N (w->nco), relative of W (w->wco) */
     double rel;
 } bsi_cl_bound;
@@ -64,10 +67,11 @@ void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b);
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b);
 /* The sub-net of the box [x[0], x[1]] x [x[2], x[3]] of the root net into w->region. */
 void bsi_cl_region(bsi_cl *w, const double x[4]);
-/* Whether G = N - c W, from the coefficients the last bsi_cl_fbound left (b its result), is
- * convex over that box: its second-derivative coefficients, their rounding allowed for, make
- * the Hessian positive definite everywhere on the box. *wratio receives max W / min W there. */
-int bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wratio);
+/* How convex G = N - c W is over the box of the last bsi_cl_fbound (b its result): a lower bound
+ * on the smallest eigenvalue of G's Hessian in the box's own parameters (s, t in [0,1]) from its
+ * second-difference coefficients, their rounding allowed for; 0 or less when G is not shown
+ * convex there, INFINITY for a constant patch. *wlo and *whi receive bounds on W over the box. */
+double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi);
 
 /* f = |S - q|^2 at (u,v) in scaled units (lib/query/closest_newton.c). */
 double bsi_cl_f(bsi_cl *w, double u, double v);

@@ -36,7 +36,7 @@ bsi_cl *bsi_cl_create(const bs_patch *p)
     w->dim = p->dim;
     w->nc = p->ncoord;
     w->np = pts * w->nc;
-    size_t total = (BSI_CL_SLOTS + 2) * w->np + pts * w->dim + w->np + 2 * coef +
+    size_t total = (BSI_CL_SLOTS + 2) * w->np + pts * w->dim + w->np + 3 * coef +
                    (m + n + 2 * m + 2 * n + 4) + max_sz(m, n) + 1 + bsi_deriv_table_scratch(p, 2, 2) +
                    9 * w->dim;
     w->pool = malloc(total * sizeof(double));
@@ -50,7 +50,8 @@ bsi_cl *bsi_cl_create(const bs_patch *p)
     w->scaled = w->cart + pts * w->dim;
     w->nco = w->scaled + w->np;
     w->wco = w->nco + coef;
-    w->binom = w->wco + coef;
+    w->fco = w->wco + coef;
+    w->binom = w->fco + coef;
     w->line = w->binom + (m + n + 2 * m + 2 * n + 4);
     w->dscratch = w->line + max_sz(m, n) + 1;
     w->table = w->dscratch + bsi_deriv_table_scratch(p, 2, 2);
@@ -219,6 +220,34 @@ static void self_product(const double *x, size_t m, size_t n, double *out)
         }
 }
 
+/* The direction in which the coefficients of f (the ratios N_kl / W_kl) differ
+ * most from f: their second differences along it times the degree, the size of the gap between
+ * coefficients and values that halving the box along it divides by 4. -1 when both are zero
+ * (then the net's longer side decides); f's coefficients are in w->fco. Where f does not depend on one direction (a cylinder
+ * seen from its axis: a line of minima) only the other is split. */
+static int slack_direction(const bsi_cl *w, size_t m, size_t n)
+{
+    size_t K = 2 * m, L = 2 * n, n2 = L + 1;
+    const double *f = w->fco;
+    double eu = 0.0, ev = 0.0;
+    for (size_t k = 0; k <= K; k++)
+        for (size_t l = 0; l <= L; l++) {
+            if (k + 2 <= K) {
+                double d = fabs(f[(k + 2) * n2 + l] - 2.0 * f[(k + 1) * n2 + l] + f[k * n2 + l]);
+                eu = d > eu ? d : eu;
+            }
+            if (l + 2 <= L) {
+                double d = fabs(f[k * n2 + l + 2] - 2.0 * f[k * n2 + l + 1] + f[k * n2 + l]);
+                ev = d > ev ? d : ev;
+            }
+        }
+    eu *= (double)K;
+    ev *= (double)L;
+    if (eu == ev) /* both zero, or a tie */
+        return -1;
+    return eu > ev ? BS_DIR_U : BS_DIR_V;
+}
+
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
 {
     size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
@@ -258,6 +287,7 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
             double scale = b2m[k] * b2n[l];
             double num = w->nco[at] / scale, den = rational ? w->wco[at] / scale : 1.0;
             double ratio = num / den, lowk = num - err;
+            w->fco[at] = ratio;
             if (ratio < best) {
                 best = ratio;
                 arg = at;
@@ -269,8 +299,10 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
     b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
     b->err = err;
     b->rel = rel;
-    b->su = m > 0 ? (double)(arg / n2) / (double)(2 * m) : 0.5;
-    b->sv = n > 0 ? (double)(arg % n2) / (double)(2 * n) : 0.5;
+    b->dir = slack_direction(w, m, n);
+    size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
+    b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
+    b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
 }
 
 /* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
@@ -301,24 +333,25 @@ void bsi_cl_region(bsi_cl *w, const double x[4])
             sub_line(w->region + i * (n + 1) * nc + c, n, nc, x[2], x[3]);
 }
 
-int bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wratio)
+double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi)
 {
     size_t K = 2 * w->m, L = 2 * w->n, n2 = L + 1;
     int rational = w->nc > w->dim;
     const double *b2m = w->binom + w->m + w->n + 2, *b2n = b2m + K + 1;
     /* G_kl = N_kl - c W_kl into w->scaled (free after bsi_cl_fbound), and max W / min W */
-    double *g = w->scaled, wlo = INFINITY, whi = 0.0;
+    double *g = w->scaled, lo = INFINITY, hi = 0.0;
     for (size_t k = 0; k <= K; k++)
         for (size_t l = 0; l <= L; l++) {
             double scale = b2m[k] * b2n[l], wk = rational ? w->wco[k * n2 + l] / scale : 1.0;
             g[k * n2 + l] = w->nco[k * n2 + l] / scale - c * wk;
-            wlo = wk < wlo ? wk : wlo;
-            whi = wk > whi ? wk : whi;
+            lo = wk < lo ? wk : lo;
+            hi = wk > hi ? wk : hi;
         }
-    *wratio = whi / wlo;
-    if (!(wlo > 0.0))
-        return 0;
-    double e = 2.0 * (b->err + c * whi * b->rel); /* rounding of each G_kl, with margin */
+    *wlo = lo;
+    *whi = hi;
+    if (!(lo > 0.0))
+        return 0.0;
+    double e = 2.0 * (b->err + c * hi * b->rel); /* rounding of each G_kl, with margin */
     double alo = INFINITY, clo = INFINITY, bhi = 0.0;
 #define G(k, l) g[(k) * n2 + (l)]
     for (size_t k = 0; k <= K; k++)
@@ -337,11 +370,16 @@ int bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wrat
             }
         }
 #undef G
-    /* Hessian in the box's parameters: K(K-1) alo <= G_ss, L(L-1) clo <= G_tt, |G_st| <= K L bhi */
-    if (K == 0)
-        return L == 0 || clo > 0.0;
-    if (L == 0)
-        return alo > 0.0;
+    /* Hessian in the box's parameters: A = K(K-1) alo <= G_ss, C = L(L-1) clo <= G_tt,
+     * |G_st| <= B = K L bhi; the smallest eigenvalue of [a b; b c] grows with a and c and falls
+     * with |b|, so it is at least that of [A B; B C]. A direction of degree 0 does not count. */
     double kk = (double)K, ll = (double)L;
-    return alo > 0.0 && clo > 0.0 && alo * clo * (kk - 1.0) * (ll - 1.0) > bhi * bhi * kk * ll;
+    double A = kk * (kk - 1.0) * alo, C = ll * (ll - 1.0) * clo, B = kk * ll * bhi;
+    if (K == 0)
+        return L == 0 ? INFINITY : C;
+    if (L == 0)
+        return A;
+    if (!(A > 0.0 && C > 0.0))
+        return 0.0;
+    return 0.5 * ((A + C) - sqrt((A - C) * (A - C) + 4.0 * B * B));
 }

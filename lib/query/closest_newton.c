@@ -80,7 +80,7 @@ static void step(const double *g, const double *h, const double *gn, int fu, int
         }
         return;
     }
-    int i = fu ? 0 : 1;
+    size_t i = fu ? 0 : 1;
     if (!fu && !fv)
         return;
     double c = h[2 * i] > 0.0 ? h[2 * i] : gn[2 * i];
@@ -102,18 +102,15 @@ double bsi_cl_newton(bsi_cl *w, double x[2])
         step(g, h, gn, fu, fv, d);
         if (d[0] == 0.0 && d[1] == 0.0)
             break;
-        double t = 1.0, y[2] = {x[0], x[1]}, fy = f;
+        double y[2] = {x[0], x[1]};
         int moved = 0;
-        for (int ls = 0; ls < 40; ls++, t *= 0.5) {
+        for (int ls = 0; ls < 40 && !moved; ls++) { /* steps 1, 1/2, 1/4, ... */
+            double t = ldexp(1.0, -ls);
             y[0] = clamp01(x[0] + t * d[0]);
             y[1] = clamp01(x[1] + t * d[1]);
             if (y[0] == x[0] && y[1] == x[1])
                 break;
-            fy = bsi_cl_f(w, y[0], y[1]);
-            if (fy < f) {
-                moved = 1;
-                break;
-            }
+            moved = bsi_cl_f(w, y[0], y[1]) < f;
         }
         if (!moved)
             break;

@@ -179,6 +179,13 @@ static bs_status op_eval_grid(void)
     return bs_patch_eval_grid(HIGH, 15, &u, 20, &v, NULL, NULL, NULL, o, kbuf);
 }
 
+static bs_status op_closest(void)
+{
+    bs_view o[3] = {{obuf[0], NPT, 0}, {obuf[1], NPT, 0}, {obuf[2], NPT, 0}};
+    bs_cview q[3] = {{ubuf, 10, 0}, {vbuf, 10, 0}, {ubuf + 5, 10, 0}};
+    return bs_patch_closest_point(HIGH, 10, q, NULL, NULL, o);
+}
+
 static bs_status op_surface_eval(void)
 {
     bs_view o[3] = {{obuf[0], NPT, 0}, {obuf[1], NPT, 0}, {obuf[2], NPT, 0}};
@@ -437,6 +444,7 @@ static const op ops[] = {
     {"bs_patch_eval_deriv (rational)", op_eval_deriv_rational, 1},
     {"bs_patch_eval_grid", op_eval_grid, 1},
     {"bs_surface_eval_normal", op_surface_eval, 1},
+    {"bs_patch_closest_point", op_closest, 1},
     {"bs_surface_create/add/clone", op_surface_build, 0},
     {"bs_surface_read_bpt", op_read_bpt, 0},
     {"bs_surface_create_builtin", op_builtin, 0},

@@ -7,6 +7,7 @@
  * of tau = 1e-9 (D + d) (the contract: at most 1). */
 #include "harness.h"
 #include "reference.h"
+#include "shapes.h"
 
 #include <bezsurf.h>
 #include <float.h>
@@ -277,7 +278,8 @@ static double check_query(const bs_patch *p, const double *ctrl, const double *w
     size_t deg = m > n ? m : n, grid = 4 * deg + 17 > G ? G : 4 * deg + 17;
     ld d = reference(&r, grid);
     double D = net_diag(ctrl, (m + 1) * (n + 1), dim), tau = 1e-9 * (D + (double)d);
-    double excess = (double)((ld)a.dist - d) / tau;
+    double diff = (double)((ld)a.dist - d);
+    double excess = tau > 0 ? diff / tau : diff > 0 ? INFINITY : 0.0; /* tau = 0: a point patch */
     worst_excess = fmax(worst_excess, excess);
     queries++;
     CHECKF(excess <= 1.0, "%s (deg %zu,%zu dim %zu%s): distance %.17g, reference %.17Lg: %.3g tau",
@@ -353,10 +355,248 @@ static void random_patches(void)
     }
 }
 
+/* The teapot: random points around each patch, the poles of the lid and the bottom (collapsed
+ * sides) seen from above, below and aside, and points near the seams between patches. */
+static void teapot(void)
+{
+    bs_surface *s;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    unsigned long long rng = 7;
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        const bs_patch *p = bs_surface_get(s, i);
+        double ctrl[16 * 3], q[3];
+        CHECK_STATUS(bs_patch_get_ctrl(p, ctrl, 48, NULL, 0), BS_OK);
+        refp r = {{3, 3, 3, ctrl, NULL}, q};
+        double D = net_diag(ctrl, 16, 3);
+        for (int k = 0; k < 6; k++) {
+            ld u = bs_test_rand(&rng, 0, 1), v = bs_test_rand(&rng, 0, 1);
+            if (k == 1 || k == 2) /* a corner: the poles are corners of the lid's patches */
+                u = k == 1 ? 0 : 1, v = bs_test_rand_u64(&rng) % 2;
+            if (k == 3) /* a seam: a side of the patch */
+                u = bs_test_rand_u64(&rng) % 2;
+            point_near(&rng, &r, u, v, k == 0 ? 0.3 * D : k == 4 ? 0.0 : 0.05 * D, q);
+            if (k == 5) /* far above or below */
+                q[2] += (bs_test_rand_u64(&rng) % 2 ? 1 : -1) * 2 * D;
+            check_query(p, ctrl, NULL, q, "teapot");
+        }
+    }
+    bs_surface_destroy(s);
+}
+
+#define R 2.5
+static bs_patch *sphere_octant(double *ctrl, double *w)
+{
+    shape_sphere_octant_net(R, ctrl, w);
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(2, 2, 3, ctrl, w, &p), BS_OK);
+    return p;
+}
+
+/* Seen from its centre every point of a sphere is closest: any answer, at distance R within
+ * tau, and in bounded time. Near the centre the distance is nearly constant (the hardest case
+ * for bounds of the distance, the easiest for bounds of its square). Also the octant elevated
+ * to degree (8, 8). */
+static void sphere_centre(void)
+{
+    double ctrl[27], w[9];
+    bs_patch *p = sphere_octant(ctrl, w), *e = NULL;
+    CHECK_STATUS(bs_patch_elevate(p, 6, 6, &e), BS_OK);
+    const double q[4][3] = {{0, 0, 0}, {1e-7, 0, 0}, {0, -1e-5, 2e-5}, {0.3, 0.3, 0.3}};
+    for (int k = 0; k < 4; k++) {
+        answer a;
+        check_query(p, ctrl, w, q[k], "sphere");
+        CHECK_STATUS(closest(e, q[k], &a), BS_OK);
+        double d = sqrt(q[k][0] * q[k][0] + q[k][1] * q[k][1] + q[k][2] * q[k][2]);
+        double want = R - d; /* along the ray from the centre through q, or anywhere for q = 0 */
+        if (k == 1 || k == 2) /* the nearest point of the octant is where the ray from the centre
+                               * through q meets it, if it does; else on its boundary */
+            continue;
+        CHECKF(fabs(a.dist - want) <= 1e-9 * (2 * R + want), "elevated sphere: %.17g, want %.17g",
+               a.dist, want);
+    }
+    bs_patch_destroy(e);
+    bs_patch_destroy(p);
+}
+
+/* Huge and tiny coordinates: scaling the net and the query by a power of two scales the
+ * distance exactly and keeps (u,v); near the top of the range the squares would overflow. */
+static void scales(void)
+{
+    unsigned long long rng = 31;
+    double ctrl[4 * 5 * 3], big[4 * 5 * 3], w[20], q[3], qb[3];
+    random_net(&rng, 3, 4, 3, ctrl, w);
+    bs_patch *p;
+    CHECK_STATUS(bs_patch_create(3, 4, 3, ctrl, w, &p), BS_OK);
+    const int exps[] = {1000, 600, -600, -1000};
+    for (int t = 0; t < 8; t++) {
+        for (int c = 0; c < 3; c++)
+            q[c] = bs_test_rand(&rng, -1, 2);
+        answer a;
+        CHECK_STATUS(closest(p, q, &a), BS_OK);
+        check_query(p, ctrl, w, q, "scale 1");
+        for (int x = 0; x < 4; x++) {
+            for (int k = 0; k < 60; k++)
+                big[k] = ldexp(ctrl[k], exps[x]);
+            for (int c = 0; c < 3; c++)
+                qb[c] = ldexp(q[c], exps[x]);
+            bs_patch *pb;
+            answer b;
+            CHECK_STATUS(bs_patch_create(3, 4, 3, big, w, &pb), BS_OK);
+            CHECK_STATUS(closest(pb, qb, &b), BS_OK);
+            double ratio = ldexp(b.dist, -exps[x]) / a.dist;
+            CHECKF(isfinite(b.dist) && fabs(ratio - 1) < 1e-9, "scale 2^%d: distance %.17g, unscaled %.17g",
+                   exps[x], ldexp(b.dist, -exps[x]), a.dist);
+            bs_patch_destroy(pb);
+        }
+    }
+    bs_patch_destroy(p);
+}
+
+/* A cone: the side u = 0 collapsed to the apex. Points around the apex, beyond it, and on the
+ * axis (every point of the rim circle equally far). */
+static void cone(void)
+{
+    const double h = sqrt(0.5);
+    double ctrl[18] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 1, 1, 1, 0, 1, 1}, w[6] = {1, h, 1, 1, h, 1};
+    bs_patch *p;
+    CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, w, &p), BS_OK);
+    const double q[5][3] = {{0, 0, -1}, {0.1, 0.1, -0.05}, {-0.2, 0.3, 0.1}, {0, 0, 3}, {0.3, 0.4, 0.5}};
+    for (int k = 0; k < 5; k++)
+        check_query(p, ctrl, w, q[k], "cone");
+    bs_patch_destroy(p);
+}
+
+/* A cylinder seen from its axis: the minima form a line of the domain (every point of a circle
+ * is closest), at the patch's mid-height or not, and for the degree-elevated patch. */
+static void cylinder_axis(void)
+{
+    double ctrl[18], w[6];
+    shape_cylinder_quarter(R, 4.0, ctrl, w);
+    bs_patch *p, *e;
+    CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, w, &p), BS_OK);
+    CHECK_STATUS(bs_patch_elevate(p, 4, 3, &e), BS_OK);
+    const double q[4][3] = {{0, 0, 2}, {0, 0, 2.1}, {1e-9, 0, 1.3}, {0, 0, -0.5}};
+    for (int k = 0; k < 4; k++) {
+        check_query(p, ctrl, w, q[k], "cylinder axis");
+        answer an;
+        CHECK_STATUS(closest(e, q[k], &an), BS_OK);
+        double want = k == 3 ? hypot(R, 0.5) : R - q[k][0]; /* below the rim, or radially out */
+        CHECKF(fabs(an.dist - want) <= 1e-9 * (2 * R + want), "elevated cylinder: %.17g, want %.17g",
+               an.dist, want);
+    }
+    bs_patch_destroy(e);
+    bs_patch_destroy(p);
+}
+
+/* Degenerate nets: degree 0 in a direction or both, every point the same, a collapsed row in
+ * the plane (a fold), weights from 1e-3 to 1e3, q on a control point. */
+static void degenerate(void)
+{
+    static const size_t deg[][3] = {{0, 0, 3}, {0, 3, 3}, {4, 0, 2}, {2, 3, 3}, {3, 3, 2}, {3, 2, 3}};
+    unsigned long long rng = 77;
+    double ctrl[16 * 3], w[16], q[3];
+    for (size_t t = 0; t < sizeof deg / sizeof deg[0]; t++) {
+        size_t m = deg[t][0], n = deg[t][1], dim = deg[t][2], pts = (m + 1) * (n + 1);
+        random_net(&rng, m, n, dim, ctrl, w);
+        if (t == 3) /* every point the same */
+            for (size_t k = 1; k < pts; k++)
+                memcpy(ctrl + k * dim, ctrl, dim * sizeof(double));
+        if (t == 4) /* row i = 0 collapsed */
+            for (size_t j = 1; j <= n; j++)
+                memcpy(ctrl + j * dim, ctrl, dim * sizeof(double));
+        for (size_t k = 0; k < pts; k++)
+            w[k] = t == 5 ? pow(10.0, bs_test_rand(&rng, -3, 3)) : w[k];
+        bs_patch *p;
+        CHECK_STATUS(bs_patch_create(m, n, dim, ctrl, w, &p), BS_OK);
+        refp r = {{m, n, dim, ctrl, w}, q};
+        for (int k = 0; k < 6; k++) {
+            if (k == 0)
+                memcpy(q, ctrl + (pts - 1) * dim, dim * sizeof(double));
+            else
+                point_near(&rng, &r, bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), 0.5 * k, q);
+            check_query(p, ctrl, w, q, "degenerate");
+        }
+        bs_patch_destroy(p);
+    }
+}
+
+/* Argument rules, NaN queries, strided batches against one point at a time. */
+static void arguments(void)
+{
+    double ctrl[27], w[9];
+    bs_patch *p = sphere_octant(ctrl, w);
+    double qx[3] = {1, NAN, 0.5}, qy[3] = {1, 1, INFINITY}, qz[3] = {1, 1, 1};
+    double out[6][3];
+    memset(out, 0, sizeof out);
+    bs_cview q[3] = {{qx, 3, 0}, {qy, 3, 0}, {qz, 3, 0}};
+    bs_view uv[2] = {{out[0], 3, 0}, {out[1], 3, 0}}, d = {out[2], 3, 0};
+    bs_view pos[3] = {{out[3], 3, 0}, {out[4], 3, 0}, {out[5], 3, 0}};
+    CHECK_STATUS(bs_patch_closest_point(NULL, 3, q, uv, &d, pos), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_patch_closest_point(p, 0, NULL, NULL, NULL, NULL), BS_OK);
+    CHECK_STATUS(bs_patch_closest_point(p, 3, NULL, uv, &d, pos), BS_ERR_INVALID_ARG);
+    bs_cview qshort[3] = {q[0], {qy, 2, 0}, q[2]};
+    CHECK_STATUS(bs_patch_closest_point(p, 3, qshort, uv, &d, pos), BS_ERR_SIZE);
+    bs_cview qnull[3] = {q[0], {NULL, 3, 0}, q[2]};
+    CHECK_STATUS(bs_patch_closest_point(p, 3, qnull, uv, &d, pos), BS_ERR_INVALID_ARG);
+    bs_view odd[2] = {{(double *)(void *)((char *)out[0] + 1), 3, 0}, uv[1]};
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, odd, &d, pos), BS_ERR_INVALID_ARG);
+    bs_view oddstride = {out[2], 3, 3};
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, uv, &oddstride, pos), BS_ERR_INVALID_ARG);
+    bs_view dshort = {out[2], 2, 0};
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, uv, &dshort, pos), BS_ERR_SIZE);
+    bs_view pshort[3] = {pos[0], pos[1], {out[5], 1, 0}};
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, uv, &d, pshort), BS_ERR_SIZE);
+    int untouched = 1;
+    for (int i = 0; i < 6; i++)
+        for (int k = 0; k < 3; k++)
+            untouched &= out[i][k] == 0.0;
+    CHECK(untouched); /* nothing written by a failed check */
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, uv, &d, pos), BS_OK);
+    CHECK(!isnan(out[0][0]) && !isnan(out[2][0]) && !isnan(out[5][0]));
+    int nan = 1;
+    for (int i = 0; i < 6; i++)
+        nan &= isnan(out[i][1]) && isnan(out[i][2]);
+    CHECK(nan); /* a NaN or infinite coordinate: NaN in every output of that point only */
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, NULL, NULL, NULL), BS_OK);
+    CHECK_STATUS(bs_patch_closest_point(p, 3, q, NULL, &d, NULL), BS_OK);
+    /* a strided batch (negative stride in, every other element out): one point at a time's bits */
+    enum { NB = 20 };
+    double in[3][NB], res[6][2 * NB];
+    unsigned long long rng = 5;
+    for (int k = 0; k < NB; k++)
+        for (int c = 0; c < 3; c++)
+            in[c][k] = bs_test_rand(&rng, -1, 4);
+    bs_cview bq[3];
+    for (int c = 0; c < 3; c++)
+        bq[c] = (bs_cview){&in[c][NB - 1], NB, -(ptrdiff_t)sizeof(double)};
+    bs_view bo[6];
+    for (int i = 0; i < 6; i++)
+        bo[i] = (bs_view){res[i], NB, 2 * (ptrdiff_t)sizeof(double)};
+    CHECK_STATUS(bs_patch_closest_point(p, NB, bq, bo, bo + 2, bo + 3), BS_OK);
+    int same = 1;
+    for (int k = 0; k < NB; k++) {
+        double one[3] = {in[0][NB - 1 - k], in[1][NB - 1 - k], in[2][NB - 1 - k]};
+        answer a;
+        closest(p, one, &a);
+        double got[6] = {a.uv[0], a.uv[1], a.dist, a.pos[0], a.pos[1], a.pos[2]};
+        for (int i = 0; i < 6; i++)
+            same &= memcmp(&got[i], &res[i][2 * k], sizeof(double)) == 0;
+    }
+    CHECK(same);
+    bs_patch_destroy(p);
+}
+
 int main(void)
 {
     random_patches();
+    teapot();
+    sphere_centre();
+    scales();
+    cone();
+    cylinder_axis();
+    degenerate();
     printf("closest points: %d queries, largest excess over the reference %.3g tau (contract 1)\n",
            queries, worst_excess);
+    arguments();
     return bs_test_exit("test_closest");
 }

@@ -193,15 +193,8 @@ static void sphere(void)
 
 static void cylinder(void)
 {
-    const double h = sqrt(0.5), a[3][2] = {{1, 0}, {1, 1}, {0, 1}}, wa[3] = {1, h, 1};
     double ctrl[18], w[6];
-    for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 3; j++) {
-            ctrl[(i * 3 + j) * 3] = R * a[j][0];
-            ctrl[(i * 3 + j) * 3 + 1] = R * a[j][1];
-            ctrl[(i * 3 + j) * 3 + 2] = 4.0 * i;
-            w[i * 3 + j] = wa[j];
-        }
+    shape_cylinder_quarter(R, 4.0, ctrl, w);
     bs_patch *p;
     CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, w, &p), BS_OK);
     for (int k = 0; k <= 4; k++) {

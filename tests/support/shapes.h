@@ -1,4 +1,5 @@
-/* Exact shapes, and the scale D of a surface, shared by the query tests. */
+/* Exact rational surfaces (radius r about the z axis) and the scale D of a surface, shared by the
+ * query tests. */
 #ifndef BS_TEST_SHAPES_H
 #define BS_TEST_SHAPES_H
 
@@ -6,24 +7,45 @@
 
 #include <math.h>
 
+/* The quarter circle of radius 1 in the xy-plane from (1,0) to (0,1): points and weights. */
+static const double shape_arc[3][2] = {{1, 0}, {1, 1}, {0, 1}};
+
 /* The octant x, y, z >= 0 of the sphere of radius r centred at the origin, as a surface of
- * revolution (rational biquadratic): u along the meridian from the pole (the collapsed side
- * u = 0), v around the z axis. NULL if the patch cannot be made. */
-static inline bs_patch *shape_sphere_octant(double r)
+ * revolution, rational biquadratic: u along the meridian from the pole (0,0,r) (the collapsed side
+ * u = 0) to the equator, v around the axis. Net and weights. */
+static inline void shape_sphere_octant_net(double r, double ctrl[27], double w[9])
 {
-    const double h = sqrt(0.5);
-    const double q[3][3] = {{0, 0, r}, {r, 0, r}, {r, 0, 0}}, wq[3] = {1, h, 1};
-    const double a[3][2] = {{1, 0}, {1, 1}, {0, 1}}, wa[3] = {1, h, 1};
-    double ctrl[27], w[9];
+    const double h = sqrt(0.5), wa[3] = {1, h, 1};
+    const double meridian[3][2] = {{0, r}, {r, r}, {r, 0}}; /* distance from the axis, height */
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
-            ctrl[(i * 3 + j) * 3] = q[i][0] * a[j][0];
-            ctrl[(i * 3 + j) * 3 + 1] = q[i][0] * a[j][1];
-            ctrl[(i * 3 + j) * 3 + 2] = q[i][2];
-            w[i * 3 + j] = wq[i] * wa[j];
+            ctrl[(i * 3 + j) * 3] = meridian[i][0] * shape_arc[j][0];
+            ctrl[(i * 3 + j) * 3 + 1] = meridian[i][0] * shape_arc[j][1];
+            ctrl[(i * 3 + j) * 3 + 2] = meridian[i][1];
+            w[i * 3 + j] = wa[i] * wa[j];
         }
+}
+
+/* The same octant as a patch; NULL if it cannot be made. */
+static inline bs_patch *shape_sphere_octant(double r)
+{
+    double ctrl[27], w[9];
     bs_patch *p = NULL;
+    shape_sphere_octant_net(r, ctrl, w);
     return bs_patch_create(2, 2, 3, ctrl, w, &p) == BS_OK ? p : NULL;
+}
+
+/* A quarter of the cylinder, degree (1,2): u along the axis from z = 0 to `height`, v around. */
+static inline void shape_cylinder_quarter(double r, double height, double ctrl[18], double w[6])
+{
+    const double h = sqrt(0.5), wa[3] = {1, h, 1};
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++) {
+            ctrl[(i * 3 + j) * 3] = r * shape_arc[j][0];
+            ctrl[(i * 3 + j) * 3 + 1] = r * shape_arc[j][1];
+            ctrl[(i * 3 + j) * 3 + 2] = height * i;
+            w[i * 3 + j] = wa[j];
+        }
 }
 
 /* D: the diagonal of the box of every control point of a surface. */
