@@ -184,6 +184,12 @@ class PointsIn:
             self.scalar = bool(rows) and all(isinstance(c, numbers.Real) for c in rows)
             if self.scalar:
                 rows = [rows]
+            for row in rows:
+                if isinstance(row, (str, bytes)) or not isinstance(row, Sequence):
+                    raise TypeError(f"{what} must be a sequence of points, not of "
+                                    f"{type_name(row)}")
+                if len(row) != k:
+                    raise ValueError(f"{what} must hold points of {k} coordinates, got {len(row)}")
             cols: List["array.array[float]"] = []
             for c in range(k):
                 try:
@@ -192,9 +198,6 @@ class PointsIn:
                     raise TypeError(f"{what} must be a sequence of points of {k} real numbers "
                                     f"({exc})") from None
                 cols.append(col if col else array.array("d", [0.0]))
-            for row in rows:
-                if len(row) != k:
-                    raise ValueError(f"{what} must hold points of {k} coordinates, got {len(row)}")
             for c in range(k):
                 views[c] = CView(cols[c].buffer_info()[0], len(rows), _DOUBLE)
             self.n = len(rows)
@@ -217,7 +220,7 @@ class Output:
         view: Any = FView if float32 else View
         views = (view * k)()
         if out is not None or np is not None:
-            dtype = np.float32 if float32 else np.float64
+            dtype = None if np is None else np.float32 if float32 else np.float64
             arr = _check_out(out, (n, k), what, dtype) if out is not None else \
                 np.empty((n, k), dtype=dtype, order="F")
             base = int(arr.ctypes.data)

@@ -2,6 +2,7 @@
 and ray intersection over a whole surface)."""
 
 import ctypes
+import sys
 from typing import TYPE_CHECKING, Any, Dict, NamedTuple, Optional, Tuple
 
 from . import _args as A
@@ -120,7 +121,8 @@ class Locator(Handle):
     def intersect(self, origins: Any, directions: Any, t_min: Optional[Any] = None,
                   t_max: Optional[Any] = None) -> RayHits:
         """The first hit of each ray o + t d with t in [t_min, t_max] (default (0, inf); either
-        bound may be one number or n numbers). 3-D surfaces only."""
+        bound may be one number or n numbers, finite: an infinite bound makes the ray invalid,
+        t NaN). 3-D surfaces only."""
         org = B.PointsIn(origins, 3, "origins")
         dirs = B.PointsIn(directions, 3, "directions")
         if org.n != dirs.n:
@@ -131,7 +133,8 @@ class Locator(Handle):
         keep = []
         if t_min is not None or t_max is not None:
             trange = (CView * 2)()
-            for i, (bound, default) in enumerate(((t_min, 0.0), (t_max, float("inf")))):
+            # the library takes finite bounds only (an infinite one makes the ray invalid)
+            for i, (bound, default) in enumerate(((t_min, 0.0), (t_max, sys.float_info.max))):
                 value = default if bound is None else bound
                 if B.is_scalar(value):
                     value = [A.real(value, "t_min" if i == 0 else "t_max")] * max(n, 1)

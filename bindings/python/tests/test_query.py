@@ -82,12 +82,14 @@ class LocatorTest(PlainTestCase):
         org = [tuple(p[c] + 5.0 * n[c] for c in range(3)) for p, n in zip(pts, nrm)]
         dirs = [tuple(-n[c] for c in range(3)) for n in nrm]
         hits = self.loc.intersect(org, dirs)
-        t = plain(hits.t)
+        t, hit_ids, uv = plain(hits.t), plain(hits.patch), plain(hits.uv)
         for k in range(4):
-            self.assertNotEqual(plain(hits.patch)[k], bezsurf.NO_PATCH)
+            self.assertNotEqual(hit_ids[k], bezsurf.NO_PATCH)
             self.assertLessEqual(t[k], 5.0 + 1e-7)
-            if plain(hits.patch)[k] == ids[k]:
-                self.assertAlmostEqual(t[k], 5.0, delta=1e-7)
+            # the hit is a point of the surface on the ray (the target or one before it)
+            at = plain(self.teapot.eval(hit_ids[k], uv[k][0], uv[k][1]))
+            for c in range(3):
+                self.assertAlmostEqual(at[c], org[k][c] + t[k] * dirs[k][c], delta=1e-7)
 
     def test_miss_range_and_invalid(self):
         hits = self.loc.intersect([(0, 0, 100.0), (0, 0, 100.0), (0, 0, 100.0)],

@@ -22,7 +22,7 @@ use crate::sys;
 /// assert!(hits[0].patch.is_some() && hits[0].t < 10.0);
 /// assert_eq!(hits[1].patch, None);
 /// let near = loc.closest_points(&[0.0, 0.0, 10.0])?;
-/// assert!(near.dist[0] <= 10.0 - hits[0].t + 1e-9);
+/// assert!(near.dist[0] <= hits[0].t + 1e-9); // the hit is t away from the origin
 /// # Ok::<(), bezsurf::Error>(())
 /// ```
 #[derive(Debug)]
@@ -54,14 +54,15 @@ pub struct Ray {
     pub dir: [f64; 3],
     /// Smallest t accepted.
     pub t_min: f64,
-    /// Largest t accepted.
+    /// Largest t accepted (finite).
     pub t_max: f64,
 }
 
 impl Ray {
-    /// The ray from `origin` along `dir` with t in (0, +inf).
+    /// The ray from `origin` along `dir` with t in [0, `f64::MAX`] (the range must be finite:
+    /// an infinite bound makes the ray invalid, a miss with t NaN).
     pub fn new(origin: [f64; 3], dir: [f64; 3]) -> Ray {
-        Ray { origin, dir, t_min: 0.0, t_max: f64::INFINITY }
+        Ray { origin, dir, t_min: 0.0, t_max: f64::MAX }
     }
 }
 

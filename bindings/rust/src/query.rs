@@ -110,10 +110,10 @@ impl PatchRef {
 }
 
 /// Closest points of a patch or a surface to n query points ([`PatchRef::closest_points`],
-/// [`Locator::closest_points`]): one entry per query in each field.
+/// [`Locator::closest_points`](crate::Locator::closest_points)): one entry per query in each field.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ClosestPoints {
-    /// Patch id of each answer ([`Locator`] only; empty for one patch; `u32::MAX` where there is
+    /// Patch id of each answer ([`Locator`](crate::Locator) only; empty for one patch; `u32::MAX` where there is
     /// none).
     pub patch: Vec<u32>,
     /// Parameters (u, v) of each closest point.

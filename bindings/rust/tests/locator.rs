@@ -40,8 +40,11 @@ fn rays_aimed_at_teapot_points_hit_them_or_something_earlier() {
         let hit = loc.intersect(&[Ray::new(origin, [-nrm[0], -nrm[1], -nrm[2]])]).unwrap()[0];
         let hit_patch = hit.patch.expect("a ray aimed at the surface must hit it");
         assert!(hit.t <= 5.0 + 1e-7, "patch {id}: hit at t = {} beyond the target", hit.t);
-        if hit_patch as usize == id {
-            assert!((hit.t - 5.0).abs() < 1e-7);
+        // The hit is a point of the surface on the ray: the target or one before it.
+        let mut at = [0.0; 3];
+        pot.get(hit_patch as usize).unwrap().eval(&[hit.uv[0]], &[hit.uv[1]], &mut at).unwrap();
+        for c in 0..3 {
+            assert!((at[c] - (origin[c] - hit.t * nrm[c])).abs() < 1e-7, "patch {id}: hit off the ray");
         }
         let len = (hit.normal.iter().map(|x| x * x).sum::<f64>()).sqrt();
         assert!((len - 1.0).abs() < 1e-12);
