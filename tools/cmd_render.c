@@ -1,6 +1,8 @@
 /* `bezsurf render`: shaded picture of a surface as a PNG, with no dependency. */
 #include "png.h"
 #include "raster.h"
+#include "curvature_shade.h"
+#include "legend.h"
 #include "cmds.h"
 
 #include <math.h>
@@ -20,6 +22,12 @@ static const char usage[] =
     "      --up y|z          the model's up axis (default z; y for the built-in teacup and teaspoon)\n"
     "  -r, --relative F      tessellation tolerance as a fraction of the model's size (default 0.0002)\n"
     "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
+    "      --curvature mean|gauss\n"
+    "                        colour by the mean or Gaussian curvature at the mesh vertices: blue\n"
+    "                        negative, light grey 0, red positive, over -R..R, R the larger magnitude\n"
+    "                        of the 5th and 95th percentiles by area (0 below 1e-7 of the model's\n"
+    "                        scale); dark grey where undefined; a legend on the right (pictures of\n"
+    "                        at least 240x100)\n"
     "      --nets            draw the patches' control nets over the surface\n"
     "      --patch ID        render only patch ID\n"
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
@@ -35,7 +43,9 @@ typedef struct render_opts {
     size_t w, h, ss;
     double azimuth, elevation, rel, color[3];
     int up_y, up_given, nets, split;
-    size_t patch; /* (size_t)-1: all */
+    size_t patch;  /* (size_t)-1: all */
+    int curvature; /* 0 none, 1 mean, 2 Gaussian */
+    double unit;   /* the factor unit_scale() applied to the model */
 } render_opts;
 
 static int parse_args(int argc, char **argv, render_opts *o)
@@ -98,6 +108,10 @@ static int parse_args(int argc, char **argv, render_opts *o)
                     return cli_usage_error("render", "bad colour", val);
                 p = comma ? comma + 1 : p;
             }
+        } else if (strcmp(a, "--curvature") == 0) {
+            if (strcmp(val, "mean") != 0 && strcmp(val, "gauss") != 0)
+                return cli_usage_error("render", "bad curvature (mean or gauss)", val);
+            o->curvature = val[0] == 'm' ? 1 : 2;
         } else if (strcmp(a, "--patch") == 0) {
             if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
                 return cli_usage_error("render", "bad patch id", val);
@@ -159,6 +173,45 @@ static void draw_nets(raster *r, const bs_surface *s)
     }
 }
 
+/* Vertex colours by the curvature --curvature names, its values brought back to the model's units
+ * (the surface drawn is the model scaled by o->unit: curvatures scale by 1/unit, Gaussian ones by
+ * 1/unit^2); the summary of the values in *cr. NULL after an error, with its exit code in *rc. */
+static double *curvature_vertex_colors(const render_opts *o, const bs_surface *s, const bs_mesh *m,
+                                       const double *pos, const uint32_t *tri, curvature_range *cr, int *rc)
+{
+    /* Below 1e-7 of the model's scale (1/D, 1/D^2: D the diagonal of its box) a curvature is
+     * rounding: a cylinder's Gaussian curvature would be coloured by noise. */
+    double lo[3], hi[3];
+    surface_box(s, lo, hi);
+    double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                       (hi[2] - lo[2]) * (hi[2] - lo[2])) / o->unit;
+    double noise = o->curvature == 2 ? 1e-7 / (diag * diag) : 1e-7 / diag;
+    size_t nv = bs_mesh_vertex_count(m);
+    double *val = malloc(nv * sizeof(double) + 1), *area = malloc(nv * sizeof(double) + 1);
+    double *rgb = malloc(3 * nv * sizeof(double) + 1);
+    bs_status st = val && area && rgb ? curvature_at_vertices(s, m, o->curvature == 2, val) : BS_ERR_NO_MEMORY;
+    if (st == BS_OK) {
+        double back = o->curvature == 2 ? o->unit * o->unit : o->unit;
+        for (size_t i = 0; i < nv; i++)
+            val[i] *= back;
+        vertex_areas(pos, nv, tri, bs_mesh_triangle_count(m), area);
+        if (curvature_summary(val, area, nv, cr) != 0)
+            st = BS_ERR_NO_MEMORY;
+        else if (!(cr->range >= noise)) /* NaN included: nothing to colour by */
+            cr->range = 0.0;
+    }
+    if (st == BS_OK)
+        curvature_colors(val, nv, cr->range, rgb);
+    free(val);
+    free(area);
+    if (st != BS_OK) {
+        free(rgb);
+        *rc = cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+        return NULL;
+    }
+    return rgb;
+}
+
 static int render(const render_opts *o, const bs_surface *s)
 {
     bs_mesh *m = NULL;
@@ -179,26 +232,41 @@ static int render(const render_opts *o, const bs_surface *s)
     double lo[3], hi[3];
     surface_box(s, lo, hi);
     int framed = -1;
+    curvature_range cr;
+    double *vcol = NULL;
     if (pos && nrm && tri && rgb && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
-        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK)
-        framed = raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi);
+        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK) {
+        if (o->curvature && (vcol = curvature_vertex_colors(o, s, m, pos, tri, &cr, &rc)) == NULL)
+            framed = -3;
+        else
+            framed = raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi);
+    }
     if (framed == 0) {
-        raster_mesh(&r, pos, nrm, tri, nt, o->color);
+        if (vcol)
+            raster_reserve_right(&r, legend_strip(o->w, o->h));
+        raster_mesh(&r, pos, nrm, vcol, tri, nt, o->color);
         if (o->nets)
             draw_nets(&r, s);
         raster_finish(&r, rgb);
+        if (vcol)
+            legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
         if (png_write_rgb(o->output, rgb, o->w, o->h) == 0) {
             printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+            if (vcol) {
+                printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
+                       o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
+            }
             rc = cli_finish("render");
         } else {
             rc = cli_fail_write("render", o->output);
         }
     } else if (framed == -2) {
         rc = cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)");
-    } else {
+    } else if (framed == -1) {
         cli_fail("render", CLI_INTERNAL, "out of memory");
     }
     raster_free(&r);
+    free(vcol);
     free(pos);
     free(nrm);
     free(tri);
@@ -229,11 +297,12 @@ static double unit_scale(const render_opts *o, const bs_surface *s)
 }
 
 /* The patches to draw: all or --patch ID, scaled by unit_scale(), each split in four with --split. */
-static int select_patches(const render_opts *o, const bs_surface *s, bs_surface **out)
+static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 {
     if (o->patch != (size_t)-1 && o->patch >= bs_surface_count(s))
         return cli_fail("render", CLI_INPUT, "no patch %zu (the surface has %zu)", o->patch, bs_surface_count(s));
     double k = unit_scale(o, s);
+    o->unit = k;
     const double affine[12] = {k, 0, 0, 0, 0, k, 0, 0, 0, 0, k, 0};
     bs_status st = bs_surface_create(out);
     for (size_t i = 0; st == BS_OK && i < bs_surface_count(s); i++) {
@@ -260,7 +329,7 @@ static int select_patches(const render_opts *o, const bs_surface *s, bs_surface 
 int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
-                     (size_t)-1};
+                     (size_t)-1, 0, 1.0};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;

@@ -178,4 +178,17 @@ static unsigned char *pngr_load(const char *path, size_t *n)
     return b;
 }
 
+/* Load and decode the PNG file at path into *rgb (malloc'd); NULL on success or the reason. */
+static inline const char *png_read_file(const char *path, size_t *w, size_t *h, unsigned char **rgb)
+{
+    size_t n = 0;
+    unsigned char *file = pngr_load(path, &n);
+    *rgb = NULL;
+    if (file == NULL)
+        return "cannot read";
+    const char *why = png_read_rgb(file, n, w, h, rgb);
+    free(file);
+    return why;
+}
+
 #endif
