@@ -212,66 +212,74 @@ static double *curvature_vertex_colors(const render_opts *o, const bs_surface *s
     return rgb;
 }
 
-static int render(const render_opts *o, const bs_surface *s)
+/* The tessellated surface into r (framed already), coloured by o->color or by curvature (then *cr
+ * holds the range); *ntri receives the triangle count. CLI_OK or the exit code after a message. */
+static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_t *ntri, curvature_range *cr)
 {
     bs_mesh *m = NULL;
     bs_status st = bs_surface_tessellate_adaptive(s, o->rel, BS_TESS_RELATIVE, &m);
-    if (st != BS_OK) {
+    if (st != BS_OK)
         return cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
-    }
     size_t nv = bs_mesh_vertex_count(m), nt = bs_mesh_triangle_count(m);
-    double *pos = malloc(3 * nv * sizeof(double) + 1), *nrm = malloc(3 * nv * sizeof(double) + 1);
+    double *pos = malloc(3 * nv * sizeof(double) + 1), *nrm = malloc(3 * nv * sizeof(double) + 1), *vcol = NULL;
     uint32_t *tri = malloc(3 * nt * sizeof(uint32_t) + 1);
-    unsigned char *rgb = malloc(o->w * o->h * 3);
-    int rc = CLI_INTERNAL;
-    raster r;
-    memset(&r, 0, sizeof r);
     ptrdiff_t s3 = 3 * sizeof(double);
     bs_view pv[3] = {{pos, nv, s3}, {pos + 1, nv, s3}, {pos + 2, nv, s3}};
     bs_view nvw[3] = {{nrm, nv, s3}, {nrm + 1, nv, s3}, {nrm + 2, nv, s3}};
-    double lo[3], hi[3];
-    surface_box(s, lo, hi);
-    int framed = -1;
-    curvature_range cr;
-    double *vcol = NULL;
-    if (pos && nrm && tri && rgb && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
-        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK) {
-        if (o->curvature && (vcol = curvature_vertex_colors(o, s, m, pos, tri, &cr, &rc)) == NULL)
-            framed = -3;
-        else
-            framed = raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi);
-    }
-    if (framed == 0) {
-        if (vcol)
-            raster_reserve_right(&r, legend_strip(o->w, o->h));
-        raster_mesh(&r, pos, nrm, vcol, tri, nt, o->color);
-        if (o->nets)
-            draw_nets(&r, s);
-        raster_finish(&r, rgb);
-        if (vcol)
-            legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
-        if (png_write_rgb(o->output, rgb, o->w, o->h) == 0) {
-            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
-            if (vcol) {
-                printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
-                       o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
-            }
-            rc = cli_finish("render");
-        } else {
-            rc = cli_fail_write("render", o->output);
-        }
-    } else if (framed == -2) {
-        rc = cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)");
-    } else if (framed == -1) {
+    int rc = CLI_INTERNAL;
+    if (!(pos && nrm && tri && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
+          bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK))
         cli_fail("render", CLI_INTERNAL, "out of memory");
+    else if (!o->curvature || (vcol = curvature_vertex_colors(o, s, m, pos, tri, cr, &rc)) != NULL)
+        rc = CLI_OK;
+    if (rc == CLI_OK) {
+        raster_mesh(r, pos, nrm, vcol, tri, nt, o->color);
+        *ntri = nt;
     }
-    raster_free(&r);
     free(vcol);
     free(pos);
     free(nrm);
     free(tri);
-    free(rgb);
     bs_mesh_destroy(m);
+    return rc;
+}
+
+static int render(const render_opts *o, const bs_surface *s)
+{
+    unsigned char *rgb = malloc(o->w * o->h * 3);
+    raster r;
+    memset(&r, 0, sizeof r);
+    double lo[3], hi[3];
+    surface_box(s, lo, hi);
+    int framed = rgb ? raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi) : -1;
+    int rc = framed == 0    ? CLI_OK
+             : framed == -2 ? cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)")
+                            : cli_fail("render", CLI_INTERNAL, "out of memory");
+    curvature_range cr;
+    size_t nt = 0;
+    if (rc == CLI_OK) {
+        if (o->curvature)
+            raster_reserve_right(&r, legend_strip(o->w, o->h));
+        rc = draw_mesh(o, s, &r, &nt, &cr);
+    }
+    if (rc == CLI_OK) {
+        if (o->nets)
+            draw_nets(&r, s);
+        raster_finish(&r, rgb);
+        if (o->curvature)
+            legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
+        if (png_write_rgb(o->output, rgb, o->w, o->h) != 0)
+            rc = cli_fail_write("render", o->output);
+    }
+    if (rc == CLI_OK) {
+        printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+        if (o->curvature)
+            printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
+                   o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
+        rc = cli_finish("render");
+    }
+    raster_free(&r);
+    free(rgb);
     return rc;
 }
 
