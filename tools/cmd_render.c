@@ -173,9 +173,11 @@ static void draw_nets(raster *r, const bs_surface *s)
     }
 }
 
-/* Vertex colours by the curvature --curvature names, its values brought back to the model's units
- * (the surface drawn is the model scaled by o->unit: curvatures scale by 1/unit, Gaussian ones by
- * 1/unit^2); the summary of the values in *cr. NULL after an error, with its exit code in *rc. */
+/* Vertex colours by the curvature --curvature names; the summary of the values in *cr, in the
+ * model's units. The colours are worked out on the surface drawn, the model scaled by o->unit to
+ * a size near 1, where every curvature is a finite number; only the reported values are brought
+ * back (curvatures scale by 1/unit, Gaussian ones by 1/unit^2), and may overflow there.
+ * NULL after an error, with its exit code in *rc. */
 static double *curvature_vertex_colors(const render_opts *o, const bs_surface *s, const bs_mesh *m,
                                        const double *pos, const uint32_t *tri, curvature_range *cr, int *rc)
 {
@@ -184,24 +186,26 @@ static double *curvature_vertex_colors(const render_opts *o, const bs_surface *s
     double lo[3], hi[3];
     surface_box(s, lo, hi);
     double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                       (hi[2] - lo[2]) * (hi[2] - lo[2])) / o->unit;
+                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
     double noise = o->curvature == 2 ? 1e-7 / (diag * diag) : 1e-7 / diag;
     size_t nv = bs_mesh_vertex_count(m);
     double *val = malloc(nv * sizeof(double) + 1), *area = malloc(nv * sizeof(double) + 1);
     double *rgb = malloc(3 * nv * sizeof(double) + 1);
     bs_status st = val && area && rgb ? curvature_at_vertices(s, m, o->curvature == 2, val) : BS_ERR_NO_MEMORY;
     if (st == BS_OK) {
-        double back = o->curvature == 2 ? o->unit * o->unit : o->unit;
-        for (size_t i = 0; i < nv; i++)
-            val[i] *= back;
         vertex_areas(pos, nv, tri, bs_mesh_triangle_count(m), area);
         if (curvature_summary(val, area, nv, cr) != 0)
             st = BS_ERR_NO_MEMORY;
         else if (!(cr->range >= noise)) /* NaN included: nothing to colour by */
             cr->range = 0.0;
     }
-    if (st == BS_OK)
+    if (st == BS_OK) {
         curvature_colors(val, nv, cr->range, rgb);
+        double back = o->curvature == 2 ? o->unit * o->unit : o->unit;
+        cr->range *= back;
+        cr->min *= back;
+        cr->max *= back;
+    }
     free(val);
     free(area);
     if (st != BS_OK) {

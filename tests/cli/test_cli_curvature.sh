@@ -6,9 +6,10 @@
 # cone's apex has no curvature. Checked: the printed colour range, the colours of the middle of
 # the picture (png_check --colors counts red, blue and grey pixels), the legend in the strip on
 # the right (red at the top of the bar, blue at its bottom, grey in the middle, dark text), bad
-# values.
-# usage: test_cli_curvature.sh TOOL PNG_CHECK WORK_DIR
-tool=$1 pngcheck=$2 work=$3
+# values; models far too small or large for their curvatures (tests/hostile/) coloured as the unit
+# one.
+# usage: test_cli_curvature.sh TOOL PNG_CHECK HOSTILE_DIR WORK_DIR
+tool=$1 pngcheck=$2 hostile=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" || exit 1
 . "$(dirname "$0")/assert.sh"
 
@@ -81,6 +82,16 @@ done
 
 expect 0 "cone" -- "$tool" render --curvature gauss --size 400x300 -o "$work/cone.png" "$work/cone.bpt"
 check "grep -Eq ', [1-9][0-9]* undefined' '$work/out'" "cone: its apex undefined"
+
+# The unit box scaled to 1e-308, 1e-320 and 1e308: curvatures up to 1e616 (no longer a double)
+# and down to 1e-617, the same picture (too small for a legend, whose values would differ).
+for c in mean gauss; do
+    expect 0 "unit box, $c" -- "$tool" render --curvature $c --size 200x150 -o "$work/unit-$c.png" "$hostile/unit_box.bpt"
+    for f in tiny_box subnormal_box huge_box; do
+        expect 0 "$f, $c" -- "$tool" render --curvature $c --size 200x150 -o "$work/$f-$c.png" "$hostile/$f.bpt"
+        check "cmp -s '$work/unit-$c.png' '$work/$f-$c.png'" "$f, $c: the unit box's picture"
+    done
+done
 
 # Too small for a legend: still a picture.
 expect 0 "small picture" -- "$tool" render --curvature mean --size 64x48 -o "$work/small.png"
