@@ -15,8 +15,7 @@ size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb)
     return ma * (p->deg_u + 1) + mb * (p->deg_v + 1) + (p->deg_v + 1) + ma * mb * p->ncoord;
 }
 
-/* Row k of Pascal's triangle: c[a] = C(k, a). */
-static void binomial_row(unsigned k, double *c)
+void bsi_binomial_row(unsigned k, double *c)
 {
     c[0] = 1.0;
     for (unsigned a = 1; a <= k; a++) {
@@ -67,9 +66,9 @@ void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigne
     double w0 = hd[dim];
     double ci[NMAX], cj[NMAX];
     for (size_t i = 0; i <= ka; i++) {
-        binomial_row((unsigned)i, ci);
+        bsi_binomial_row((unsigned)i, ci);
         for (size_t j = 0; j <= kb; j++) {
-            binomial_row((unsigned)j, cj);
+            bsi_binomial_row((unsigned)j, cj);
             for (size_t c = 0; c < dim; c++) {
                 double acc = i <= ma && j <= mb ? hd[(i * (mb + 1) + j) * nc + c] : 0.0;
                 for (size_t a = 0; a <= min_sz(i, ma); a++)

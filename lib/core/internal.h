@@ -68,6 +68,9 @@ size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
 void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
                      double *scratch, double *out);
 
+/* Row k of Pascal's triangle: c[a] = C(k, a), a <= k (rounded beyond 2^53). */
+void bsi_binomial_row(unsigned k, double *c);
+
 /* A file being written: a temporary file in the target's directory, renamed over the target by
  * bsi_out_close() only after a complete, flushed and synced write. */
 typedef struct bsi_out_file {

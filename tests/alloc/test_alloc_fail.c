@@ -355,6 +355,43 @@ static bs_status op_add_bspline(void)
     return st;
 }
 
+/* The locator: made from the teapot, then rays and closest points through one made beforehand
+ * (LOC), their outputs in the shared buffers. */
+static bs_locator *LOC;
+static bs_status op_locator_create(void)
+{
+    bs_locator *L = (bs_locator *)(void *)HSENT;
+    bs_status st = bs_locator_create(TEAPOT, &L);
+    if (st != BS_OK)
+        CHECK(L == NULL);
+    else
+        bs_locator_destroy(L);
+    return st;
+}
+
+static const double ray_o[3][4] = {{5, -5, 0.5, 9}, {0, 0.5, 0.2, 9}, {1, 1.5, 9, 9}};
+static const double ray_d[3][4] = {{-1, 1, 0.1, -1}, {0, 0, 0.1, -1}, {0, 0, -1, -1}};
+
+static bs_status op_locator_intersect(void)
+{
+    bs_cview o[3], d[3];
+    for (int c = 0; c < 3; c++) {
+        o[c] = (bs_cview){ray_o[c], 4, 0};
+        d[c] = (bs_cview){ray_d[c], 4, 0};
+    }
+    bs_view uv[2] = {{obuf[1], 4, 0}, {obuf[2], 4, 0}}, t = {obuf[0], 4, 0};
+    return bs_locator_intersect(LOC, 4, o, d, NULL, NULL, uv, &t, NULL);
+}
+
+static bs_status op_locator_closest(void)
+{
+    bs_cview q[3];
+    for (int c = 0; c < 3; c++)
+        q[c] = (bs_cview){ray_o[c], 4, 0};
+    bs_view uv[2] = {{obuf[1], 4, 0}, {obuf[2], 4, 0}}, dist = {obuf[0], 4, 0};
+    return bs_locator_closest_point(LOC, 4, q, NULL, uv, &dist, NULL);
+}
+
 typedef struct op {
     const char *name;
     op_fn fn;
@@ -390,6 +427,9 @@ static const op ops[] = {
     {"bs_surface_continuity", op_continuity, 0},
     {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
     {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
+    {"bs_locator_create", op_locator_create, 0},
+    {"bs_locator_intersect", op_locator_intersect, 1},
+    {"bs_locator_closest_point", op_locator_closest, 1},
 };
 
 int main(void)
@@ -398,6 +438,7 @@ int main(void)
     CHECK_STATUS(bs_patch_create(2, 2, 3, net3, w9, &R), BS_OK);
     CHECK_STATUS(bs_patch_elevate(R, 10, 12, &HIGH), BS_OK);
     CHECK_STATUS(bs_surface_create_builtin("teapot", &TEAPOT), BS_OK);
+    CHECK_STATUS(bs_locator_create(TEAPOT, &LOC), BS_OK);
     CHECK_STATUS(bs_surface_write_bpt(TEAPOT, NULL, 0, &teapot_len), BS_OK);
     teapot_text = malloc(teapot_len);
     CHECK_STATUS(bs_surface_write_bpt(TEAPOT, teapot_text, teapot_len, &teapot_len), BS_OK);
@@ -433,6 +474,7 @@ int main(void)
     printf("allocation failures injected: %zu\n", total_failures);
     remove(tmp_path);
     free(teapot_text);
+    bs_locator_destroy(LOC);
     bs_surface_destroy(TEAPOT);
     bs_patch_destroy(P);
     bs_patch_destroy(R);

@@ -3,6 +3,7 @@
  * teapot's lid) and a cone's apex, and every argument rule. */
 #include "harness.h"
 #include "reference.h"
+#include "shapes.h"
 
 #include <bezsurf.h>
 #include <float.h>
@@ -150,19 +151,8 @@ static void random_patches(void)
 #define R 2.5
 static bs_patch *sphere_octant(void)
 {
-    const double h = sqrt(0.5);
-    const double q[3][3] = {{0, 0, R}, {R, 0, R}, {R, 0, 0}}, wq[3] = {1, h, 1};
-    const double a[3][2] = {{1, 0}, {1, 1}, {0, 1}}, wa[3] = {1, h, 1};
-    double ctrl[27], w[9];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            ctrl[(i * 3 + j) * 3] = q[i][0] * a[j][0];
-            ctrl[(i * 3 + j) * 3 + 1] = q[i][0] * a[j][1];
-            ctrl[(i * 3 + j) * 3 + 2] = q[i][2];
-            w[i * 3 + j] = wq[i] * wa[j];
-        }
-    bs_patch *p = NULL;
-    CHECK_STATUS(bs_patch_create(2, 2, 3, ctrl, w, &p), BS_OK);
+    bs_patch *p = shape_sphere_octant(R);
+    CHECK(p != NULL);
     return p;
 }
 

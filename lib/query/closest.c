@@ -1,0 +1,329 @@
+/*
+ * Closest points on one patch (bezsurf/query.h): branch and bound over boxes of the domain.
+ *
+ * A box holds its sub-net (de Casteljau halving of its parent's, closest_bound.c). It is
+ * discarded when a lower bound on the distance over it is at least the best distance found so
+ * far minus the tolerance T = 0.5e-9 (D + best), which keeps half of the contract's tau for the
+ * final rounding: when every box is gone, no point of the patch is closer than best - T. The
+ * bounds are the bounding box of the sub-net (first order, cheap, tried first) and the smallest
+ * Bernstein coefficient of f = |S - q|^2 (second order, closest_bound.c); the second shrinks as
+ * h^2 |f''| for a box of size h, so the boxes around a minimum stop splitting after a few levels
+ * instead of ~1/tau boxes. Surviving boxes are split across their longer side, depth first, the
+ * child with the nearer bounding box first. In a surviving box the point of its smallest
+ * coefficient is a candidate: where f there is below the best, projected Newton over the whole
+ * domain (closest_newton.c) polishes it, so the best is a local minimum (interior, on an edge or
+ * at a corner) as soon as there is one below it. Every bound allows for the rounding of the
+ * halving and of the coefficients.
+ *
+ * The work is capped (BOX_CAP boxes a query); docs/queries.md says what the cap means.
+ */
+#include "query/closest.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+/* Boxes (second-order bounds computed) per query at most. */
+#define BOX_CAP 20000
+
+typedef struct box {
+    double u0, u1, v0, v1, aabb;
+    unsigned depth, slot;
+    int dir; /* the direction to split it, -1 for none */
+} box;
+
+/* Rounding of the nets of boxes at depth k (scaled units, the root net's magnitude 1): each
+ * halving moves a point by at most max(m,n) half-ulps of the net's magnitude, and the Cartesian
+ * points divide by weights down to wmin. */
+static double net_error(const bsi_cl *w, unsigned depth)
+{
+    size_t deg = w->m > w->n ? w->m : w->n;
+    return ((double)depth + 4.0) * ((double)deg + 1.0) * 2.0 * DBL_EPSILON / w->wmin;
+}
+
+/* Regions around minima certified by convexity, kept at once. */
+#define REGIONS 8
+
+/* A box of the domain [x0, x1] x [x2, x3] over which the distance is at least lb. */
+typedef struct region {
+    double x[4], lb;
+} region;
+
+/* The best point so far and what it is compared with. */
+typedef struct search {
+    double incoming; /* the caller's best distance (scaled), INFINITY for none */
+    double f, uv[2]; /* own best: f and where (f = INFINITY: none yet) */
+    double diag;     /* D (scaled) for the tolerance */
+    region reg[REGIONS];
+    unsigned nreg;   /* regions filled, the next one replaced is nreg % REGIONS */
+} search;
+
+static double current(const search *s) { return fmin(s->incoming, sqrt(s->f)); }
+
+static double tolerance(const search *s)
+{
+    double c = current(s);
+    return 0.5e-9 * (s->diag + (isfinite(c) ? c : 0.0));
+}
+
+/* 1 when a lower bound lb on the distance over a box cannot beat the best by more than T. */
+static int pruned(const search *s, double lb) { return lb >= current(s) - tolerance(s); }
+
+/* Certify a square around the best point x* (a local minimum from Newton) in which no point
+ * is closer: the second-order closure. With c = f(x*) and G = N - c W (G >= 0 exactly where
+ * f >= c; G(x*) = 0), if G is convex over the square then G(x) >= grad G(x*) . (x - x*) there,
+ * and grad G(x*) = W(x*) grad f(x*) is Newton's residual (zero at an interior minimum, pointing
+ * out of the domain at a minimum on an edge or a corner): f >= c - rho max W / min W, rho the
+ * largest decrease of the linear term over the square. The boxes inside the square are then
+ * pruned whatever their size, instead of being split until their own bounds reach T. */
+static void certify(bsi_cl *w, search *s)
+{
+    double g[2], c = bsi_cl_grad(w, s->uv, g);
+    /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
+    double rho_w = 1.0 / w->wmin;
+    double noise = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w *
+                   sqrt((double)w->dim) + net_error(w, 16);
+    for (double r = 0.125; r >= 0x1p-12; r *= 0.25) {
+        double x[4] = {fmax(0.0, s->uv[0] - r), fmin(1.0, s->uv[0] + r), fmax(0.0, s->uv[1] - r),
+                       fmin(1.0, s->uv[1] + r)};
+        bsi_cl_bound b;
+        double ratio;
+        bsi_cl_region(w, x);
+        bsi_cl_fbound(w, w->region, &b);
+        if (!bsi_cl_convex(w, &b, c, &ratio))
+            continue;
+        double rho = 0.0;
+        for (int i = 0; i < 2; i++)
+            rho -= fmin(0.0, fmin(g[i] * (x[2 * i] - s->uv[i]), g[i] * (x[2 * i + 1] - s->uv[i])));
+        double lbf = fmax(c - rho * ratio, b.lbf);
+        region *rg = &s->reg[s->nreg++ % REGIONS];
+        for (int i = 0; i < 4; i++)
+            rg->x[i] = x[i];
+        rg->lb = sqrt(fmax(lbf, 0.0)) - noise;
+        return;
+    }
+}
+
+/* 1 when box b lies in a certified region whose bound prunes it. */
+static int in_region(const search *s, const box *b)
+{
+    unsigned k = s->nreg < REGIONS ? s->nreg : REGIONS;
+    for (unsigned i = 0; i < k; i++) {
+        const double *x = s->reg[i].x;
+        if (b->u0 >= x[0] && b->u1 <= x[1] && b->v0 >= x[2] && b->v1 <= x[3] &&
+            pruned(s, s->reg[i].lb))
+            return 1;
+    }
+    return 0;
+}
+
+/* Newton from the box's candidate when f there is below the best; a new best is certified. */
+static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound *fb)
+{
+    double x[2] = {b->u0 + fb->su * (b->u1 - b->u0), b->v0 + fb->sv * (b->v1 - b->v0)};
+    if (!(bsi_cl_f(w, x[0], x[1]) < s->f))
+        return;
+    double f = bsi_cl_newton(w, x);
+    if (f < s->f) {
+        s->f = f;
+        s->uv[0] = x[0];
+        s->uv[1] = x[1];
+        if (sqrt(f) > tolerance(s))
+            certify(w, s);
+    }
+}
+
+/* Whether box b survives: its bounds against the best (its second-order bound computed, and
+ * counted in *visited, only when the first-order one does not prune it); its candidate tried. */
+static int survives(bsi_cl *w, search *s, const box *b, size_t *visited)
+{
+    double err = net_error(w, b->depth);
+    if (pruned(s, sqrt(b->aabb) - err) || in_region(s, b))
+        return 0;
+    bsi_cl_bound fb;
+    bsi_cl_fbound(w, w->pool + b->slot * w->np, &fb);
+    ++*visited;
+    double lb = sqrt(fmax(fb.lbf, 0.0)) - err;
+    if (pruned(s, lb))
+        return 0;
+    try_candidate(w, s, b, &fb);
+    return !pruned(s, lb);
+}
+
+/* The branch and bound. Returns the boxes visited. */
+static size_t search_patch(bsi_cl *w, search *s)
+{
+    box stack[BSI_CL_SLOTS];
+    unsigned free_slots[BSI_CL_SLOTS], nfree = 0;
+    for (unsigned k = BSI_CL_SLOTS - 1; k > 0; k--)
+        free_slots[nfree++] = k;
+    bsi_cl_bound fb;
+    for (size_t k = 0; k < w->np; k++)
+        w->pool[k] = w->root[k];
+    bsi_cl_box(w, w->pool, &fb);
+    stack[0] = (box){0.0, 1.0, 0.0, 1.0, fb.aabb, 0, 0, fb.dir};
+    size_t top = 1, visited = 0;
+    while (top > 0 && visited < BOX_CAP) {
+        box b = stack[--top];
+        if (sqrt(s->f) <= tolerance(s))
+            break; /* q is on the patch, as far as T can tell */
+        if (!survives(w, s, &b, &visited) || b.depth >= BSI_CL_DEPTH || b.dir < 0) {
+            free_slots[nfree++] = b.slot;
+            continue;
+        }
+        box half[2] = {b, b};
+        half[0].slot = free_slots[--nfree];
+        half[1].slot = free_slots[--nfree];
+        half[0].depth = half[1].depth = b.depth + 1;
+        if (b.dir == BS_DIR_U)
+            half[0].u1 = half[1].u0 = 0.5 * (b.u0 + b.u1);
+        else
+            half[0].v1 = half[1].v0 = 0.5 * (b.v0 + b.v1);
+        double *net = w->pool + b.slot * w->np;
+        bsi_cl_split(w, net, b.dir, w->pool + half[0].slot * w->np, w->pool + half[1].slot * w->np);
+        free_slots[nfree++] = b.slot;
+        for (int k = 0; k < 2; k++) {
+            bsi_cl_box(w, w->pool + half[k].slot * w->np, &fb);
+            half[k].aabb = fb.aabb;
+            half[k].dir = fb.dir;
+        }
+        int near = half[1].aabb < half[0].aabb; /* popped first */
+        stack[top++] = half[1 - near];
+        stack[top++] = half[near];
+    }
+    return visited;
+}
+
+/* Squared distance |S(uv) - q|^2 in the caller's units, S as bs_patch_eval gives it. */
+static double distance2(const bs_patch *p, const double *q, const double uv[2], double *pos)
+{
+    bs_cview cu = {&uv[0], 1, 0}, cv = {&uv[1], 1, 0};
+    bs_view out[BS_MAX_DIM];
+    for (size_t c = 0; c < p->dim; c++)
+        out[c] = (bs_view){&pos[c], 1, 0};
+    (void)bs_patch_eval(p, 1, &cu, &cv, out, NULL, NULL); /* valid views: cannot fail */
+    double d2 = 0.0;
+    for (size_t c = 0; c < p->dim; c++)
+        d2 += (pos[c] - q[c]) * (pos[c] - q[c]);
+    return d2;
+}
+
+/* The squared distance from q to the bounding box of the control points (the convex hull). */
+static double hull_distance2(const bs_patch *p, const double *q)
+{
+    double d2 = 0.0;
+    for (size_t c = 0; c < p->dim; c++) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t k = 0; k < p->nctrl; k++) {
+            lo = fmin(lo, p->ctrl[k * p->dim + c]);
+            hi = fmax(hi, p->ctrl[k * p->dim + c]);
+        }
+        double g = fmax(0.0, fmax(lo - q[c], q[c] - hi));
+        d2 += g * g;
+    }
+    return d2;
+}
+
+static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d2, double uv[2],
+                        size_t *boxes)
+{
+    bsi_cl_setup(w, q);
+    double s = w->s1 * w->s2;
+    search st = {sqrt(*best_d2) * s, INFINITY, {0.5, 0.5}, fmax(w->diag, d_scale * s), {{{0}, 0}}, 0};
+    size_t visited = search_patch(w, &st);
+    if (boxes != NULL)
+        *boxes = visited;
+    if (!(st.f < INFINITY))
+        return 0; /* every box was farther than the caller's best */
+    double pos[BS_MAX_DIM], d2 = distance2(w->p, q, st.uv, pos);
+    if (!(d2 < *best_d2) && *best_d2 < INFINITY)
+        return 0;
+    *best_d2 = d2;
+    uv[0] = st.uv[0];
+    uv[1] = st.uv[1];
+    return 1;
+}
+
+int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
+                            double uv[2], size_t *boxes)
+{
+    if (boxes != NULL)
+        *boxes = 0;
+    if (hull_distance2(p, q) > *best_d2)
+        return 0;
+    bsi_cl *w = bsi_cl_create(p);
+    if (w == NULL)
+        return -1;
+    int r = closest_with(w, q, d_scale, best_d2, uv, boxes);
+    bsi_cl_free(w);
+    return r;
+}
+
+int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, double *best_d2,
+                          double uv[2])
+{
+    return bsi_patch_closest_count(p, q, d_scale, best_d2, uv, NULL);
+}
+
+/* |pos - q| without overflow or underflow in the squares. */
+static double distance(const double *pos, const double *q, size_t dim)
+{
+    double big = 0.0, sum = 0.0;
+    for (size_t c = 0; c < dim; c++)
+        big = fmax(big, fabs(pos[c] - q[c]));
+    if (big == 0.0 || isinf(big))
+        return big;
+    for (size_t c = 0; c < dim; c++) {
+        double x = (pos[c] - q[c]) / big;
+        sum += x * x;
+    }
+    return big * sqrt(sum);
+}
+
+bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q, const bs_view *uv,
+                                 const bs_view *dist, const bs_view *pos)
+{
+    if (p == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (n == 0)
+        return BS_OK;
+    if (q == NULL)
+        return BS_ERR_INVALID_ARG;
+    size_t dim = p->dim;
+    bs_status st;
+    for (size_t c = 0; c < dim; c++)
+        if ((st = bsi_check_cview(&q[c], n)) != BS_OK)
+            return st;
+    if ((uv && (st = bsi_check_views(uv, 2, n)) != BS_OK) ||
+        (dist && (st = bsi_check_views(dist, 1, n)) != BS_OK) ||
+        (pos && (st = bsi_check_views(pos, dim, n)) != BS_OK))
+        return st;
+    bsi_cl *w = bsi_cl_create(p); /* the one allocation, before anything is written */
+    if (w == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t k = 0; k < n; k++) {
+        double x[BS_MAX_DIM], at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
+        int finite = 1;
+        for (size_t c = 0; c < dim; c++) {
+            x[c] = bsi_cget(&q[c], k);
+            finite &= isfinite(x[c]) != 0;
+            y[c] = NAN;
+        }
+        if (finite) {
+            double best = INFINITY;
+            (void)closest_with(w, x, 0.0, &best, at, NULL); /* always 1 with no best to beat */
+            (void)distance2(p, x, at, y);
+            d = distance(y, x, dim);
+        }
+        if (uv) {
+            *bsi_at(&uv[0], k) = at[0];
+            *bsi_at(&uv[1], k) = at[1];
+        }
+        if (dist)
+            *bsi_at(dist, k) = d;
+        for (size_t c = 0; pos && c < dim; c++)
+            *bsi_at(&pos[c], k) = y[c];
+    }
+    bsi_cl_free(w);
+    return BS_OK;
+}

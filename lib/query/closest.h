@@ -1,0 +1,87 @@
+/*
+ * Closest points on one patch, private to the closest-point files of lib/query/ (closest.c,
+ * closest_bound.c, closest_newton.c): the workspace of the queries on one patch, the bounds on
+ * a sub-net and the projected Newton iteration. Not installed.
+ *
+ * Units. Each query works in scaled coordinates: the net and q are multiplied by s1 (a power of
+ * two that brings the larger of them below 1), the differences P - q by s2 (a power of two that
+ * brings them below 1). Scaling by powers of two is exact, so nothing overflows or underflows for
+ * huge or tiny coordinates and f = |S - q|^2 is of order 1 at most.
+ */
+#ifndef BEZSURF_QUERY_CLOSEST_H
+#define BEZSURF_QUERY_CLOSEST_H
+
+#include "query/internal.h"
+
+/* Deepest box (binary splits of the domain); nets kept at once is at most one more than that. */
+#define BSI_CL_DEPTH 80
+#define BSI_CL_SLOTS (BSI_CL_DEPTH + 3)
+
+typedef struct bsi_cl {
+    const bs_patch *p;
+    size_t m, n, dim, nc; /* degrees, dimension, doubles per net point (dim + 1 when rational) */
+    size_t np;            /* doubles per net, (m+1)(n+1) nc */
+    /* scratch sized for p, allocated once by bsi_cl_create */
+    double *pool;      /* BSI_CL_SLOTS nets, point-major: coordinate c of (i,j) at [(i(n+1)+j) nc + c];
+                        * homogeneous w (P - q) then w when rational, scaled */
+    double *root;      /* the net of the whole domain (the same layout) */
+    double *region;    /* the net of a region around a minimum */
+    double *cart;      /* (m+1)(n+1) dim: the Cartesian points of one net */
+    double *scaled;    /* np: one net times the binomials C(m,i) C(n,j) */
+    double *nco, *wco; /* (2m+1)(2n+1): Bernstein coefficients of N = |w (S - q)|^2 and W = w^2 */
+    double *binom;     /* Pascal rows m, n, 2m, 2n */
+    double *line;      /* max(m,n) + 1: one line of a net being split */
+    double *dscratch;  /* bsi_deriv_table_scratch(p, 2, 2) */
+    double *table;     /* 9 dim: the partials S^(a,b), a, b <= 2, at one point */
+    /* set for each query by bsi_cl_setup */
+    double s1, s2;           /* the scales (see above) */
+    double qs[BS_MAX_DIM];   /* q s1 */
+    double diag;             /* diagonal of the bounding box of the control points, scaled */
+    double wmin;             /* smallest weight of the root net (the largest is scaled to 1) */
+} bsi_cl;
+
+/* What is known of one box from its sub-net. */
+typedef struct bsi_cl_bound {
+    double aabb;   /* squared distance from q to the bounding box of the Cartesian sub-net */
+    double lbf;    /* lower bound on f over the box from the Bernstein coefficients of f, the
+                    * rounding of their computation allowed for */
+    double su, sv; /* where the smallest coefficient sits, in the box's own parameters */
+    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V), -1 for a constant patch */
+    double err;    /* rounding of the coefficients of N (w->nco), relative of W (w->wco) */
+    double rel;
+} bsi_cl_bound;
+
+/* The workspace for queries on p (lib/query/closest_bound.c); NULL when out of memory. */
+bsi_cl *bsi_cl_create(const bs_patch *p);
+void bsi_cl_free(bsi_cl *w);
+/* Scales for the finite query point q, and the root net of q in w->root. */
+void bsi_cl_setup(bsi_cl *w, const double *q);
+/* de Casteljau at 1/2 along dir: the halves of src into lo and hi. */
+void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi);
+/* b->aabb and b->dir of a sub-net. */
+void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* b->lbf, b->su and b->sv of a sub-net: the second-order bound (N and W left in w->nco, w->wco). */
+void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* The sub-net of the box [x[0], x[1]] x [x[2], x[3]] of the root net into w->region. */
+void bsi_cl_region(bsi_cl *w, const double x[4]);
+/* Whether G = N - c W, from the coefficients the last bsi_cl_fbound left (b its result), is
+ * convex over that box: its second-derivative coefficients, their rounding allowed for, make
+ * the Hessian positive definite everywhere on the box. *wratio receives max W / min W there. */
+int bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wratio);
+
+/* f = |S - q|^2 at (u,v) in scaled units (lib/query/closest_newton.c). */
+double bsi_cl_f(bsi_cl *w, double u, double v);
+/* Projected Newton on f over [0,1]^2 from x (updated): returns f there. Iterates on the free
+ * coordinates (an edge or a corner where the gradient points out of the domain is held), with a
+ * Gauss-Newton or gradient step where the Hessian is not positive, and halving steps until f
+ * decreases. */
+double bsi_cl_newton(bsi_cl *w, double x[2]);
+/* f and its gradient g[2] at x. */
+double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2]);
+
+/* bsi_patch_closest_one, also counting the boxes whose second-order bound was computed
+ * (lib/query/closest.c; boxes may be NULL). */
+int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
+                            double uv[2], size_t *boxes);
+
+#endif

@@ -1,0 +1,347 @@
+/*
+ * Closest points, the bounds on one box of the domain: the workspace, the scaled root net of a
+ * query, de Casteljau halving of a sub-net, and the two lower bounds on f = |S - q|^2 over the
+ * box that the branch and bound of closest.c prunes with.
+ *
+ * First order: the bounding box of the Cartesian sub-net contains the sub-patch (convex hull
+ * property; the weights are positive), so the squared distance from q to it bounds f from below.
+ * It is cheap, and prunes far boxes, but near a minimum it is off by O(h) for a box of size h.
+ *
+ * Second order: f = N / W with N = |A|^2, A = w (S - q) the homogeneous sub-net, W = w^2 (W = 1
+ * for a polynomial patch). N and W are polynomials of degree (2m, 2n) whose Bernstein
+ * coefficients on the box come from the sub-net by the product rule of Bernstein polynomials,
+ * and with W_kl > 0, f = sum B_kl W_kl (N_kl / W_kl) / sum B_kl W_kl is a convex combination of
+ * the ratios: min N_kl / W_kl bounds f from below. The coefficients of a polynomial converge to
+ * its values as O(h^2) under subdivision, so this bound is off by O(h^2 |f''|): where f is flat
+ * (near its minimum, or where every point is at the same distance, as from a sphere's centre,
+ * whose f is constant and whose coefficients are then all equal) it is nearly exact.
+ */
+#include "query/closest.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+static size_t max_sz(size_t a, size_t b) { return a > b ? a : b; }
+
+bsi_cl *bsi_cl_create(const bs_patch *p)
+{
+    bsi_cl *w = malloc(sizeof *w);
+    if (w == NULL)
+        return NULL;
+    size_t m = p->deg_u, n = p->deg_v, pts = (m + 1) * (n + 1), coef = (2 * m + 1) * (2 * n + 1);
+    w->p = p;
+    w->m = m;
+    w->n = n;
+    w->dim = p->dim;
+    w->nc = p->ncoord;
+    w->np = pts * w->nc;
+    size_t total = (BSI_CL_SLOTS + 2) * w->np + pts * w->dim + w->np + 2 * coef +
+                   (m + n + 2 * m + 2 * n + 4) + max_sz(m, n) + 1 + bsi_deriv_table_scratch(p, 2, 2) +
+                   9 * w->dim;
+    w->pool = malloc(total * sizeof(double));
+    if (w->pool == NULL) {
+        free(w);
+        return NULL;
+    }
+    w->root = w->pool + BSI_CL_SLOTS * w->np;
+    w->region = w->root + w->np;
+    w->cart = w->region + w->np;
+    w->scaled = w->cart + pts * w->dim;
+    w->nco = w->scaled + w->np;
+    w->wco = w->nco + coef;
+    w->binom = w->wco + coef;
+    w->line = w->binom + (m + n + 2 * m + 2 * n + 4);
+    w->dscratch = w->line + max_sz(m, n) + 1;
+    w->table = w->dscratch + bsi_deriv_table_scratch(p, 2, 2);
+    bsi_binomial_row((unsigned)m, w->binom);
+    bsi_binomial_row((unsigned)n, w->binom + m + 1);
+    bsi_binomial_row((unsigned)(2 * m), w->binom + m + n + 2);
+    bsi_binomial_row((unsigned)(2 * n), w->binom + 3 * m + n + 3);
+    return w;
+}
+
+void bsi_cl_free(bsi_cl *w)
+{
+    if (w != NULL)
+        free(w->pool);
+    free(w);
+}
+
+/* The power of two 2^-e with x 2^-e in [0.5, 1) (1 for x = 0 or not finite). */
+static double unit_scale(double x)
+{
+    int e = 0;
+    if (!(x > 0.0 && x <= DBL_MAX))
+        return 1.0;
+    (void)frexp(x, &e);
+    return ldexp(1.0, -e);
+}
+
+void bsi_cl_setup(bsi_cl *w, const double *q)
+{
+    const bs_patch *p = w->p;
+    size_t dim = w->dim, pts = p->nctrl;
+    double big = 0.0, wmax = 0.0;
+    for (size_t c = 0; c < dim; c++)
+        big = fmax(big, fabs(q[c]));
+    for (size_t k = 0; k < pts * dim; k++)
+        big = fmax(big, fabs(p->ctrl[k]));
+    w->s1 = unit_scale(big);
+    for (size_t c = 0; c < dim; c++)
+        w->qs[c] = q[c] * w->s1;
+    double diff = 0.0, lo[BS_MAX_DIM], hi[BS_MAX_DIM];
+    for (size_t c = 0; c < dim; c++) {
+        lo[c] = INFINITY;
+        hi[c] = -INFINITY;
+    }
+    for (size_t k = 0; k < pts; k++) {
+        for (size_t c = 0; c < dim; c++) {
+            double x = p->ctrl[k * dim + c] * w->s1;
+            diff = fmax(diff, fabs(x - w->qs[c]));
+            lo[c] = fmin(lo[c], x);
+            hi[c] = fmax(hi[c], x);
+        }
+        if (p->rational)
+            wmax = fmax(wmax, p->weights[k]);
+    }
+    w->s2 = unit_scale(diff);
+    double d2 = 0.0;
+    for (size_t c = 0; c < dim; c++)
+        d2 += (hi[c] - lo[c]) * (hi[c] - lo[c]);
+    w->diag = sqrt(d2) * w->s2;
+    double ws = p->rational ? unit_scale(wmax) : 1.0;
+    w->wmin = 1.0;
+    double *net = w->root;
+    for (size_t k = 0; k < pts; k++) {
+        double wk = p->rational ? p->weights[k] * ws : 1.0;
+        w->wmin = fmin(w->wmin, wk);
+        for (size_t c = 0; c < dim; c++)
+            net[k * w->nc + c] = wk * ((p->ctrl[k * dim + c] * w->s1 - w->qs[c]) * w->s2);
+        if (p->rational)
+            net[k * w->nc + dim] = wk;
+    }
+}
+
+/* One line of deg+1 values at src, stride apart, halved: the left half to lo, the right to hi. */
+static void split_line(const double *src, size_t deg, size_t stride, double *lo, double *hi,
+                       double *t)
+{
+    for (size_t k = 0; k <= deg; k++)
+        t[k] = src[k * stride];
+    lo[0] = t[0];
+    hi[deg * stride] = t[deg];
+    for (size_t r = 1; r <= deg; r++) {
+        for (size_t k = 0; k + r <= deg; k++)
+            t[k] = 0.5 * (t[k] + t[k + 1]);
+        lo[r * stride] = t[0];
+        hi[(deg - r) * stride] = t[deg - r];
+    }
+}
+
+void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
+{
+    size_t m = w->m, n = w->n, nc = w->nc;
+    if (dir == BS_DIR_U) {
+        for (size_t j = 0; j <= n; j++)
+            for (size_t c = 0; c < nc; c++) {
+                size_t o = j * nc + c;
+                split_line(src + o, m, (n + 1) * nc, lo + o, hi + o, w->line);
+            }
+    } else {
+        for (size_t i = 0; i <= m; i++)
+            for (size_t c = 0; c < nc; c++) {
+                size_t o = i * (n + 1) * nc + c;
+                split_line(src + o, n, nc, lo + o, hi + o, w->line);
+            }
+    }
+}
+
+void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
+{
+    size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
+    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
+    for (size_t c = 0; c < dim; c++) {
+        lo[c] = INFINITY;
+        hi[c] = -INFINITY;
+    }
+    for (size_t k = 0; k < pts; k++) {
+        double inv = nc > dim ? 1.0 / net[k * nc + dim] : 1.0;
+        for (size_t c = 0; c < dim; c++) {
+            double x = nc > dim ? net[k * nc + c] * inv : net[k * nc + c];
+            w->cart[k * dim + c] = x;
+            lo[c] = x < lo[c] ? x : lo[c];
+            hi[c] = x > hi[c] ? x : hi[c];
+        }
+    }
+    double gap2 = 0.0;
+    for (size_t c = 0; c < dim; c++) {
+        double g = fmax(0.0, fmax(lo[c], -hi[c]));
+        gap2 += g * g;
+    }
+    b->aabb = gap2;
+    /* Split across the longer direction of the net: the largest step between neighbours along
+     * u (times m) against along v (times n), a bound on |S_u| and |S_v| over the box. */
+    double lu = 0.0, lv = 0.0;
+    for (size_t i = 0; i <= m; i++)
+        for (size_t j = 0; j <= n; j++) {
+            const double *x = w->cart + (i * (n + 1) + j) * dim;
+            double du = 0.0, dv = 0.0;
+            for (size_t c = 0; c < dim; c++) {
+                if (i < m)
+                    du += fabs(x[(n + 1) * dim + c] - x[c]);
+                if (j < n)
+                    dv += fabs(x[dim + c] - x[c]);
+            }
+            lu = du > lu ? du : lu;
+            lv = dv > lv ? dv : lv;
+        }
+    lu *= (double)m;
+    lv *= (double)n;
+    b->dir = m == 0 && n == 0 ? -1 : (n == 0 || (m > 0 && lu >= lv)) ? BS_DIR_U : BS_DIR_V;
+}
+
+/* out[(i+i')(2n+1) + j+j'] += f x[i][j] y[i'][j'] over all pairs with i' >= i (f = 2 where i' > i):
+ * the self-product x y of one coordinate plane when y = x (planes (m+1) x (n+1), row-major). */
+static void self_product(const double *x, size_t m, size_t n, double *out)
+{
+    size_t n1 = n + 1, n2 = 2 * n + 1;
+    for (size_t i = 0; i <= m; i++)
+        for (size_t i2 = i; i2 <= m; i2++) {
+            double f = i2 == i ? 1.0 : 2.0;
+            const double *row = x + i2 * n1;
+            double *o = out + (i + i2) * n2;
+            for (size_t j = 0; j <= n; j++) {
+                double a = f * x[i * n1 + j];
+                for (size_t j2 = 0; j2 <= n; j2++)
+                    o[j + j2] += a * row[j2];
+            }
+        }
+}
+
+void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
+{
+    size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
+    size_t n2 = 2 * n + 1, coef = (2 * m + 1) * n2;
+    int rational = nc > dim;
+    const double *bm = w->binom, *bn = bm + m + 1, *b2m = bn + n + 1, *b2n = b2m + 2 * m + 1;
+    double amax = 0.0;
+    /* the net times C(m,i) C(n,j), coordinate-major: plane c at scaled + c pts */
+    for (size_t i = 0; i <= m; i++)
+        for (size_t j = 0; j <= n; j++) {
+            size_t k = i * (n + 1) + j;
+            double s = bm[i] * bn[j], a2 = 0.0;
+            for (size_t c = 0; c < nc; c++) {
+                double x = net[k * nc + c];
+                w->scaled[c * pts + k] = s * x;
+                a2 += c < dim ? x * x : 0.0;
+            }
+            amax = a2 > amax ? a2 : amax;
+        }
+    for (size_t k = 0; k < coef; k++)
+        w->nco[k] = w->wco[k] = 0.0;
+    /* N = sum over pairs of net points of C(m,i)C(m,i')C(n,j)C(n,j') A_ij . A_i'j'
+     * B(2m, i+i') B(2n, j+j') / (C(2m,i+i') C(2n,j+j')); W likewise from the weights. */
+    for (size_t c = 0; c < dim; c++)
+        self_product(w->scaled + c * pts, m, n, w->nco);
+    if (rational)
+        self_product(w->scaled + dim * pts, m, n, w->wco);
+    /* Rounding: each N_kl sums at most pts dim products whose magnitudes, over the binomials,
+     * add up to at most amax; each W_kl is a sum of positive terms. */
+    double err = (double)(pts * dim + 16) * DBL_EPSILON * amax;
+    double rel = (double)(pts + 16) * DBL_EPSILON;
+    double best = INFINITY, low = INFINITY;
+    size_t arg = 0;
+    for (size_t k = 0; k <= 2 * m; k++)
+        for (size_t l = 0; l < n2; l++) {
+            size_t at = k * n2 + l;
+            double scale = b2m[k] * b2n[l];
+            double num = w->nco[at] / scale, den = rational ? w->wco[at] / scale : 1.0;
+            double ratio = num / den, lowk = num - err;
+            if (ratio < best) {
+                best = ratio;
+                arg = at;
+            }
+            if (rational) /* a weight square that underflowed to 0 gives no bound */
+                lowk = den > 0.0 ? lowk / (den * (lowk > 0.0 ? 1.0 + rel : 1.0 - rel)) : -INFINITY;
+            low = lowk < low ? lowk : low;
+        }
+    b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
+    b->err = err;
+    b->rel = rel;
+    b->su = m > 0 ? (double)(arg / n2) / (double)(2 * m) : 0.5;
+    b->sv = n > 0 ? (double)(arg % n2) / (double)(2 * n) : 0.5;
+}
+
+/* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
+ * then at a/b from the right. */
+static void sub_line(double *x, size_t deg, size_t stride, double a, double b)
+{
+    /* [0, b]: after step r the point r of the left part is x[0] of that step; keep them in
+     * place by running the recurrence from the right end */
+    for (size_t r = 1; r <= deg; r++)
+        for (size_t k = deg; k >= r; k--)
+            x[k * stride] = (1.0 - b) * x[(k - 1) * stride] + b * x[k * stride];
+    double t = b > 0.0 ? a / b : 0.0; /* [a, b] is [t, 1] of [0, b] */
+    for (size_t r = 1; r <= deg; r++)
+        for (size_t k = 0; k + r <= deg; k++)
+            x[k * stride] = (1.0 - t) * x[k * stride] + t * x[(k + 1) * stride];
+}
+
+void bsi_cl_region(bsi_cl *w, const double x[4])
+{
+    size_t m = w->m, n = w->n, nc = w->nc;
+    for (size_t k = 0; k < w->np; k++)
+        w->region[k] = w->root[k];
+    for (size_t j = 0; j <= n; j++)
+        for (size_t c = 0; c < nc; c++)
+            sub_line(w->region + j * nc + c, m, (n + 1) * nc, x[0], x[1]);
+    for (size_t i = 0; i <= m; i++)
+        for (size_t c = 0; c < nc; c++)
+            sub_line(w->region + i * (n + 1) * nc + c, n, nc, x[2], x[3]);
+}
+
+int bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wratio)
+{
+    size_t K = 2 * w->m, L = 2 * w->n, n2 = L + 1;
+    int rational = w->nc > w->dim;
+    const double *b2m = w->binom + w->m + w->n + 2, *b2n = b2m + K + 1;
+    /* G_kl = N_kl - c W_kl into w->scaled (free after bsi_cl_fbound), and max W / min W */
+    double *g = w->scaled, wlo = INFINITY, whi = 0.0;
+    for (size_t k = 0; k <= K; k++)
+        for (size_t l = 0; l <= L; l++) {
+            double scale = b2m[k] * b2n[l], wk = rational ? w->wco[k * n2 + l] / scale : 1.0;
+            g[k * n2 + l] = w->nco[k * n2 + l] / scale - c * wk;
+            wlo = wk < wlo ? wk : wlo;
+            whi = wk > whi ? wk : whi;
+        }
+    *wratio = whi / wlo;
+    if (!(wlo > 0.0))
+        return 0;
+    double e = 2.0 * (b->err + c * whi * b->rel); /* rounding of each G_kl, with margin */
+    double alo = INFINITY, clo = INFINITY, bhi = 0.0;
+#define G(k, l) g[(k) * n2 + (l)]
+    for (size_t k = 0; k <= K; k++)
+        for (size_t l = 0; l <= L; l++) {
+            if (k + 2 <= K) {
+                double d = G(k + 2, l) - 2.0 * G(k + 1, l) + G(k, l) - 4.0 * e;
+                alo = d < alo ? d : alo;
+            }
+            if (l + 2 <= L) {
+                double d = G(k, l + 2) - 2.0 * G(k, l + 1) + G(k, l) - 4.0 * e;
+                clo = d < clo ? d : clo;
+            }
+            if (k < K && l < L) {
+                double d = fabs(G(k + 1, l + 1) - G(k + 1, l) - G(k, l + 1) + G(k, l)) + 4.0 * e;
+                bhi = d > bhi ? d : bhi;
+            }
+        }
+#undef G
+    /* Hessian in the box's parameters: K(K-1) alo <= G_ss, L(L-1) clo <= G_tt, |G_st| <= K L bhi */
+    if (K == 0)
+        return L == 0 || clo > 0.0;
+    if (L == 0)
+        return alo > 0.0;
+    double kk = (double)K, ll = (double)L;
+    return alo > 0.0 && clo > 0.0 && alo * clo * (kk - 1.0) * (ll - 1.0) > bhi * bhi * kk * ll;
+}

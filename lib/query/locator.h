@@ -1,0 +1,104 @@
+/*
+ * The locator (bezsurf/query.h), private to lib/query/: its layout, the bounding-volume hierarchy
+ * over sub-patches, the exact halving of nets that builds the sub-patches and drives the ray test,
+ * and the ray test against one sub-patch. Not installed.
+ */
+#ifndef BEZSURF_QUERY_LOCATOR_H
+#define BEZSURF_QUERY_LOCATOR_H
+
+#include "query/internal.h"
+
+/* Every patch is cut into BSI_LOC_SPLIT x BSI_LOC_SPLIT sub-patches by halving its net twice in
+ * each direction; each sub-patch is a leaf of the hierarchy. */
+#define BSI_LOC_SPLIT 4
+
+/* One sub-patch: its patch, the corner (u0, v0) of its domain (side 1/BSI_LOC_SPLIT), and where
+ * its net is: (deg_u+1)(deg_v+1) points of dim+1 doubles, the Cartesian point then its weight. */
+typedef struct bsi_loc_leaf {
+    uint32_t patch;
+    double u0, v0;
+    size_t net;
+} bsi_loc_leaf;
+
+/* A node of the hierarchy: an inner node (count 0) has its children at first and first + 1; a
+ * leaf node holds leaves first .. first + count - 1 of the locator's leaf array. */
+typedef struct bsi_loc_node {
+    uint32_t first, count;
+} bsi_loc_node;
+
+struct bs_locator {
+    size_t dim;          /* 0 for an empty surface */
+    size_t npatch, nleaf, nnode;
+    double diag;         /* D: diagonal of the box of every control point of the surface */
+    size_t max_ctrl;     /* the largest (deg_u+1)(deg_v+1) */
+    bs_patch **patches;  /* copies of the surface's patches */
+    bsi_loc_leaf *leaves;
+    double *nets;        /* the leaves' nets */
+    bsi_loc_node *nodes; /* nodes[0] is the root */
+    double *box;         /* node k: lower corner box[2*k*dim ...], upper corner right after */
+};
+
+/* Halve a net of (m+1) x (n+1) points of nc interleaved doubles at the parameter 1/2 along dir
+ * (BS_DIR_U: along i, the rows) into lo and hi (either may be NULL). Only midpoints (a+b)/2 are
+ * formed, so a shared side or a reversed one halves to the same bits in both patches. Inline, so
+ * that the ray test's calls with nc = 4 are compiled for that nc. */
+static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t nc, int dir,
+                                 double *lo, double *hi)
+{
+    /* along u, curve q runs over i with a step of (n+1) points; along v over j, one point */
+    size_t deg = dir == BS_DIR_U ? m : n, step = dir == BS_DIR_U ? (n + 1) * nc : nc;
+    size_t ncurve = dir == BS_DIR_U ? n + 1 : m + 1, cstep = dir == BS_DIR_U ? nc : (n + 1) * nc;
+    double b[(BS_MAX_DEGREE + 1) * (BS_MAX_DIM + 1)];
+    for (size_t q = 0; q < ncurve; q++) {
+        const double *in = net + q * cstep;
+        size_t base = q * cstep;
+        for (size_t k = 0; k <= deg; k++)
+            for (size_t c = 0; c < nc; c++)
+                b[k * nc + c] = in[k * step + c];
+        for (size_t c = 0; c < nc; c++) {
+            if (lo)
+                lo[base + c] = b[c];
+            if (hi)
+                hi[base + deg * step + c] = b[deg * nc + c];
+        }
+        for (size_t r = 1; r <= deg; r++) {
+            for (size_t k = 0; k + r <= deg; k++)
+                for (size_t c = 0; c < nc; c++)
+                    b[k * nc + c] = (b[k * nc + c] + b[(k + 1) * nc + c]) * 0.5;
+            for (size_t c = 0; c < nc; c++) {
+                if (lo)
+                    lo[base + r * step + c] = b[c];
+                if (hi)
+                    hi[base + (deg - r) * step + c] = b[(deg - r) * nc + c];
+            }
+        }
+    }
+}
+
+/* Build the hierarchy over L->nleaf leaves whose boxes are in leaf_box (2*dim doubles each, as
+ * node boxes): fills L->nodes, L->nnode, L->box and reorders L->leaves. BS_ERR_NO_MEMORY. */
+bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box);
+
+/* A ray in the frame it is tested in: origin o, unit direction d, and e1, e2 completing an
+ * orthonormal frame; t in units of |d| = 1, from tmin (exclusive when open) to tmax. */
+typedef struct bsi_ray {
+    double o[3], d[3], e1[3], e2[3];
+    double tmin, tmax;
+    int open;
+} bsi_ray;
+
+/* The best hit so far: t (unit direction), the leaf and its local (s, r). */
+typedef struct bsi_ray_hit {
+    double t, s, r;
+    size_t leaf;
+} bsi_ray_hit;
+
+/* Doubles of scratch bsi_ray_leaf needs for nets of up to max_ctrl points. */
+size_t bsi_ray_leaf_scratch(size_t max_ctrl);
+
+/* Intersect the ray with leaf k of L; when a hit earlier than hit->t lies in the ray's range,
+ * hit receives it. */
+void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
+                  bsi_ray_hit *hit);
+
+#endif

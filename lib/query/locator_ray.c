@@ -1,0 +1,199 @@
+/*
+ * Rays against a locator (bs_locator_intersect): each ray is put in its own orthonormal frame,
+ * the hierarchy is walked nearest box first, boxes beyond the best hit so far are skipped, and
+ * the sub-patches reached are tested by ray_patch.c. The answer's point and normal come from
+ * bs_patch_eval_normal on the locator's copy of the patch (limit normals at poles), and t from
+ * that point.
+ */
+#include "query/locator.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#define STACK 128 /* twice the depth of a median-split tree of up to 2^32 leaves, and more */
+
+/* The ray o + t d for t in range, in its frame; 0 (a NaN miss) if something is not finite or
+ * d = 0. *len receives |d|. */
+static int make_ray(const double o[3], const double d[3], const double *range, bsi_ray *ray,
+                    double *len)
+{
+    double scale = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    if (!bsi_all_finite(o, 3) || !bsi_all_finite(d, 3) || (range && !bsi_all_finite(range, 2)) ||
+        scale == 0.0)
+        return 0;
+    double dd[3] = {d[0] / scale, d[1] / scale, d[2] / scale}, l = sqrt(bsi_dot3(dd, dd));
+    *len = scale * l;
+    for (int c = 0; c < 3; c++) {
+        ray->o[c] = o[c];
+        ray->d[c] = dd[c] / l;
+    }
+    /* e1, e2: the branch-free orthonormal basis of Duff et al. (2017) */
+    double x = ray->d[0], y = ray->d[1], z = ray->d[2], sg = copysign(1.0, z);
+    double a = -1.0 / (sg + z), b = x * y * a;
+    ray->e1[0] = 1.0 + sg * x * x * a;
+    ray->e1[1] = sg * b;
+    ray->e1[2] = -sg * x;
+    ray->e2[0] = b;
+    ray->e2[1] = sg + y * y * a;
+    ray->e2[2] = -y;
+    ray->open = range == NULL;
+    ray->tmin = range ? range[0] * *len : 0.0;
+    ray->tmax = range ? range[1] * *len : INFINITY;
+    return 1;
+}
+
+/* Where the ray enters box (lo, hi) within [t0, t1]; 0 if it does not. */
+static int slab(const double *lo, const double *hi, const bsi_ray *ray, double t0, double t1,
+                double *tnear)
+{
+    for (int c = 0; c < 3; c++) {
+        if (ray->d[c] == 0.0) {
+            if (ray->o[c] < lo[c] || ray->o[c] > hi[c])
+                return 0;
+            continue;
+        }
+        double inv = 1.0 / ray->d[c], a = (lo[c] - ray->o[c]) * inv, b = (hi[c] - ray->o[c]) * inv;
+        if (a > b) {
+            double x = a;
+            a = b;
+            b = x;
+        }
+        /* widened by their rounding (a few ulp), so that no box is lost to it; a NaN (a
+         * subnormal direction meeting a box face) narrows nothing */
+        a -= 4 * DBL_EPSILON * fabs(a);
+        b += 4 * DBL_EPSILON * fabs(b);
+        t0 = a > t0 ? a : t0;
+        t1 = b < t1 ? b : t1;
+    }
+    *tnear = t0;
+    return t0 <= t1;
+}
+
+/* The first hit of the ray: hit->t stays +Inf on a miss. */
+static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_ray_hit *hit)
+{
+    struct {
+        uint32_t node;
+        double tnear;
+    } stack[STACK];
+    int top = 0;
+    size_t dim = L->dim;
+    double tn;
+    hit->t = INFINITY;
+    if (L->nnode == 0 || !slab(L->box, L->box + dim, ray, ray->tmin, ray->tmax, &tn))
+        return;
+    stack[top].node = 0;
+    stack[top++].tnear = tn;
+    while (top > 0) {
+        top--;
+        if (stack[top].tnear > hit->t)
+            continue;
+        const bsi_loc_node *nd = &L->nodes[stack[top].node];
+        if (nd->count > 0) {
+            for (uint32_t k = nd->first; k < nd->first + nd->count; k++)
+                bsi_ray_leaf(L, k, ray, scratch, hit);
+            continue;
+        }
+        double tc[2];
+        int in[2];
+        for (int c = 0; c < 2; c++) {
+            const double *box = L->box + 2 * dim * (nd->first + (uint32_t)c);
+            in[c] = slab(box, box + dim, ray, ray->tmin, fmin(ray->tmax, hit->t), &tc[c]);
+        }
+        int near = in[1] && (!in[0] || tc[1] < tc[0]);
+        for (int q = 0; q < 2; q++) { /* the farther child first, so the nearer is popped next */
+            int c = q == 0 ? !near : near;
+            if (in[c] && top < STACK) {
+                stack[top].node = nd->first + (uint32_t)c;
+                stack[top++].tnear = tc[c];
+            }
+        }
+    }
+}
+
+/* Outputs of ray k: the hit, or a miss with t = tmiss (+Inf, or NaN for an invalid ray). */
+static void put(const bs_locator *L, size_t k, const bsi_ray *ray, double len,
+                const bsi_ray_hit *hit, double tmiss, uint32_t *patch, const bs_view *uv,
+                const bs_view *t, const bs_view *nrm)
+{
+    double u = NAN, v = NAN, tt = tmiss, nv[3] = {NAN, NAN, NAN};
+    uint32_t id = UINT32_MAX;
+    if (hit && isfinite(hit->t)) {
+        const bsi_loc_leaf *leaf = &L->leaves[hit->leaf];
+        const double side = 1.0 / BSI_LOC_SPLIT;
+        double pos[3];
+        id = leaf->patch;
+        u = leaf->u0 + hit->s * side;
+        v = leaf->v0 + hit->r * side;
+        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+        bs_view pv[3] = {{&pos[0], 1, 0}, {&pos[1], 1, 0}, {&pos[2], 1, 0}};
+        bs_view nn[3] = {{&nv[0], 1, 0}, {&nv[1], 1, 0}, {&nv[2], 1, 0}};
+        (void)bs_patch_eval_normal(L->patches[id], 1, &cu, &cv, pv, nn, NULL);
+        double a[3] = {pos[0] - ray->o[0], pos[1] - ray->o[1], pos[2] - ray->o[2]};
+        /* t of the point reported, kept within the range the hit was found in */
+        tt = fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len;
+    }
+    if (patch)
+        patch[k] = id;
+    if (uv) {
+        *bsi_at(&uv[0], k) = u;
+        *bsi_at(&uv[1], k) = v;
+    }
+    if (t)
+        *bsi_at(t, k) = tt;
+    for (int c = 0; c < 3 && nrm; c++)
+        *bsi_at(&nrm[c], k) = nv[c];
+}
+
+static bs_status check_cviews(const bs_cview *v, size_t k, size_t n)
+{
+    bs_status st = BS_OK;
+    for (size_t c = 0; c < k && st == BS_OK; c++)
+        st = bsi_check_cview(&v[c], n);
+    return st;
+}
+
+bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *org,
+                               const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
+                               const bs_view *uv, const bs_view *t, const bs_view *nrm)
+{
+    if (L == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (L->dim != 3 && L->dim != 0)
+        return BS_ERR_DIMENSION;
+    if (n == 0)
+        return BS_OK;
+    if (org == NULL || dir == NULL)
+        return BS_ERR_INVALID_ARG;
+    bs_status st;
+    if ((st = check_cviews(org, 3, n)) != BS_OK || (st = check_cviews(dir, 3, n)) != BS_OK ||
+        (trange && (st = check_cviews(trange, 2, n)) != BS_OK) ||
+        (uv && (st = bsi_check_views(uv, 2, n)) != BS_OK) ||
+        (t && (st = bsi_check_views(t, 1, n)) != BS_OK) ||
+        (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
+        return st;
+    double *scratch = NULL;
+    if (L->nleaf > 0 && (scratch = malloc(bsi_ray_leaf_scratch(L->max_ctrl) * sizeof(double))) == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t k = 0; k < n; k++) {
+        double o[3], d[3], range[2], len = 1.0;
+        for (int c = 0; c < 3; c++) {
+            o[c] = bsi_cget(&org[c], k);
+            d[c] = bsi_cget(&dir[c], k);
+        }
+        for (int c = 0; c < 2 && trange; c++)
+            range[c] = bsi_cget(&trange[c], k);
+        bsi_ray ray;
+        if (!make_ray(o, d, trange ? range : NULL, &ray, &len)) {
+            put(L, k, NULL, len, NULL, NAN, patch, uv, t, nrm);
+            continue;
+        }
+        bsi_ray_hit hit = {INFINITY, 0.0, 0.0, 0};
+        if (L->nleaf > 0)
+            trace(L, &ray, scratch, &hit);
+        put(L, k, &ray, len, &hit, INFINITY, patch, uv, t, nrm);
+    }
+    free(scratch);
+    return BS_OK;
+}
