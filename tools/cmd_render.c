@@ -3,6 +3,7 @@
 #include "raster.h"
 #include "curvature_shade.h"
 #include "legend.h"
+#include "raycast.h"
 #include "cmds.h"
 
 #include <math.h>
@@ -33,6 +34,8 @@ static const char usage[] =
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
     "                        the four sub-nets are drawn)\n"
     "      --ss N            supersampling per axis, 1..4 (default 3)\n"
+    "      --rays            cast one ray per sample at the patches (through a locator) instead of\n"
+    "                        drawing a tessellation: the same camera, lights and colours\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
@@ -45,6 +48,7 @@ typedef struct render_opts {
     int up_y, up_given, nets, split;
     size_t patch;  /* (size_t)-1: all */
     int curvature; /* 0 none, 1 mean, 2 Gaussian */
+    int rays;      /* ray-cast instead of tessellated */
     double unit;   /* the factor unit_scale() applied to the model */
 } render_opts;
 
@@ -57,11 +61,13 @@ static int parse_args(int argc, char **argv, render_opts *o)
         if (r != CLI_NOT_COMMON)
             return r;
         const char *a = argv[i];
-        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0) {
+        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0 || strcmp(a, "--rays") == 0) {
             if (a[2] == 'n')
                 o->nets = 1;
-            else
+            else if (a[2] == 's')
                 o->split = 1;
+            else
+                o->rays = 1;
             continue;
         }
         if (i + 1 >= argc)
@@ -248,6 +254,18 @@ static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_
     return rc;
 }
 
+/* The surface into r (framed already) by one ray per sample; *hits receives the samples that hit.
+ * CLI_OK or the exit code after a message. */
+static int draw_rays(const render_opts *o, const bs_surface *s, raster *r, size_t *hits)
+{
+    bs_locator *L = NULL;
+    bs_status st = bs_locator_create(s, &L);
+    if (st == BS_OK)
+        st = raycast_draw(r, L, o->color, hits);
+    bs_locator_destroy(L);
+    return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+}
+
 static int render(const render_opts *o, const bs_surface *s)
 {
     unsigned char *rgb = malloc(o->w * o->h * 3);
@@ -260,11 +278,11 @@ static int render(const render_opts *o, const bs_surface *s)
              : framed == -2 ? cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)")
                             : cli_fail("render", CLI_INTERNAL, "out of memory");
     curvature_range cr;
-    size_t nt = 0;
+    size_t nt = 0, hits = 0;
     if (rc == CLI_OK) {
         if (o->curvature)
             raster_reserve_right(&r, legend_strip(o->w, o->h));
-        rc = draw_mesh(o, s, &r, &nt, &cr);
+        rc = o->rays ? draw_rays(o, s, &r, &hits) : draw_mesh(o, s, &r, &nt, &cr);
     }
     if (rc == CLI_OK) {
         if (o->nets)
@@ -276,7 +294,10 @@ static int render(const render_opts *o, const bs_surface *s)
             rc = cli_fail_write("render", o->output);
     }
     if (rc == CLI_OK) {
-        printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+        if (o->rays)
+            printf("%s: %zux%zu, %zu rays, %zu hits\n", o->output, o->w, o->h, r.W * r.H, hits);
+        else
+            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
         if (o->curvature)
             printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
                    o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
@@ -341,7 +362,7 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
-                     (size_t)-1, 0, 1.0};
+                     (size_t)-1, 0, 0, 1.0};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;
@@ -352,6 +373,8 @@ int cmd_render(int argc, char **argv)
         cli_default_output(&o.in, ".png", outbuf, sizeof outbuf);
         o.output = outbuf;
     }
+    if (o.rays && o.curvature)
+        return cli_usage_error("render", "--rays and --curvature do not go together", NULL);
     rc = cli_check_output("render", o.output); /* before the work, not after it */
     if (rc != CLI_OK)
         return rc;

@@ -9,7 +9,14 @@
  *         blue     B > 1.8 R and B > G + 20
  *         neutral  max - min <= 12 and min >= 40 (greys, not too dark)
  *         dark     max < 60 (text)
- *       as "red N blue N neutral N dark N total N"; exit 1 if the rectangle is not inside. */
+ *       as "red N blue N neutral N dark N total N"; exit 1 if the rectangle is not inside.
+ *   png_check --compare FILE OTHER TOL
+ *       two pictures of the same size: print "differ N silhouette N total N", N the pixels where
+ *       a channel differs by more than TOL, and those that are surface in one picture and
+ *       background in the other, a surface pixel being one whose green and blue differ by at
+ *       most 1 (true of a surface drawn in the base colour 1,0,0 without supersampling: lights
+ *       scale the 0 of green and blue alike and the highlight adds the same to both, while the
+ *       background's blue exceeds its green by at least 7). */
 #include "png_reader.h"
 
 #include <stdio.h>
@@ -52,14 +59,42 @@ static int count_colors(const unsigned char *rgb, size_t w, size_t h, char **arg
     return 0;
 }
 
+static int is_surface(const unsigned char *px) { return px[1] - px[2] <= 1 && px[2] - px[1] <= 1; }
+
+static int compare(const unsigned char *rgb, size_t w, size_t h, char **argv)
+{
+    size_t w2 = 0, h2 = 0, differ = 0, silhouette = 0;
+    unsigned char *other = NULL;
+    const char *why = png_read_file(argv[2], &w2, &h2, &other);
+    if (why != NULL || w2 != w || h2 != h) {
+        fprintf(stderr, "%s: %s\n", argv[2], why ? why : "not the same size");
+        free(other);
+        return 1;
+    }
+    int tol = atoi(argv[3]);
+    for (size_t i = 0; i < w * h; i++) {
+        const unsigned char *a = rgb + 3 * i, *b = other + 3 * i;
+        int far = 0;
+        for (int k = 0; k < 3; k++)
+            far |= a[k] - b[k] > tol || b[k] - a[k] > tol;
+        differ += (size_t)far;
+        silhouette += (size_t)(is_surface(a) != is_surface(b));
+    }
+    printf("differ %zu silhouette %zu total %zu\n", differ, silhouette, w * h);
+    free(other);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int colors = argc > 1 && strcmp(argv[1], "--colors") == 0;
-    if (argc != (colors ? 7 : 4)) {
-        fprintf(stderr, "usage: png_check FILE W H | png_check --colors FILE X0 Y0 X1 Y1\n");
+    int cmp = argc > 1 && strcmp(argv[1], "--compare") == 0;
+    if (argc != (colors ? 7 : cmp ? 5 : 4)) {
+        fprintf(stderr, "usage: png_check FILE W H | png_check --colors FILE X0 Y0 X1 Y1 |\n"
+                        "       png_check --compare FILE OTHER TOL\n");
         return 2;
     }
-    char **args = argv + colors; /* args[1] is the file */
+    char **args = argv + (colors || cmp); /* args[1] is the file */
     size_t w = 0, h = 0;
     unsigned char *rgb = NULL;
     const char *why = png_read_file(args[1], &w, &h, &rgb);
@@ -67,7 +102,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s: %s\n", args[1], why);
         return 1;
     }
-    int rc = colors ? count_colors(rgb, w, h, args) : check_picture(rgb, w, h, args);
+    int rc = colors ? count_colors(rgb, w, h, args) : cmp ? compare(rgb, w, h, args) : check_picture(rgb, w, h, args);
     free(rgb);
     return rc;
 }
