@@ -13,6 +13,7 @@ static const cli_command commands[] = {
     {"tessellate", "triangle mesh of the surface to an OBJ, PLY or STL file", cmd_tessellate},
     {"render",     "shaded picture of the surface to a PNG file", cmd_render},
     {"convert",    "the surface to another file format (.bpt, OBJ)", cmd_convert},
+    {"closest",    "the point of the surface closest to a given point", cmd_closest},
 };
 
 static void usage(FILE *f)

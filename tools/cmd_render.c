@@ -1,6 +1,9 @@
 /* `bezsurf render`: shaded picture of a surface as a PNG, with no dependency. */
 #include "png.h"
 #include "raster.h"
+#include "curvature_shade.h"
+#include "legend.h"
+#include "raycast.h"
 #include "cmds.h"
 
 #include <math.h>
@@ -22,6 +25,12 @@ static const char usage[] =
     "  -m, --method M        tessellation: per-patch (default) or subdivide\n"
     "      --wire            draw the triangles' edges over the surface\n"
     "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
+    "      --curvature mean|gauss\n"
+    "                        colour by the mean or Gaussian curvature at the mesh vertices: blue\n"
+    "                        negative, light grey 0, red positive, over -R..R, R the larger magnitude\n"
+    "                        of the 5th and 95th percentiles by area (0 below 1e-7 of the model's\n"
+    "                        scale); dark grey where undefined; a legend on the right (pictures of\n"
+    "                        at least 240x100)\n"
     "      --nets            draw the patches' control nets over the surface\n"
     "      --patch ID        render only patch ID\n"
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
@@ -29,6 +38,8 @@ static const char usage[] =
     "      --ss N            supersampling per axis, 1..4 (default 3)\n"
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
     "                        (default 4000000, about 0.5 GB of memory; 0: no limit)\n"
+    "      --rays            cast one ray per sample at the patches (through a locator) instead of\n"
+    "                        drawing a tessellation: the same camera, lights and colours\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
@@ -39,7 +50,10 @@ typedef struct render_opts {
     size_t w, h, ss, budget;
     double azimuth, elevation, rel, color[3];
     int up_y, up_given, nets, split, wire, method;
-    size_t patch; /* (size_t)-1: all */
+    size_t patch;  /* (size_t)-1: all */
+    int curvature; /* 0 none, 1 mean, 2 Gaussian */
+    int rays;      /* ray-cast instead of tessellated */
+    double unit;   /* the factor unit_scale() applied to the model */
 } render_opts;
 
 static int parse_args(int argc, char **argv, render_opts *o)
@@ -51,11 +65,14 @@ static int parse_args(int argc, char **argv, render_opts *o)
         if (r != CLI_NOT_COMMON)
             return r;
         const char *a = argv[i];
-        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0 || strcmp(a, "--wire") == 0) {
+        if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0 || strcmp(a, "--rays") == 0 ||
+            strcmp(a, "--wire") == 0) {
             if (a[2] == 'n')
                 o->nets = 1;
             else if (a[2] == 's')
                 o->split = 1;
+            else if (a[2] == 'r')
+                o->rays = 1;
             else
                 o->wire = 1;
             continue;
@@ -104,6 +121,10 @@ static int parse_args(int argc, char **argv, render_opts *o)
                     return cli_usage_error("render", "bad colour", val);
                 p = comma ? comma + 1 : p;
             }
+        } else if (strcmp(a, "--curvature") == 0) {
+            if (strcmp(val, "mean") != 0 && strcmp(val, "gauss") != 0)
+                return cli_usage_error("render", "bad curvature (mean or gauss)", val);
+            o->curvature = val[0] == 'm' ? 1 : 2;
         } else if (strcmp(a, "--patch") == 0) {
             if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
                 return cli_usage_error("render", "bad patch id", val);
@@ -171,6 +192,49 @@ static void draw_nets(raster *r, const bs_surface *s)
     }
 }
 
+/* Vertex colours by the curvature --curvature names; the summary of the values in *cr, in the
+ * model's units. The colours are worked out on the surface drawn, the model scaled by o->unit to
+ * a size near 1, where every curvature is a finite number; only the reported values are brought
+ * back (curvatures scale by 1/unit, Gaussian ones by 1/unit^2), and may overflow there.
+ * NULL after an error, with its exit code in *rc. */
+static double *curvature_vertex_colors(const render_opts *o, const bs_surface *s, const bs_mesh *m,
+                                       const double *pos, const uint32_t *tri, curvature_range *cr, int *rc)
+{
+    /* Below 1e-7 of the model's scale (1/D, 1/D^2: D the diagonal of its box) a curvature is
+     * rounding: a cylinder's Gaussian curvature would be coloured by noise. */
+    double lo[3], hi[3];
+    surface_box(s, lo, hi);
+    double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    double noise = o->curvature == 2 ? 1e-7 / (diag * diag) : 1e-7 / diag;
+    size_t nv = bs_mesh_vertex_count(m);
+    double *val = malloc(nv * sizeof(double) + 1), *area = malloc(nv * sizeof(double) + 1);
+    double *rgb = malloc(3 * nv * sizeof(double) + 1);
+    bs_status st = val && area && rgb ? curvature_at_vertices(s, m, o->curvature == 2, val) : BS_ERR_NO_MEMORY;
+    if (st == BS_OK) {
+        vertex_areas(pos, nv, tri, bs_mesh_triangle_count(m), area);
+        if (curvature_summary(val, area, nv, cr) != 0)
+            st = BS_ERR_NO_MEMORY;
+        else if (!(cr->range >= noise)) /* NaN included: nothing to colour by */
+            cr->range = 0.0;
+    }
+    if (st == BS_OK) {
+        curvature_colors(val, nv, cr->range, rgb);
+        double back = o->curvature == 2 ? o->unit * o->unit : o->unit;
+        cr->range *= back;
+        cr->min *= back;
+        cr->max *= back;
+    }
+    free(val);
+    free(area);
+    if (st != BS_OK) {
+        free(rgb);
+        *rc = cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+        return NULL;
+    }
+    return rgb;
+}
+
 /* Every triangle's edges, thin and dark (an edge shared by two triangles is drawn twice, alike). */
 static void draw_wire(raster *r, const double *pos, const uint32_t *tri, size_t nt)
 {
@@ -181,7 +245,9 @@ static void draw_wire(raster *r, const double *pos, const uint32_t *tri, size_t 
                         0.6, ink);
 }
 
-static int render(const render_opts *o, const bs_surface *s)
+/* The tessellated surface into r (framed already), coloured by o->color or by curvature (then *cr
+ * holds the range); *ntri receives the triangle count. CLI_OK or the exit code after a message. */
+static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_t *ntri, curvature_range *cr)
 {
     bs_tess_options to;
     bs_tess_options_init(&to);
@@ -193,45 +259,82 @@ static int render(const render_opts *o, const bs_surface *s)
     if (rc != CLI_OK)
         return rc;
     size_t nv = bs_mesh_vertex_count(m), nt = bs_mesh_triangle_count(m);
-    double *pos = malloc(3 * nv * sizeof(double) + 1), *nrm = malloc(3 * nv * sizeof(double) + 1);
+    double *pos = malloc(3 * nv * sizeof(double) + 1), *nrm = malloc(3 * nv * sizeof(double) + 1), *vcol = NULL;
     uint32_t *tri = malloc(3 * nt * sizeof(uint32_t) + 1);
-    unsigned char *rgb = malloc(o->w * o->h * 3);
-    rc = CLI_INTERNAL;
-    raster r;
-    memset(&r, 0, sizeof r);
     ptrdiff_t s3 = 3 * sizeof(double);
     bs_view pv[3] = {{pos, nv, s3}, {pos + 1, nv, s3}, {pos + 2, nv, s3}};
     bs_view nvw[3] = {{nrm, nv, s3}, {nrm + 1, nv, s3}, {nrm + 2, nv, s3}};
-    double lo[3], hi[3];
-    surface_box(s, lo, hi);
-    int framed = -1;
-    if (pos && nrm && tri && rgb && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
-        bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK)
-        framed = raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi);
-    if (framed == 0) {
-        raster_mesh(&r, pos, nrm, tri, nt, o->color);
-        if (o->wire)
-            draw_wire(&r, pos, tri, nt);
-        if (o->nets)
-            draw_nets(&r, s);
-        raster_finish(&r, rgb);
-        if (png_write_rgb(o->output, rgb, o->w, o->h) == 0) {
-            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
-            rc = cli_finish("render");
-        } else {
-            rc = cli_fail_write("render", o->output);
-        }
-    } else if (framed == -2) {
-        rc = cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)");
-    } else {
+    rc = CLI_INTERNAL;
+    if (!(pos && nrm && tri && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
+          bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK))
         cli_fail("render", CLI_INTERNAL, "out of memory");
+    else if (!o->curvature || (vcol = curvature_vertex_colors(o, s, m, pos, tri, cr, &rc)) != NULL)
+        rc = CLI_OK;
+    if (rc == CLI_OK) {
+        raster_mesh(r, pos, nrm, vcol, tri, nt, o->color);
+        if (o->wire)
+            draw_wire(r, pos, tri, nt);
+        *ntri = nt;
     }
-    raster_free(&r);
+    free(vcol);
     free(pos);
     free(nrm);
     free(tri);
-    free(rgb);
     bs_mesh_destroy(m);
+    return rc;
+}
+
+/* The surface into r (framed already) by one ray per sample; *hits receives the samples that hit.
+ * CLI_OK or the exit code after a message. */
+static int draw_rays(const render_opts *o, const bs_surface *s, raster *r, size_t *hits)
+{
+    bs_locator *L = NULL;
+    bs_status st = bs_locator_create(s, &L);
+    if (st == BS_OK)
+        st = raycast_draw(r, L, o->color, hits);
+    bs_locator_destroy(L);
+    return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+}
+
+static int render(const render_opts *o, const bs_surface *s)
+{
+    unsigned char *rgb = malloc(o->w * o->h * 3);
+    raster r;
+    memset(&r, 0, sizeof r);
+    double lo[3], hi[3];
+    surface_box(s, lo, hi);
+    int framed = rgb ? raster_init(&r, o->w, o->h, o->ss, o->azimuth, o->elevation, o->up_y, lo, hi) : -1;
+    int rc = framed == 0    ? CLI_OK
+             : framed == -2 ? cli_fail("render", CLI_INPUT, "the surface cannot be framed (its size is not a finite number)")
+                            : cli_fail("render", CLI_INTERNAL, "out of memory");
+    curvature_range cr;
+    size_t nt = 0, hits = 0;
+    if (rc == CLI_OK) {
+        if (o->curvature)
+            raster_reserve_right(&r, legend_strip(o->w, o->h));
+        rc = o->rays ? draw_rays(o, s, &r, &hits) : draw_mesh(o, s, &r, &nt, &cr);
+    }
+    if (rc == CLI_OK) {
+        if (o->nets)
+            draw_nets(&r, s);
+        raster_finish(&r, rgb);
+        if (o->curvature)
+            legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
+        if (png_write_rgb(o->output, rgb, o->w, o->h) != 0)
+            rc = cli_fail_write("render", o->output);
+    }
+    if (rc == CLI_OK) {
+        if (o->rays)
+            printf("%s: %zux%zu, %zu rays, %zu hits\n", o->output, o->w, o->h, r.W * r.H, hits);
+        else
+            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+        if (o->curvature)
+            printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
+                   o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
+        rc = cli_finish("render");
+    }
+    raster_free(&r);
+    free(rgb);
     return rc;
 }
 
@@ -257,11 +360,12 @@ static double unit_scale(const render_opts *o, const bs_surface *s)
 }
 
 /* The patches to draw: all or --patch ID, scaled by unit_scale(), each split in four with --split. */
-static int select_patches(const render_opts *o, const bs_surface *s, bs_surface **out)
+static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 {
     if (o->patch != (size_t)-1 && o->patch >= bs_surface_count(s))
         return cli_fail("render", CLI_INPUT, "no patch %zu (the surface has %zu)", o->patch, bs_surface_count(s));
     double k = unit_scale(o, s);
+    o->unit = k;
     const double affine[12] = {k, 0, 0, 0, 0, k, 0, 0, 0, 0, k, 0};
     bs_status st = bs_surface_create(out);
     for (size_t i = 0; st == BS_OK && i < bs_surface_count(s); i++) {
@@ -287,8 +391,8 @@ static int select_patches(const render_opts *o, const bs_surface *s, bs_surface 
 
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4, {0.72, 0.76, 0.86}, 0, 0, 0, 0,
-                     0, BS_TESS_PER_PATCH, (size_t)-1};
+    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
+                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 1.0};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;
@@ -299,6 +403,8 @@ int cmd_render(int argc, char **argv)
         cli_default_output(&o.in, ".png", outbuf, sizeof outbuf);
         o.output = outbuf;
     }
+    if (o.rays && o.curvature)
+        return cli_usage_error("render", "--rays and --curvature do not go together", NULL);
     rc = cli_check_output("render", o.output); /* before the work, not after it */
     if (rc != CLI_OK)
         return rc;

@@ -1,5 +1,6 @@
-/* PNG writer: signature, IHDR, one IDAT holding a zlib stream of stored deflate blocks, IEND. */
+/* PNG writer: signature, IHDR, one IDAT holding the zlib stream of the filtered rows, IEND. */
 #include "png.h"
+#include "deflate.h"
 #include "outfile.h"
 
 #include <errno.h>
@@ -47,6 +48,62 @@ static int chunk(FILE *f, const char *type, const unsigned char *data, size_t n)
     return fwrite(head, 1, 8, f) == 8 && (n == 0 || fwrite(data, 1, n, f) == n) && fwrite(tail, 1, 4, f) == 4;
 }
 
+/* Paeth predictor (PNG specification, filter type 4). */
+static int paeth(int a, int b, int c)
+{
+    int p = a + b - c, pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+}
+
+/* Row x filtered by type t against the row above (NULL for the first row) into out. */
+static void filter_row(int t, const unsigned char *x, const unsigned char *up, size_t n, unsigned char *out)
+{
+    for (size_t i = 0; i < n; i++) {
+        int a = i >= 3 ? x[i - 3] : 0, b = up ? up[i] : 0, c = up && i >= 3 ? up[i - 3] : 0;
+        int pred = t == 1 ? a : t == 2 ? b : t == 3 ? (a + b) / 2 : t == 4 ? paeth(a, b, c) : 0;
+        out[i] = (unsigned char)(x[i] - pred);
+    }
+}
+
+/* Each row gets the filter whose output has the smallest sum of magnitudes (bytes read as signed),
+ * the heuristic of the PNG specification: small residuals make long matches and short codes. */
+static void filter_image(const unsigned char *rgb, size_t w, size_t h, unsigned char *raw, unsigned char *trial)
+{
+    size_t n = 3 * w, row = n + 1;
+    for (size_t y = 0; y < h; y++) {
+        const unsigned char *x = rgb + y * n, *up = y ? rgb + (y - 1) * n : NULL;
+        unsigned long best_sum = (unsigned long)-1;
+        for (int t = 0; t < 5; t++) {
+            filter_row(t, x, up, n, trial);
+            unsigned long sum = 0;
+            for (size_t i = 0; i < n; i++)
+                sum += trial[i] < 128 ? trial[i] : 256u - trial[i];
+            if (sum < best_sum) {
+                best_sum = sum;
+                raw[y * row] = (unsigned char)t;
+                memcpy(raw + y * row + 1, trial, n);
+            }
+        }
+    }
+}
+
+/* The zlib stream (RFC 1950) of n bytes: header, deflate data, Adler-32. */
+static unsigned char *zlib_stream(const unsigned char *raw, size_t n, size_t *z_n)
+{
+    size_t d_n = 0;
+    unsigned char *d = deflate_compress(raw, n, &d_n);
+    unsigned char *z = d && d_n <= SIZE_MAX - 6 ? malloc(d_n + 6) : NULL;
+    if (z != NULL) {
+        z[0] = 0x78; /* deflate, 32K window */
+        z[1] = 0x01; /* no preset dictionary; (0x78 * 256 + 0x01) % 31 == 0 */
+        memcpy(z + 2, d, d_n);
+        be32(z + 2 + d_n, png_adler32(1, raw, n));
+        *z_n = d_n + 6;
+    }
+    free(d);
+    return z;
+}
+
 int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h)
 {
     errno = EINVAL;
@@ -55,37 +112,19 @@ int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h
     size_t row = 3 * w + 1;
     if (h > (SIZE_MAX / 2) / row)
         return -1;
-    size_t raw_n = row * h;                      /* filter byte + pixels per row */
-    size_t blocks = (raw_n + 65534) / 65535;
-    size_t z_n = 2 + raw_n + 5 * blocks + 4;     /* zlib header, stored blocks, Adler-32 */
-    if (z_n > 0x7fffffffu)
-        return -1;
-    unsigned char *raw = malloc(raw_n), *z = malloc(z_n);
-    if (raw == NULL || z == NULL) {
-        free(raw);
+    size_t raw_n = row * h, k = 0; /* filter byte + pixels per row */
+    unsigned char *raw = malloc(raw_n), *trial = malloc(row), *z = NULL;
+    if (raw != NULL && trial != NULL) {
+        filter_image(rgb, w, h, raw, trial);
+        z = zlib_stream(raw, raw_n, &k);
+    }
+    free(trial);
+    free(raw);
+    if (z == NULL || k > 0x7fffffffu) { /* a chunk holds less than 2^31 bytes */
+        errno = z == NULL ? ENOMEM : EINVAL;
         free(z);
-        errno = ENOMEM;
         return -1;
     }
-    for (size_t y = 0; y < h; y++) {
-        raw[y * row] = 0; /* filter: none */
-        memcpy(raw + y * row + 1, rgb + y * 3 * w, 3 * w);
-    }
-    size_t k = 0;
-    z[k++] = 0x78; /* deflate, 32K window */
-    z[k++] = 0x01; /* no preset dictionary; (0x78 * 256 + 0x01) % 31 == 0 */
-    for (size_t off = 0; off < raw_n; off += 65535) {
-        size_t len = raw_n - off < 65535 ? raw_n - off : 65535;
-        z[k++] = off + len == raw_n ? 1 : 0; /* BFINAL, BTYPE 00 (stored) */
-        z[k++] = (unsigned char)(len & 0xff);
-        z[k++] = (unsigned char)(len >> 8);
-        z[k++] = (unsigned char)(~len & 0xff);
-        z[k++] = (unsigned char)((~len >> 8) & 0xff);
-        memcpy(z + k, raw + off, len);
-        k += len;
-    }
-    be32(z + k, png_adler32(1, raw, raw_n));
-    k += 4;
     unsigned char ihdr[13];
     be32(ihdr, (uint32_t)w);
     be32(ihdr + 4, (uint32_t)h);
@@ -104,7 +143,6 @@ int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h
         rc = out_close(&o, ok);
     }
     int e = errno;
-    free(raw);
     free(z);
     errno = e;
     return rc;

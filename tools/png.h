@@ -1,5 +1,5 @@
-/* A dependency-free PNG writer: 8-bit RGB, filter 0, zlib stream of stored (uncompressed) deflate
- * blocks, CRC-32 per chunk and Adler-32 over the image data. */
+/* A dependency-free PNG writer: 8-bit RGB, a filter chosen per row, the rows compressed by
+ * tools/deflate.c into one zlib stream, CRC-32 per chunk and Adler-32 over the filtered rows. */
 #ifndef BEZSURF_TOOLS_PNG_H
 #define BEZSURF_TOOLS_PNG_H
 

@@ -29,6 +29,18 @@ static void to_zup(const raster *r, const double *p, double *q)
     }
 }
 
+/* The inverse of to_zup. */
+static void from_zup(const raster *r, const double *q, double *p)
+{
+    if (r->up_y) {
+        p[0] = q[0];
+        p[1] = q[2];
+        p[2] = -q[1];
+    } else {
+        memcpy(p, q, 3 * sizeof(double));
+    }
+}
+
 /* Screen position (internal pixels, y down) and depth of a model point. */
 static void project(const raster *r, const double *p, double *sx, double *sy, double *sz)
 {
@@ -104,6 +116,10 @@ int raster_init(raster *r, size_t w, size_t h, size_t ss, double azimuth, double
     double sx = xmax > xmin ? 0.9 * (double)r->W / (xmax - xmin) : 1.0;
     double sy = ymax > ymin ? 0.9 * (double)r->H / (ymax - ymin) : 1.0;
     r->scale = fmin(sx, sy);
+    r->box_w = xmax - xmin;
+    r->reach = sqrt((hh[0] - l[0]) * (hh[0] - l[0]) + (hh[1] - l[1]) * (hh[1] - l[1]) + (hh[2] - l[2]) * (hh[2] - l[2]));
+    if (!(r->reach > 0.0))
+        r->reach = 1.0;
     r->ox = 0.5 * (double)r->W - r->scale * 0.5 * (xmin + xmax);
     r->oy = 0.5 * (double)r->H + r->scale * 0.5 * (ymin + ymax);
     /* A box too small (the scale overflows) or too large (its size overflows) cannot be framed. */
@@ -137,8 +153,29 @@ static void shade(const raster *r, const double *n_model, const double *base, fl
     }
 }
 
-void raster_mesh(raster *r, const double *pos, const double *nrm, const uint32_t *tri, size_t ntri,
-                 const double rgb[3])
+void raster_reserve_right(raster *r, size_t px)
+{
+    double left = (double)r->W - (double)(px * r->ss);
+    if (!(left > 0.0))
+        return;
+    double cx = (0.5 * (double)r->W - r->ox) / r->scale, cy = (r->oy - 0.5 * (double)r->H) / r->scale;
+    if (r->box_w > 0.0) /* as raster_init: 90% of the room in the tighter direction */
+        r->scale = fmin(r->scale, 0.9 * left / r->box_w);
+    r->ox = 0.5 * left - r->scale * cx;
+    r->oy = 0.5 * (double)r->H + r->scale * cy;
+}
+
+void raster_put(raster *r, size_t x, size_t y, double depth, const double nrm[3], const double rgb[3])
+{
+    float *dz = r->depth + y * r->W + x;
+    if (!(depth > *dz))
+        return;
+    *dz = (float)depth;
+    shade(r, nrm, rgb, r->color + 3 * (y * r->W + x));
+}
+
+void raster_mesh(raster *r, const double *pos, const double *nrm, const double *vcol, const uint32_t *tri,
+                 size_t ntri, const double rgb[3])
 {
     for (size_t t = 0; t < ntri; t++) {
         double sx[3], sy[3], sz[3];
@@ -167,17 +204,31 @@ void raster_mesh(raster *r, const double *pos, const double *nrm, const uint32_t
                 if (w0 < 0 || w1 < 0 || w2 < 0)
                     continue;
                 double z = w0 * sz[0] + w1 * sz[1] + w2 * sz[2];
-                float *dz = r->depth + y * r->W + x;
-                if (z <= *dz)
+                if (!(z > r->depth[y * r->W + x]))
                     continue;
-                *dz = (float)z;
-                double n[3];
-                for (int k = 0; k < 3; k++)
+                double n[3], c[3];
+                for (int k = 0; k < 3; k++) {
                     n[k] = w0 * nrm[3 * (size_t)v[0] + (size_t)k] + w1 * nrm[3 * (size_t)v[1] + (size_t)k] +
                            w2 * nrm[3 * (size_t)v[2] + (size_t)k];
-                shade(r, n, rgb, r->color + 3 * (y * r->W + x));
+                    c[k] = vcol ? w0 * vcol[3 * (size_t)v[0] + (size_t)k] + w1 * vcol[3 * (size_t)v[1] + (size_t)k] +
+                                      w2 * vcol[3 * (size_t)v[2] + (size_t)k]
+                                : rgb[k];
+                }
+                raster_put(r, x, y, z, n, c);
             }
     }
+}
+
+void raster_ray(const raster *r, size_t x, size_t y, double org[3], double dir[3])
+{
+    double cx = ((double)x + 0.5 - r->ox) / r->scale, cy = (r->oy - ((double)y + 0.5)) / r->scale;
+    double q[3], d[3];
+    for (int k = 0; k < 3; k++) {
+        q[k] = r->center[k] + cx * r->right[k] + cy * r->up[k] + r->reach * r->back[k];
+        d[k] = -r->back[k];
+    }
+    from_zup(r, q, org);
+    from_zup(r, d, dir);
 }
 
 /* Narrow [t0, t1] to the parameters where a + t (b - a) lies in [lo, hi]; 0 if none does. */
@@ -234,6 +285,11 @@ void raster_line(raster *r, const double a[3], const double b[3], double width, 
     }
 }
 
+unsigned char raster_to_byte(double c)
+{
+    return (unsigned char)lround(255.0 * pow(fmin(1.0, fmax(0.0, c)), 1.0 / 1.1));
+}
+
 void raster_finish(const raster *r, unsigned char *rgb)
 {
     double norm = 1.0 / (double)(r->ss * r->ss);
@@ -244,8 +300,7 @@ void raster_finish(const raster *r, unsigned char *rgb)
                 for (size_t j = 0; j < r->ss; j++)
                     for (size_t i = 0; i < r->ss; i++)
                         acc += r->color[3 * ((y * r->ss + j) * r->W + x * r->ss + i) + (size_t)k];
-                double c = pow(fmin(1.0, fmax(0.0, acc * norm)), 1.0 / 1.1);
-                rgb[3 * (y * r->w + x) + (size_t)k] = (unsigned char)lround(255.0 * c);
+                rgb[3 * (y * r->w + x) + (size_t)k] = raster_to_byte(acc * norm);
             }
 }
 

@@ -55,7 +55,7 @@ check "grep -q 'cannot write $work/no/such/x.png: No such file or directory' '$w
 for out in old.obj old.ply old.stl old.png; do
     echo "previous content" >"$work/$out"
     cmd="tessellate -u 4"
-    [ "$out" = old.png ] && cmd="render --size 64x48 --ss 1"
+    [ "$out" = old.png ] && cmd="render --size 320x240 --ss 1" # about 17 KiB compressed
     expect 3 "$cmd to $out past the file-size limit" -- sh -c \
         "trap '' XFSZ; ulimit -f 8; exec '$tool' $cmd -o '$work/$out' -b teacup"
     check "[ \"\$(cat '$work/$out')\" = 'previous content' ]" "$out: old content lost"

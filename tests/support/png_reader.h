@@ -1,6 +1,7 @@
-/* A strict reader for the PNG files the bezsurf tool writes (8-bit RGB, no interlace, filter 0,
- * stored deflate blocks): every chunk's CRC-32, the zlib header, each block's LEN/NLEN and the
- * Adler-32 are verified with code written independently of tools/png.c. */
+/* A strict reader for the PNG files the bezsurf tool writes (8-bit RGB, no interlace, any of the
+ * five row filters, a zlib stream of any deflate blocks): every chunk's CRC-32, the zlib header,
+ * the deflate data (tests/support/inflate.h), its exact length and the Adler-32 are verified with
+ * code written independently of tools/png.c and tools/deflate.c. */
 #ifndef BS_TEST_PNG_READER_H
 #define BS_TEST_PNG_READER_H
 
@@ -8,6 +9,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+#include "inflate.h"
 
 static uint32_t pngr_be32(const unsigned char *p)
 {
@@ -40,8 +43,39 @@ static uint32_t pngr_adler(const unsigned char *p, size_t n)
     return (uint32_t)(b << 16 | a);
 }
 
-/* Decode file bytes into *rgb (malloc'd, w*h*3). Returns NULL on success or the reason. */
-static const char *png_read_rgb(const unsigned char *f, size_t n, size_t *w, size_t *h, unsigned char **rgb)
+static int pngr_paeth(int a, int b, int c)
+{
+    int p = a + b - c, pa = p > a ? p - a : a - p, pb = p > b ? p - b : b - p, pc = p > c ? p - c : c - p;
+    if (pa <= pb && pa <= pc)
+        return a;
+    return pb <= pc ? b : c;
+}
+
+/* Undo the row filters of raw (h rows of 1 + 3w bytes) into rgb; bit t of *seen set for each filter
+ * type t met. 0 on success, -1 for an unknown filter type. */
+static int pngr_unfilter(const unsigned char *raw, size_t w, size_t h, unsigned char *rgb, unsigned *seen)
+{
+    size_t n = 3 * w;
+    for (size_t y = 0; y < h; y++) {
+        int t = raw[y * (n + 1)];
+        if (t > 4)
+            return -1;
+        *seen |= 1u << t;
+        const unsigned char *f = raw + y * (n + 1) + 1;
+        unsigned char *x = rgb + y * n, *up = y ? rgb + (y - 1) * n : NULL;
+        for (size_t i = 0; i < n; i++) {
+            int a = i >= 3 ? x[i - 3] : 0, b = up ? up[i] : 0, c = up && i >= 3 ? up[i - 3] : 0;
+            int pred = t == 0 ? 0 : t == 1 ? a : t == 2 ? b : t == 3 ? (a + b) >> 1 : pngr_paeth(a, b, c);
+            x[i] = (unsigned char)(f[i] + pred);
+        }
+    }
+    return 0;
+}
+
+/* Decode file bytes into *rgb (malloc'd, w*h*3); bit t of *filters (if not NULL) is set when a row
+ * uses filter type t. Returns NULL on success or the reason. */
+static const char *png_read_rgb_filters(const unsigned char *f, size_t n, size_t *w, size_t *h, unsigned char **rgb,
+                                        unsigned *filters)
 {
     static const unsigned char sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
     *rgb = NULL;
@@ -90,38 +124,33 @@ static const char *png_read_rgb(const unsigned char *f, size_t n, size_t *w, siz
     }
     if (pos != n)
         return free(z), "bytes after IEND";
-    if (zn < 6 || (z[0] & 0x0F) != 8 || ((unsigned)z[0] << 8 | z[1]) % 31 != 0 || (z[1] & 0x20))
+    if (zn < 6 || (z[0] & 0x0F) != 8 || (z[0] >> 4) > 7 || ((unsigned)z[0] << 8 | z[1]) % 31 != 0 || (z[1] & 0x20))
         return free(z), "bad zlib header";
-    size_t row = 3 * *w + 1, raw_n = row * *h, got = 0, zp = 2;
-    unsigned char *raw = malloc(raw_n);
-    int final = 0;
-    while (!final) {
-        if (zp + 5 > zn)
-            return free(z), free(raw), "truncated deflate block";
-        if ((z[zp] & 0x06) != 0)
-            return free(z), free(raw), "not a stored block";
-        final = z[zp] & 1;
-        size_t len = (size_t)z[zp + 1] | (size_t)z[zp + 2] << 8, nlen = (size_t)z[zp + 3] | (size_t)z[zp + 4] << 8;
-        if ((len ^ 0xFFFF) != nlen)
-            return free(z), free(raw), "LEN and NLEN disagree";
-        zp += 5;
-        if (len > zn - zp || len > raw_n - got)
-            return free(z), free(raw), "block too long";
-        memcpy(raw + got, z + zp, len);
-        got += len;
-        zp += len;
+    size_t row = 3 * *w + 1, raw_n = row * *h, got = 0, used = 0;
+    unsigned char *raw = malloc(raw_n + 1); /* one spare byte: a longer stream is caught */
+    const char *why = raw ? bs_inflate(z + 2, zn - 2, raw, raw_n + 1, &got, &used) : "out of memory";
+    if (why == NULL && (got != raw_n || zn - 2 - used != 4 || pngr_be32(z + 2 + used) != pngr_adler(raw, raw_n)))
+        why = "bad length or Adler-32";
+    unsigned seen = 0;
+    if (why == NULL && (*rgb = malloc(3 * *w * *h)) == NULL)
+        why = "out of memory";
+    if (why == NULL && pngr_unfilter(raw, *w, *h, *rgb, &seen) != 0)
+        why = "unknown filter type";
+    if (why != NULL) {
+        free(*rgb);
+        *rgb = NULL;
     }
-    if (got != raw_n || zn - zp != 4 || pngr_be32(z + zp) != pngr_adler(raw, raw_n))
-        return free(z), free(raw), "bad length or Adler-32";
-    *rgb = malloc(3 * *w * *h);
-    for (size_t y = 0; y < *h; y++) {
-        if (raw[y * row] != 0)
-            return free(z), free(raw), free(*rgb), *rgb = NULL, "unexpected filter";
-        memcpy(*rgb + 3 * *w * y, raw + y * row + 1, 3 * *w);
-    }
+    if (filters != NULL)
+        *filters = seen;
     free(z);
     free(raw);
-    return NULL;
+    return why;
+}
+
+/* Decode file bytes into *rgb (malloc'd, w*h*3). Returns NULL on success or the reason. */
+static const char *png_read_rgb(const unsigned char *f, size_t n, size_t *w, size_t *h, unsigned char **rgb)
+{
+    return png_read_rgb_filters(f, n, w, h, rgb, NULL);
 }
 
 /* Load a whole file; NULL if it cannot be read. */
@@ -147,6 +176,19 @@ static unsigned char *pngr_load(const char *path, size_t *n)
     }
     fclose(f);
     return b;
+}
+
+/* Load and decode the PNG file at path into *rgb (malloc'd); NULL on success or the reason. */
+static inline const char *png_read_file(const char *path, size_t *w, size_t *h, unsigned char **rgb)
+{
+    size_t n = 0;
+    unsigned char *file = pngr_load(path, &n);
+    *rgb = NULL;
+    if (file == NULL)
+        return "cannot read";
+    const char *why = png_read_rgb(file, n, w, h, rgb);
+    free(file);
+    return why;
 }
 
 #endif
