@@ -274,6 +274,8 @@ static double check_query(const bs_patch *p, const double *ctrl, const double *w
         e2 += ((ld)a.pos[c] - q[c]) * ((ld)a.pos[c] - q[c]);
     CHECKF(fabsl(sqrtl(e2) - a.dist) <= 4 * DBL_EPSILON * a.dist, "%s: dist %.17g, |pos - q| %.17Lg",
            what, a.dist, sqrtl(e2));
+    if (bs_test_quick())
+        return 0.0; /* the library's own work is done; the long double reference adds no memory check */
     refp r = {{m, n, dim, ctrl, w}, q};
     size_t deg = m > n ? m : n, grid = 4 * deg + 17 > G ? G : 4 * deg + 17;
     ld d = reference(&r, grid);

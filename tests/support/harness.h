@@ -4,6 +4,7 @@
 #define BS_TEST_HARNESS_H
 
 #include <stdio.h>
+#include <stdlib.h>
 
 static int bs_test_failures;
 static int bs_test_checks;
@@ -35,6 +36,15 @@ static inline int bs_test_exit(const char *name)
 {
     printf("%s: %d checks, %d failures\n", name, bs_test_checks, bs_test_failures);
     return bs_test_failures == 0 ? 0 : 1;
+}
+
+/* True when BS_TEST_QUICK is set (by .ci/memcheck.sh): the slowest tests then check a smaller
+ * sample of the same cases, since under valgrind they look for memory errors, which the full
+ * sample run by the ordinary test command does not need to repeat. */
+static inline int bs_test_quick(void)
+{
+    const char *q = getenv("BS_TEST_QUICK");
+    return q != NULL && *q != '\0' && *q != '0';
 }
 
 /* Deterministic pseudo-random numbers (splitmix64), so failures reproduce. */
