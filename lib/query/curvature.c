@@ -43,8 +43,8 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
     }
 }
 
-void bsi_curv_partials(const bs_patch *p, size_t n, const double *u, const double *v,
-                       double *scratch, bsi_partials *q, unsigned char *kind)
+void bsi_curv_partials(const bs_patch *p, const bsi_curv_nets *nets, size_t n, const double *u,
+                       const double *v, double *scratch, bsi_partials *q, unsigned char *kind)
 {
     static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
     bs_cview cu = {u, n, 0}, cv = {v, n, 0};
@@ -56,10 +56,14 @@ void bsi_curv_partials(const bs_patch *p, size_t n, const double *u, const doubl
             views[j][c].stride = (ptrdiff_t)sizeof(bsi_partials);
         }
     if (!p->rational) {
-        /* the block evaluators (which allocate nothing for polynomial patches) */
+        /* the block evaluators (which allocate nothing for polynomial patches); second
+         * derivatives as the points of their own patches when the caller made them */
         (void)bs_patch_eval(p, n, &cu, &cv, NULL, views[0], views[1]);
         for (int j = 2; j < 5; j++)
-            (void)bs_patch_eval_deriv(p, ab[j][0], ab[j][1], n, &cu, &cv, views[j]);
+            if (nets != NULL && nets->d2[j - 2] != NULL)
+                (void)bs_patch_eval(nets->d2[j - 2], n, &cu, &cv, views[j], NULL, NULL);
+            else
+                (void)bs_patch_eval_deriv(p, ab[j][0], ab[j][1], n, &cu, &cv, views[j]);
     } else {
         double *table = scratch + bsi_deriv_table_scratch(p, 2, 2); /* S^(a,b), a, b <= 2 */
         for (size_t k = 0; k < n; k++) {
@@ -116,8 +120,16 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         return st;
     /* the one allocation, before anything is written */
     double *scratch = malloc((bsi_deriv_table_scratch(p, 2, 2) + 27) * sizeof(double));
-    if (scratch == NULL)
+    bsi_curv_nets nets = {{NULL, NULL, NULL}};
+    int nets_ok = scratch != NULL;
+    for (int j = 0; j < 3 && nets_ok && !p->rational; j++) /* S_uu, S_uv, S_vv */
+        nets_ok = bs_patch_derivative(p, (unsigned)(2 - j), (unsigned)j, &nets.d2[j]) == BS_OK;
+    if (!nets_ok) {
+        free(scratch);
+        for (int j = 0; j < 3; j++)
+            bs_patch_destroy(nets.d2[j]);
         return BS_ERR_NO_MEMORY;
+    }
     double inv_d = 1.0 / net_diagonal(p);
     enum { B = 32 };
     for (size_t k0 = 0; k0 < n; k0 += B) {
@@ -138,7 +150,7 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         }
         bsi_partials q[B];
         unsigned char nk[B];
-        bsi_curv_partials(p, nf, ub, vb, scratch, q, nk);
+        bsi_curv_partials(p, p->rational ? NULL : &nets, nf, ub, vb, scratch, q, nk);
         for (size_t k = 0; k < nf; k++) {
             bsi_curv c;
             unsigned char ck = BS_CURV_UNDEFINED;
@@ -154,5 +166,7 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         }
     }
     free(scratch);
+    for (int j = 0; j < 3; j++)
+        bs_patch_destroy(nets.d2[j]);
     return BS_OK;
 }

@@ -66,7 +66,7 @@ unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double
     bsi_partials q[LEVELS];
     unsigned char nk[LEVELS];
     bsi_curv c[LEVELS];
-    bsi_curv_partials(p, LEVELS, us, vs, scratch, q, nk);
+    bsi_curv_partials(p, NULL, LEVELS, us, vs, scratch, q, nk);
     for (int j = 0; j < LEVELS; j++) {
         if (nk[j] != BS_NORMAL_REGULAR)
             return BS_CURV_UNDEFINED;
@@ -95,7 +95,7 @@ unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double
     if (out->k[3] - out->k[2] <= 10.0 * LIMIT_TOL * scale) {
         bsi_partials here;
         unsigned char hk;
-        bsi_curv_partials(p, 1, &u, &v, scratch, &here, &hk);
+        bsi_curv_partials(p, NULL, 1, &u, &v, scratch, &here, &hk);
         double len = 1.0 / inv_d;
         if (unit3(here.d[0], len, t) && frame(t, nrm, out))
             return BS_CURV_LIMIT;

@@ -34,10 +34,17 @@ typedef struct bsi_partials {
 /* Curvature from the fundamental forms at a regular point; inv_d = 1/D (umbilic test scale). */
 void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out);
 
-/* The partials at n finite points (u[k], v[k]) into q[k] and the normal kinds into kind;
- * scratch holds bsi_deriv_table_scratch(p, 2, 2) + 27 doubles. */
-void bsi_curv_partials(const bs_patch *p, size_t n, const double *u, const double *v,
-                       double *scratch, bsi_partials *q, unsigned char *kind);
+/* The second-derivative patches S_uu, S_uv, S_vv of a polynomial patch, made once per call so
+ * their points come from the vectorised position evaluator (NULL entries: not made). */
+typedef struct bsi_curv_nets {
+    bs_patch *d2[3];
+} bsi_curv_nets;
+
+/* The partials at n finite points (u[k], v[k]) into q[k] and the normal kinds into kind; nets
+ * NULL or made by the caller for a polynomial p; scratch holds bsi_deriv_table_scratch(p, 2, 2)
+ * + 27 doubles. */
+void bsi_curv_partials(const bs_patch *p, const bsi_curv_nets *nets, size_t n, const double *u,
+                       const double *v, double *scratch, bsi_partials *q, unsigned char *kind);
 
 /* The limit of the curvature at finite (u,v) along the line towards (1/2,1/2), nrm the limit
  * normal there (scratch as for bsi_curv_partials): BS_CURV_LIMIT with out filled, or
