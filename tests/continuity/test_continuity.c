@@ -260,6 +260,43 @@ static void test_twist(void)
     CHECKF(fabs(e[0].g1_angle - expect) < 1e-14, "two samples: angle %.17g, expected %.17g", e[0].g1_angle, expect);
 }
 
+/* C1 means a defect within tol, pinned from both sides: a fold by 1e-6 (defect about 1e-6, small
+ * enough that the tolerance matches no other side) is C1 under tol = its defect, not under 3/4 of
+ * it. */
+static void test_c1_tolerance(void)
+{
+    double th = 1e-6, c = cos(th), sn = sin(th);
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0}, b[12] = {1, 0, 0, 1, 1, 0, 1 + c, 0, sn, 1 + c, 1, sn};
+    size_t deg[4] = {1, 1, 1, 1};
+    const double *nets[2] = {a, b};
+    bs_surface *s = surface_of(2, deg, nets);
+    bs_edge_continuity e[2];
+    size_t ne = 0, no = 0;
+    CHECK_STATUS(bs_surface_continuity(s, 1e-9, 2, e, 2, &ne, NULL, 0, &no), BS_OK);
+    double d = e[0].c1_defect;
+    CHECK(ne == 1 && d > 0.0 && e[0].c1 == 0);
+    CHECK_STATUS(bs_surface_continuity(s, d, 2, e, 2, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 1 && e[0].c1 == 1);
+    CHECK_STATUS(bs_surface_continuity(s, 0.75 * d, 2, e, 2, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 1 && e[0].c1 == 0);
+    bs_surface_destroy(s);
+}
+
+/* The C0 gap is the largest distance between matched control points: one point of the shared side
+ * moved by 1e-10 (the edge still matched under tol 1e-9) gives exactly that. */
+static void test_gap(void)
+{
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0}, b[12] = {1, 0, 0, 1, 1, 0, 2, 0, 0, 2, 1, 0};
+    b[5] = 1e-10; /* B's (0,1), A's (1,1) */
+    bs_edge_continuity e[2];
+    size_t deg[4] = {1, 1, 1, 1}, ne = 0, no = 0;
+    const double *nets[2] = {a, b};
+    bs_surface *s = surface_of(2, deg, nets);
+    CHECK_STATUS(bs_surface_continuity(s, 1e-9, 4, e, 2, &ne, NULL, 0, &no), BS_OK);
+    CHECK(ne == 1 && e[0].c0_gap == 1e-10);
+    bs_surface_destroy(s);
+}
+
 /* Normals at right angles (dot product exactly 0) are not opposite; an edge whose normals are all
  * undefined (nets on a line) uses no sample and is not flipped. */
 static void test_flipped_edges(void)
@@ -332,5 +369,7 @@ int main(void)
     test_twist();
     test_flipped_edges();
     test_ulp_tolerance();
+    test_gap();
+    test_c1_tolerance();
     return bs_test_exit("test_continuity");
 }
