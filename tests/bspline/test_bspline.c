@@ -291,6 +291,8 @@ static void errors(void)
     {
         double k3[] = {0, 1, 1, 1, 2}; /* a triple knot in a degree-1 vector: mult > p + 1 */
         EXPECT(b.knots_u = k3, BS_ERR_DOMAIN);
+        double e3[] = {0, 0, 0, 1, 2}; /* the same at the start, the domain [0,1] not empty */
+        EXPECT(b.knots_u = e3, BS_ERR_DOMAIN);
     }
     EXPECT((ku[2] = 3, ctrl[4] = NAN), BS_ERR_DOMAIN); /* knots before control points */
     ku[2] = 1;

@@ -232,13 +232,14 @@ static void test_pole(void)
     bs_surface_destroy(s);
 }
 
-/* The shared edges of two bilinear patches, measured with `samples` samples, into e[0..1]. */
-static size_t pair_edges(const double *a, const double *b, size_t samples, bs_edge_continuity e[2])
+/* The shared edges of two bilinear patches under tol, measured with `samples` samples, into
+ * e[0..1]. */
+static size_t pair_edges(const double *a, const double *b, double tol, size_t samples, bs_edge_continuity e[2])
 {
     size_t deg[4] = {1, 1, 1, 1}, ne = 0, no = 0;
     const double *nets[2] = {a, b};
     bs_surface *s = surface_of(2, deg, nets);
-    CHECK_STATUS(bs_surface_continuity(s, 1e-12, samples, e, 2, &ne, NULL, 0, &no), BS_OK);
+    CHECK_STATUS(bs_surface_continuity(s, tol, samples, e, 2, &ne, NULL, 0, &no), BS_OK);
     bs_surface_destroy(s);
     return ne;
 }
@@ -253,11 +254,36 @@ static void test_twist(void)
     double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0};
     double b[12] = {1, 0, 0, 1, 1, 0, 2, 0, 0, 1 + c, 1, sn};
     bs_edge_continuity e[2];
-    CHECK(pair_edges(a, b, 1, e) == 1 && e[0].samples == 1 && e[0].flipped == 0);
+    CHECK(pair_edges(a, b, 1e-12, 1, e) == 1 && e[0].samples == 1 && e[0].flipped == 0);
     CHECKF(fabs(e[0].g1_angle - th / 2) < 1e-14, "one sample: angle %.17g, expected %.17g", e[0].g1_angle, th / 2);
-    CHECK(pair_edges(a, b, 2, e) == 1);
+    CHECK(pair_edges(a, b, 1e-12, 2, e) == 1);
     double expect = atan2(0.75 * sn, 0.25 + 0.75 * c);
     CHECKF(fabs(e[0].g1_angle - expect) < 1e-14, "two samples: angle %.17g, expected %.17g", e[0].g1_angle, expect);
+}
+
+/* C1 means a defect within tol, pinned from both sides: a fold by 1e-6 (defect about 1e-6, small
+ * enough that the tolerance matches no other side) is C1 under tol = its defect, not under 3/4 of
+ * it. */
+static void test_c1_tolerance(void)
+{
+    double th = 1e-6, c = cos(th), sn = sin(th);
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0}, b[12] = {1, 0, 0, 1, 1, 0, 1 + c, 0, sn, 1 + c, 1, sn};
+    bs_edge_continuity e[2];
+    CHECK(pair_edges(a, b, 1e-9, 2, e) == 1);
+    double d = e[0].c1_defect;
+    CHECK(d > 0.0 && e[0].c1 == 0);
+    CHECK(pair_edges(a, b, d, 2, e) == 1 && e[0].c1 == 1);
+    CHECK(pair_edges(a, b, 0.75 * d, 2, e) == 1 && e[0].c1 == 0);
+}
+
+/* The C0 gap is the largest distance between matched control points: one point of the shared side
+ * moved by 1e-10 (the edge still matched under tol 1e-9) gives exactly that. */
+static void test_gap(void)
+{
+    double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0}, b[12] = {1, 0, 0, 1, 1, 0, 2, 0, 0, 2, 1, 0};
+    b[5] = 1e-10; /* B's (0,1), A's (1,1) */
+    bs_edge_continuity e[2];
+    CHECK(pair_edges(a, b, 1e-9, 4, e) == 1 && e[0].c0_gap == 1e-10);
 }
 
 /* Normals at right angles (dot product exactly 0) are not opposite; an edge whose normals are all
@@ -266,10 +292,10 @@ static void test_flipped_edges(void)
 {
     double a[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0}, b[12] = {1, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1};
     bs_edge_continuity e[2];
-    CHECK(pair_edges(a, b, 5, e) == 1 && e[0].samples == 5 && e[0].flipped == 0);
+    CHECK(pair_edges(a, b, 1e-12, 5, e) == 1 && e[0].samples == 5 && e[0].flipped == 0);
     CHECK(fabs(e[0].g1_angle - acos(-1.0) / 2) < 1e-15);
     double la[12] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0}, lb[12] = {2, 0, 0, 3, 0, 0, 4, 0, 0, 5, 0, 0};
-    CHECK(pair_edges(la, lb, 5, e) >= 1 && e[0].samples == 0 && e[0].flipped == 0);
+    CHECK(pair_edges(la, lb, 1e-12, 5, e) >= 1 && e[0].samples == 0 && e[0].flipped == 0);
 }
 
 /* Sides whose control points differ by up to 2 ulps of the largest coordinate are one edge under a
@@ -332,5 +358,7 @@ int main(void)
     test_twist();
     test_flipped_edges();
     test_ulp_tolerance();
+    test_gap();
+    test_c1_tolerance();
     return bs_test_exit("test_continuity");
 }

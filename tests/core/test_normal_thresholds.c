@@ -215,11 +215,34 @@ static void scaled_nets(void)
     CHECKF(differ == 0, "%d normals of scaled teapot patches differ from the unscaled ones", differ);
 }
 
+/* A corner where S, S_u, S_v and all second partials but none of the third vanish (the net's points
+ * with i + j <= 2 are one point): S_u x S_v starts at order 4 along the diagonal (A_2 x B_2), so the
+ * limit rule needs its higher orders; the limit normal is that of the reference just inside. */
+static void high_order_corner(void)
+{
+    double net[48];
+    unsigned long long seed = 5;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            for (int c = 0; c < 3; c++)
+                net[(i * 4 + j) * 3 + c] = i + j <= 2 ? 0.0 : (c == 0 ? i : c == 1 ? j : 0.0) + bs_test_rand(&seed, 0.0, 0.3);
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(3, 3, 3, net, NULL, &p), BS_OK);
+    ref_net r = {3, 3, 3, net, NULL};
+    double n[3];
+    long double e[3] = {0, 0, 0};
+    CHECK(normal1(p, 0.0, 0.0, n) == BS_NORMAL_LIMIT);
+    CHECK(ref_normal(&r, 1e-7L, 1e-7L, e));
+    CHECKF(dist3(n, e) <= 1e-5, "high-order corner: limit normal off by %g", dist3(n, e));
+    bs_patch_destroy(p);
+}
+
 int main(void)
 {
     rounding_bound();
     pole_with_far_weights();
     thresholds_pinned();
     scaled_nets();
+    high_order_corner();
     return bs_test_exit("test_normal_thresholds");
 }

@@ -156,6 +156,8 @@ static void test_errors(void)
         {"1\n3 3\n1 2 3\n", 4, 1, "end of input"},
         {"1\n65 1\n", 2, 1, "too large"},
         {"1\n1 -2\n", 2, 3, "negative"},
+        {"1\n-0 1\n", 2, 1, "negative degree in u"},
+        {"-09\n", 1, 1, "negative the patch count"},
         {"1\n0 0\n1 2 x\n", 3, 5, "number"},
         {"1\n0 0\n1 nan 3\n", 3, 3, "number"},
         {"1\n0 0\n1 inf 3\n", 3, 3, "number"},

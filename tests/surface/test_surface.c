@@ -17,6 +17,12 @@ int main(void)
     CHECK_STATUS(bs_surface_create(&s), BS_OK);
     CHECK(bs_surface_count(s) == 0 && bs_surface_dim(s) == 0 && bs_surface_get(s, 0) == NULL);
     size_t idx = 99;
+    /* the second patch already must have the first one's dimension */
+    CHECK_STATUS(bs_surface_add(s, p3, &idx), BS_OK);
+    CHECK_STATUS(bs_surface_add(s, p2, &idx), BS_ERR_INCOMPATIBLE);
+    CHECK(idx == 0 && bs_surface_count(s) == 1 && bs_surface_dim(s) == 3);
+    bs_surface_destroy(s);
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
     for (size_t k = 0; k < 20; k++) {
         CHECK_STATUS(bs_surface_add(s, p3, &idx), BS_OK);
         CHECK(idx == k);
