@@ -60,8 +60,12 @@ typedef struct tess {
     double *pu, *pv;
     uint32_t *gid;
     size_t nbad; /* vertices whose normal bsi_tess_repair_normals must replace */
-    double *soa; /* 6 x GRID_CHUNK: positions and normals of a block of grid rows, by coordinate */
+    size_t threads; /* the caller's thread count for sampling (0 = one per online CPU) */
 } tess;
+
+/* Scratch of one sampling thread: grid parameters, 6 x GRID_CHUNK positions and normals of a
+ * block of grid rows by coordinate, and the count of normals to repair it found. */
+typedef struct tess_scratch { double *pu, *pv, *soa; size_t nbad; } tess_scratch;
 
 /* Grid points evaluated per call into packed scratch (the evaluator writes packed arrays in
  * place; the mesh's packed triples are filled from them). */
@@ -161,8 +165,8 @@ typedef struct bsi_corner { uint32_t id; double u, v; } bsi_corner;
  * strip of its own; dropped when a pole makes it degenerate (a repeated vertex). */
 void bsi_tess_emit(tess *t, uint32_t patch, bsi_corner a, bsi_corner b, bsi_corner c, int orient);
 /* Positions, normals and kinds of vertices first .. first + n - 1 of patch p from their (u,v) in
- * t->uv, with their patch id; counts the normals to repair (tess_sample.c). */
-bs_status bsi_tess_eval_list(tess *t, uint32_t p, size_t first, size_t n);
+ * t->uv, with their patch id; adds the normals to repair to *nbad (tess_sample.c). */
+bs_status bsi_tess_eval_list(const tess *t, uint32_t p, size_t first, size_t n, size_t *nbad);
 /* Hand the arrays of a finished tessellation (status st) to a new mesh, or free them on failure
  * (tessellate.c). */
 bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out);
