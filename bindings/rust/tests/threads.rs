@@ -96,3 +96,28 @@ fn tessellating_one_surface_from_several_threads_matches_serial() {
         }
     });
 }
+
+#[test]
+fn thread_counts_give_the_mesh_and_points_of_one_thread() {
+    use bezsurf::{TessMethod, TessOptions};
+    let teapot = Surface::builtin("teapot").unwrap();
+    let snapshot = |m: &bezsurf::Mesh| {
+        let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
+        (bits, m.triangles())
+    };
+    for method in [TessMethod::Uniform { nu: 11, nv: 6 }, TessMethod::PerPatch, TessMethod::Subdivide] {
+        let opts = TessOptions::new(method).flags(bezsurf::TessFlags::RELATIVE);
+        let one = snapshot(&teapot.tessellate(&opts).unwrap());
+        for n in [2, 0] {
+            assert!(snapshot(&teapot.tessellate(&opts.threads(n)).unwrap()) == one);
+        }
+    }
+    let n = 9000;
+    let ids: Vec<u32> = (0..n).map(|k| (k % 32) as u32).collect();
+    let u: Vec<f64> = (0..n).map(|k| (k % 97) as f64 / 96.0).collect();
+    let v: Vec<f64> = (0..n).map(|k| (k % 89) as f64 / 88.0).collect();
+    let (mut a, mut b) = (vec![0.0; 3 * n], vec![0.0; 3 * n]);
+    teapot.eval(&ids, &u[..], &v[..], Outputs::new().pos(&mut a)).unwrap();
+    teapot.eval_threads(&ids, &u[..], &v[..], Outputs::new().pos(&mut b), 2).unwrap();
+    assert!(a.iter().map(|x| x.to_bits()).eq(b.iter().map(|x| x.to_bits())));
+}
