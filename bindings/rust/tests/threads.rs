@@ -78,13 +78,15 @@ fn patches_and_surfaces_are_send_and_sync() {
     check::<bezsurf::Locator>();
 }
 
+/// Positions and normals of a mesh as raw bits, and its triangles.
+fn snapshot(m: &bezsurf::Mesh) -> (Vec<u64>, Vec<u32>) {
+    let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
+    (bits, m.triangles())
+}
+
 #[test]
 fn tessellating_one_surface_from_several_threads_matches_serial() {
     let teapot = Surface::builtin("teapot").unwrap();
-    let snapshot = |m: &bezsurf::Mesh| {
-        let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
-        (bits, m.triangles())
-    };
     let serial = snapshot(&teapot.tessellate_adaptive(1e-3, bezsurf::TessFlags::RELATIVE).unwrap());
     let teapot = &teapot;
     thread::scope(|scope| {
@@ -101,10 +103,6 @@ fn tessellating_one_surface_from_several_threads_matches_serial() {
 fn thread_counts_give_the_mesh_and_points_of_one_thread() {
     use bezsurf::{TessMethod, TessOptions};
     let teapot = Surface::builtin("teapot").unwrap();
-    let snapshot = |m: &bezsurf::Mesh| {
-        let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
-        (bits, m.triangles())
-    };
     for method in [TessMethod::Uniform { nu: 11, nv: 6 }, TessMethod::PerPatch, TessMethod::Subdivide] {
         let opts = TessOptions::new(method).flags(bezsurf::TessFlags::RELATIVE);
         let one = snapshot(&teapot.tessellate(&opts).unwrap());
