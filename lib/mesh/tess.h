@@ -170,8 +170,11 @@ bs_status bsi_tess_eval_list(const tess *t, uint32_t p, size_t first, size_t n, 
 /* Hand the arrays of a finished tessellation (status st) to a new mesh, or free them on failure
  * (tessellate.c). */
 bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out);
-/* Reserve the output arrays, then emit every patch's triangles (tess_emit.c). */
+/* Reserve the output arrays, then emit every patch's triangles, on up to t->threads threads
+ * (tess_emit.c). */
 bs_status bsi_tess_triangulate(tess *t);
+/* The emission of bsi_tess_triangulate on `workers` threads, into reserved arrays. */
+bs_status bsi_tess_emit_parallel(tess *t, size_t workers);
 /* Shrink the corner list to the corners actually listed. */
 bs_status bsi_tess_trim_corners(tess *t);
 
