@@ -40,6 +40,10 @@ typedef struct patch_plan {
     size_t inner0;      /* first vertex id of the interior grid points */
 } patch_plan;
 
+/* Scratch of one sampling thread: grid parameters, 6 x GRID_CHUNK positions and normals of a
+ * block of grid rows by coordinate, and the count of normals to repair it found. */
+typedef struct tess_scratch { double *pu, *pv, *soa; size_t nbad; } tess_scratch;
+
 typedef struct tess {
     const bs_surface *s;
     size_t np;
@@ -60,12 +64,13 @@ typedef struct tess {
     double *pu, *pv;
     uint32_t *gid;
     size_t nbad; /* vertices whose normal bsi_tess_repair_normals must replace */
-    size_t threads; /* the caller's thread count for sampling (0 = one per online CPU) */
+    size_t threads; /* the caller's thread count (0 = one per online CPU) */
+    /* scratch of each sampling thread (work1 when there is one), freed with the rest: one
+     * thread allocates as the tessellator always did, for malloc's heap trimming is sensitive
+     * to it (an extra small block per call tripled the time by faulting the mesh in again) */
+    tess_scratch *work, work1;
+    size_t nwork;
 } tess;
-
-/* Scratch of one sampling thread: grid parameters, 6 x GRID_CHUNK positions and normals of a
- * block of grid rows by coordinate, and the count of normals to repair it found. */
-typedef struct tess_scratch { double *pu, *pv, *soa; size_t nbad; } tess_scratch;
 
 /* Grid points evaluated per call into packed scratch (the evaluator writes packed arrays in
  * place; the mesh's packed triples are filled from them). */

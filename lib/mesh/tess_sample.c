@@ -140,30 +140,24 @@ static bs_status sample_task(void *ctx, size_t p, size_t worker)
     return sample_patch(job->t, p, &job->w[worker]);
 }
 
-static void scratch_free(tess_scratch *w, size_t workers)
+/* Scratch of `workers` threads in t->work, each for grids up to gmax (freed by bsi_tess_free); one
+ * thread allocates no more than its block of rows (its parameters are t->pu, t->pv). */
+static bs_status scratch_alloc(tess *t, size_t workers, size_t gmax)
 {
-    for (size_t k = 0; w != NULL && k < workers; k++) {
-        free(w[k].pu);
-        free(w[k].pv);
-        free(w[k].soa);
+    t->work = workers > 1 ? calloc(workers, sizeof(tess_scratch)) : &t->work1;
+    if (t->work == NULL)
+        return BS_ERR_NO_MEMORY;
+    t->nwork = workers;
+    t->work1 = (tess_scratch){t->pu, t->pv, NULL, 0};
+    for (size_t k = 0; k < workers; k++) {
+        tess_scratch *w = &t->work[k];
+        w->pu = workers > 1 ? malloc((gmax + 1) * sizeof(double)) : t->pu;
+        w->pv = workers > 1 ? malloc((gmax + 1) * sizeof(double)) : t->pv;
+        w->soa = malloc(6 * GRID_CHUNK * sizeof(double));
+        if (!w->pu || !w->pv || !w->soa)
+            return BS_ERR_NO_MEMORY;
     }
-    free(w);
-}
-
-/* Scratch of `workers` threads, each for grids up to gmax; NULL when out of memory. */
-static tess_scratch *scratch_alloc(size_t workers, size_t gmax)
-{
-    tess_scratch *w = calloc(workers, sizeof(*w));
-    for (size_t k = 0; w != NULL && k < workers; k++) {
-        w[k].pu = malloc((gmax + 1) * sizeof(double));
-        w[k].pv = malloc((gmax + 1) * sizeof(double));
-        w[k].soa = malloc(6 * GRID_CHUNK * sizeof(double));
-        if (!w[k].pu || !w[k].pv || !w[k].soa) {
-            scratch_free(w, k + 1);
-            return NULL;
-        }
-    }
-    return w;
+    return BS_OK;
 }
 
 /* The mesh's vertex arrays, then every patch sampled, on up to t->threads threads. */
@@ -179,13 +173,13 @@ bs_status bsi_tess_evaluate(tess *t)
     t->pv = malloc((gmax + 1) * sizeof(double));
     if (!t->pos || !t->nrm || !t->uv || !t->vpatch || !t->kind || !t->pu || !t->pv)
         return BS_ERR_NO_MEMORY;
-    sample_job job = {t, scratch_alloc(workers, gmax)};
-    if (job.w == NULL)
-        return BS_ERR_NO_MEMORY;
-    bs_status st = bsi_parallel(workers, t->np, sample_task, &job);
+    bs_status st = scratch_alloc(t, workers, gmax);
+    if (st != BS_OK)
+        return st;
+    sample_job job = {t, t->work};
+    st = bsi_parallel(workers, t->np, sample_task, &job);
     for (size_t k = 0; k < workers; k++)
-        t->nbad += job.w[k].nbad;
-    scratch_free(job.w, workers);
+        t->nbad += t->work[k].nbad;
     return st;
 }
 

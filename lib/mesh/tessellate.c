@@ -51,6 +51,15 @@ void bsi_tess_free(tess *t)
     free(t->pu);
     free(t->pv);
     free(t->gid);
+    for (size_t k = 0; t->work != NULL && k < t->nwork; k++) {
+        if (t->work != &t->work1) { /* one thread's parameters are t->pu, t->pv */
+            free(t->work[k].pu);
+            free(t->work[k].pv);
+        }
+        free(t->work[k].soa);
+    }
+    if (t->work != &t->work1)
+        free(t->work);
 }
 
 bs_status bsi_tess_check(const bs_surface *s, int flags)
