@@ -111,6 +111,9 @@ typedef struct bs_tess_options {
     size_t max_vertices;  /**< budget: more vertices is BS_ERR_SIZE before any large allocation;
                                0 = only the 32-bit index limit (default) */
     size_t max_triangles; /**< budget on triangles, as max_vertices */
+    size_t threads;       /**< threads sampling the vertices, the calling one included: 1 (default)
+                               keeps the call on the calling thread, 0 = one per online CPU; the
+                               mesh is bit-identical for every count (docs/threads.md) */
 } bs_tess_options;
 
 /**

@@ -134,6 +134,65 @@ BS_API bs_status bs_surface_eval_normal(const bs_surface *s, size_t n, const uin
                                         const bs_cview *u, const bs_cview *v, const bs_view *pos,
                                         const bs_view *nrm, unsigned char *kind);
 
+/**
+ * @brief bs_surface_eval() on up to `threads` threads: the points are cut into pieces of 4096, each
+ * evaluated by one thread, so the results are bit-identical to bs_surface_eval() whatever the
+ * thread count. Every thread started is joined before the call returns; a thread that cannot be
+ * created leaves its share to the calling thread. Arguments and statuses as bs_surface_eval()
+ * (checked before any thread starts).
+ * @param[in]  s        the surface.
+ * @param[in]  n        number of points.
+ * @param[in]  ids      n patch ids, each below bs_surface_count(s).
+ * @param[in]  u        view of n u-parameters.
+ * @param[in]  v        view of n v-parameters.
+ * @param[out] pos      NULL or bs_surface_dim(s) views receiving S(u,v).
+ * @param[out] du       NULL or bs_surface_dim(s) views receiving dS/du.
+ * @param[out] dv       NULL or bs_surface_dim(s) views receiving dS/dv.
+ * @param[in]  threads  threads to use, the calling one included: 1 stays on the calling thread,
+ *                      0 = one per online CPU.
+ * @return BS_OK; BS_ERR_INVALID_ARG (s, ids, u or v NULL, NULL or misaligned view data, an id out of
+ *         range); BS_ERR_SIZE (a view shorter than n).
+ * @since 1.1
+ */
+BS_API bs_status bs_surface_eval_mt(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
+                                    const bs_cview *v, const bs_view *pos, const bs_view *du,
+                                    const bs_view *dv, size_t threads);
+
+/**
+ * @brief Evaluate the same tensor grid on every patch of a surface, on up to `threads` threads:
+ * point (u[a], v[b]) of patch p is written at output index (p*nu + a)*nv + b. Each output is
+ * bit-identical to bs_patch_eval_grid() on that patch (and so to bs_patch_eval()), whatever the
+ * thread count: the grids are cut into pieces of whole rows fixed by nv alone, each written by one
+ * thread. Every thread started is joined before the call returns; a thread that cannot be created
+ * leaves its share to the calling thread. An empty surface, nu = 0 or nv = 0 is a successful no-op
+ * once the arguments are checked.
+ * @param[in]  s        the surface.
+ * @param[in]  nu       number of u-parameters.
+ * @param[in]  u        view of nu u-parameters.
+ * @param[in]  nv       number of v-parameters.
+ * @param[in]  v        view of nv v-parameters.
+ * @param[out] pos      NULL or bs_surface_dim(s) views of count*nu*nv elements receiving S.
+ * @param[out] du       NULL or bs_surface_dim(s) views receiving dS/du.
+ * @param[out] dv       NULL or bs_surface_dim(s) views receiving dS/dv.
+ * @param[out] nrm      NULL or 3 views receiving unit normals (dim must be 3 when not NULL).
+ * @param[out] kind     NULL or count*nu*nv bytes receiving the normal kinds (dim 3).
+ * @param[in]  threads  threads to use, the calling one included: 1 stays on the calling thread,
+ *                      0 = one per online CPU.
+ * @return BS_OK on success.
+ * @return BS_ERR_INVALID_ARG if s, u or v is NULL, or a view's data is NULL or misaligned.
+ * @return BS_ERR_DIMENSION if nrm or kind is given and the surface's dim is not 3 (an empty
+ *         surface included; checked before the views).
+ * @return BS_ERR_SIZE if u or v is shorter than nu or nv, count*nu*nv overflows size_t, or an output
+ *         view holds fewer than count*nu*nv elements.
+ * @return BS_ERR_NO_MEMORY if the scratch space of a piece (under 300 kB) cannot be allocated; the
+ *         pieces evaluated before may then have been written.
+ * @since 1.1
+ */
+BS_API bs_status bs_surface_eval_grid(const bs_surface *s, size_t nu, const bs_cview *u, size_t nv,
+                                      const bs_cview *v, const bs_view *pos, const bs_view *du,
+                                      const bs_view *dv, const bs_view *nrm, unsigned char *kind,
+                                      size_t threads);
+
 #ifdef __cplusplus
 }
 #endif

@@ -97,4 +97,18 @@ bs_status bsi_out_close(bsi_out_file *o, int ok);
 /* 1 if every one of the n values is finite. */
 int bsi_all_finite(const double *x, size_t n);
 
+/* ---- Work shared between threads (lib/core/parallel.c) ---- */
+
+/* Workers to use for a caller's thread count (0 = one per online CPU), never more than items
+ * (at least 1). */
+size_t bsi_thread_count(size_t threads, size_t items);
+/* One item of work; worker < the workers passed to bsi_parallel(), so that per-worker scratch
+ * needs no lock. Items must write disjoint memory for results not to depend on the threads. */
+typedef bs_status (*bsi_task)(void *ctx, size_t item, size_t worker);
+/* Run fn on items 0..n-1 with up to `workers` threads, the calling one included; every thread is
+ * joined before it returns, and a thread that cannot be created leaves its share to the others.
+ * Items are taken in ascending order; after a failure no new item starts. Returns BS_OK, or the
+ * status of the lowest failing item. */
+bs_status bsi_parallel(size_t workers, size_t n, bsi_task fn, void *ctx);
+
 #endif

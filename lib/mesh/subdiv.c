@@ -84,8 +84,21 @@ static bs_status allocate(tess *t, const subdiv *sd)
     return BS_OK;
 }
 
-/* (u,v) of every vertex, then positions and normals patch by patch. */
-static bs_status evaluate(tess *t, const subdiv *sd)
+typedef struct sample_job { const tess *t; const subdiv *sd; size_t *nbad; } sample_job;
+
+/* Patch p's own vertices: its points, then its leaf centres. */
+static bs_status sample_patch(void *ctx, size_t p, size_t worker)
+{
+    sample_job *job = ctx;
+    const subdiv *sd = job->sd;
+    size_t *nbad = &job->nbad[worker];
+    bs_status st = bsi_tess_eval_list(job->t, (uint32_t)p, sd->vert0[p], sd->vert0[p + 1] - sd->vert0[p], nbad);
+    return st == BS_OK ? bsi_tess_eval_list(job->t, (uint32_t)p, sd->cen0[p], sd->cen0[p + 1] - sd->cen0[p], nbad)
+                       : st;
+}
+
+/* (u,v) of every vertex, then positions and normals patch by patch, on up to `threads` threads. */
+static bs_status evaluate(tess *t, const subdiv *sd, size_t threads)
 {
     for (size_t k = 0; k < sd->pt0[sd->np]; k++) {
         if (sd->parent[k] != k)
@@ -96,18 +109,19 @@ static bs_status evaluate(tess *t, const subdiv *sd)
         uv[1] = (double)(key & ((UINT64_C(1) << SD_BITS) - 1)) / (double)SD_N;
     }
     bsi_subdiv_centres(sd, t->uv);
-    for (size_t p = 0; p < sd->np; p++) {
-        bs_status st = bsi_tess_eval_list(t, (uint32_t)p, sd->vert0[p], sd->vert0[p + 1] - sd->vert0[p]);
-        if (st == BS_OK)
-            st = bsi_tess_eval_list(t, (uint32_t)p, sd->cen0[p], sd->cen0[p + 1] - sd->cen0[p]);
-        if (st != BS_OK)
-            return st;
-    }
-    return BS_OK;
+    size_t workers = bsi_thread_count(threads, sd->np);
+    sample_job job = {t, sd, calloc(workers, sizeof(size_t))};
+    if (job.nbad == NULL)
+        return BS_ERR_NO_MEMORY;
+    bs_status st = bsi_parallel(workers, sd->np, sample_patch, &job);
+    for (size_t k = 0; k < workers; k++)
+        t->nbad += job.nbad[k];
+    free(job.nbad);
+    return st;
 }
 
 bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t max_vertices, size_t max_triangles,
-                             bs_mesh **out)
+                             size_t threads, bs_mesh **out)
 {
     *out = NULL;
     subdiv sd;
@@ -125,7 +139,7 @@ bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t 
     if (st == BS_OK)
         st = allocate(&t, &sd);
     if (st == BS_OK)
-        st = evaluate(&t, &sd);
+        st = evaluate(&t, &sd, threads);
     if (st == BS_OK)
         st = bsi_subdiv_emit(&sd, &t);
     if (st == BS_OK)

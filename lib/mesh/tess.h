@@ -40,6 +40,10 @@ typedef struct patch_plan {
     size_t inner0;      /* first vertex id of the interior grid points */
 } patch_plan;
 
+/* Scratch of one sampling thread: grid parameters, 6 x GRID_CHUNK positions and normals of a
+ * block of grid rows by coordinate, and the count of normals to repair it found. */
+typedef struct tess_scratch { double *pu, *pv, *soa; size_t nbad; } tess_scratch;
+
 typedef struct tess {
     const bs_surface *s;
     size_t np;
@@ -60,7 +64,12 @@ typedef struct tess {
     double *pu, *pv;
     uint32_t *gid;
     size_t nbad; /* vertices whose normal bsi_tess_repair_normals must replace */
-    double *soa; /* 6 x GRID_CHUNK: positions and normals of a block of grid rows, by coordinate */
+    size_t threads; /* the caller's thread count (0 = one per online CPU) */
+    /* scratch of each sampling thread (work1 when there is one), freed with the rest: one
+     * thread allocates as the tessellator always did, for malloc's heap trimming is sensitive
+     * to it (an extra small block per call tripled the time by faulting the mesh in again) */
+    tess_scratch *work, work1;
+    size_t nwork;
 } tess;
 
 /* Grid points evaluated per call into packed scratch (the evaluator writes packed arrays in
@@ -161,13 +170,16 @@ typedef struct bsi_corner { uint32_t id; double u, v; } bsi_corner;
  * strip of its own; dropped when a pole makes it degenerate (a repeated vertex). */
 void bsi_tess_emit(tess *t, uint32_t patch, bsi_corner a, bsi_corner b, bsi_corner c, int orient);
 /* Positions, normals and kinds of vertices first .. first + n - 1 of patch p from their (u,v) in
- * t->uv, with their patch id; counts the normals to repair (tess_sample.c). */
-bs_status bsi_tess_eval_list(tess *t, uint32_t p, size_t first, size_t n);
+ * t->uv, with their patch id; adds the normals to repair to *nbad (tess_sample.c). */
+bs_status bsi_tess_eval_list(const tess *t, uint32_t p, size_t first, size_t n, size_t *nbad);
 /* Hand the arrays of a finished tessellation (status st) to a new mesh, or free them on failure
  * (tessellate.c). */
 bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out);
-/* Reserve the output arrays, then emit every patch's triangles (tess_emit.c). */
+/* Reserve the output arrays, then emit every patch's triangles, on up to t->threads threads
+ * (tess_emit.c). */
 bs_status bsi_tess_triangulate(tess *t);
+/* The emission of bsi_tess_triangulate on `workers` threads, into reserved arrays. */
+bs_status bsi_tess_emit_parallel(tess *t, size_t workers);
 /* Shrink the corner list to the corners actually listed. */
 bs_status bsi_tess_trim_corners(tess *t);
 

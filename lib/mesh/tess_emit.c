@@ -222,24 +222,30 @@ static void emit_ring_side(tess *t, uint32_t patch, const patch_plan *pl, int s)
     }
 }
 
-/* Room for every triangle, strip and index the patches can emit (poles drop some). */
+/* Room for the triangles, strips and strip indices patch pl can emit (poles drop some). */
+static void patch_room(const patch_plan *pl, size_t *pt, size_t *ps, size_t *pi)
+{
+    size_t gu = pl->gu, gv = pl->gv; /* at most BS_TESS_MAX_RATE: no overflow per patch */
+    if (pl->regular) {
+        *pt = 2 * gu * gv;
+        *ps = gu;
+        *pi = 2 * gu * (gv + 1);
+    } else {
+        size_t ring = pl->e[0] + pl->e[1] + pl->e[2] + pl->e[3] + 2 * (gu - 2) + 2 * (gv - 2);
+        *pt = 2 * (gu - 2) * (gv - 2) + ring;
+        *ps = (gu - 2) + ring;
+        *pi = 2 * (gu - 2) * (gv - 1) + 3 * ring;
+    }
+}
+
+/* Room for every triangle, strip and index the patches can emit. */
 static bs_status reserve_output(tess *t)
 {
     size_t ntri = 0, nstrip = 1, nsidx = 0, gids = 1, uv_cap = 0;
     for (size_t p = 0; p < t->np; p++) {
         const patch_plan *pl = &t->plan[p];
-        size_t gu = pl->gu, gv = pl->gv; /* at most BS_TESS_MAX_RATE: no overflow per patch */
-        size_t pt, ps, pi;
-        if (pl->regular) {
-            pt = 2 * gu * gv;
-            ps = gu;
-            pi = 2 * gu * (gv + 1);
-        } else {
-            size_t ring = pl->e[0] + pl->e[1] + pl->e[2] + pl->e[3] + 2 * (gu - 2) + 2 * (gv - 2);
-            pt = 2 * (gu - 2) * (gv - 2) + ring;
-            ps = (gu - 2) + ring;
-            pi = 2 * (gu - 2) * (gv - 1) + 3 * ring;
-        }
+        size_t gu = pl->gu, gv = pl->gv, pt, ps, pi;
+        patch_room(pl, &pt, &ps, &pi);
         if (pt > SIZE_MAX - ntri || ps > SIZE_MAX - nstrip || pi > SIZE_MAX - nsidx)
             return BS_ERR_NO_MEMORY;
         ntri += pt;
@@ -261,28 +267,135 @@ static bs_status reserve_output(tess *t)
     return BS_OK;
 }
 
+/* Every triangle of patch p, appended to t's arrays; t->pu, t->pv and t->gid are its scratch. */
+static void emit_patch(tess *t, size_t p)
+{
+    const patch_plan *pl = &t->plan[p];
+    uint32_t id = (uint32_t)p;
+    grid_params(t->pu, pl->gu);
+    grid_params(t->pv, pl->gv);
+    grid_ids(t, pl);
+    if (pl->regular) {
+        emit_grid(t, id, pl, 0, pl->gu, 0, pl->gv);
+    } else {
+        emit_grid(t, id, pl, 1, pl->gu - 1, 1, pl->gv - 1);
+        for (int s = 0; s < 4; s++)
+            emit_ring_side(t, id, pl, s);
+    }
+}
+
 bs_status bsi_tess_triangulate(tess *t)
 {
     bs_status st = reserve_output(t);
     if (st != BS_OK)
         return st;
-    for (size_t p = 0; p < t->np; p++) {
-        const patch_plan *pl = &t->plan[p];
-        uint32_t id = (uint32_t)p;
-        grid_params(t->pu, pl->gu);
-        grid_params(t->pv, pl->gv);
-        grid_ids(t, pl);
-        if (pl->regular) {
-            emit_grid(t, id, pl, 0, pl->gu, 0, pl->gv);
-        } else {
-            emit_grid(t, id, pl, 1, pl->gu - 1, 1, pl->gv - 1);
-            for (int s = 0; s < 4; s++)
-                emit_ring_side(t, id, pl, s);
-        }
+    size_t workers = bsi_thread_count(t->threads, t->np);
+    if (workers > 1) {
+        st = bsi_tess_emit_parallel(t, workers);
+    } else {
+        for (size_t p = 0; p < t->np; p++)
+            emit_patch(t, p);
     }
-    if (t->tri.n > UINT32_MAX || t->sidx.n > UINT32_MAX)
+    if (st == BS_OK && (t->tri.n > UINT32_MAX || t->sidx.n > UINT32_MAX))
         return BS_ERR_SIZE;
+    return st;
+}
+
+/* ---- The same emission on several threads ----
+ * Each patch emits into its own room (patch_room, at offsets summed in patch order) through a copy
+ * of t whose arrays start there, with scratch of its worker; then the patches' parts are moved
+ * down in patch order, their strip starts and corner numbers shifted to the final offsets. So the
+ * arrays are those the loop above fills, bit for bit. */
+
+typedef struct emit_part { size_t tri, strip, sidx, ntri, nstrip, nsidx, nx; } emit_part;
+typedef struct emit_job { const tess *t; tess *scratch; emit_part *part; } emit_job;
+
+static bs_status emit_task(void *ctx, size_t p, size_t worker)
+{
+    emit_job *job = ctx;
+    const tess *t = job->t;
+    emit_part *e = &job->part[p];
+    tess local = *t, *w = &job->scratch[worker];
+    local.pu = w->pu;
+    local.pv = w->pv;
+    local.gid = w->gid;
+    local.tri = (ubuf){t->tri.v + 3 * e->tri, 0, 0};
+    local.tpatch = (ubuf){t->tpatch.v + e->tri, 0, 0};
+    local.xc = (xbuf){t->xc.corner + 3 * e->tri, t->xc.uv + 6 * e->tri, 0, 0};
+    if (t->strips) {
+        local.sstart = (ubuf){t->sstart.v + e->strip, 0, 0};
+        local.sidx = (ubuf){t->sidx.v + e->sidx, 0, 0};
+    }
+    emit_patch(&local, p);
+    e->ntri = local.tpatch.n;
+    e->nstrip = local.sstart.n;
+    e->nsidx = local.sidx.n;
+    e->nx = local.xc.n;
     return BS_OK;
+}
+
+/* Move part e of the arrays down to the ends of t's arrays, shifting its offsets. */
+static void append_part(tess *t, const emit_part *e)
+{
+    memmove(t->tri.v + t->tri.n, t->tri.v + 3 * e->tri, 3 * e->ntri * sizeof(uint32_t));
+    memmove(t->tpatch.v + t->tpatch.n, t->tpatch.v + e->tri, e->ntri * sizeof(uint32_t));
+    for (size_t k = 0; k < e->nx; k++) {
+        t->xc.corner[t->xc.n + k] = t->xc.corner[3 * e->tri + k] + t->tri.n;
+        memmove(t->xc.uv + 2 * (t->xc.n + k), t->xc.uv + 6 * e->tri + 2 * k, 2 * sizeof(double));
+    }
+    if (t->strips) {
+        memmove(t->sidx.v + t->sidx.n, t->sidx.v + e->sidx, e->nsidx * sizeof(uint32_t));
+        for (size_t k = 0; k < e->nstrip; k++)
+            t->sstart.v[t->sstart.n + k] = t->sstart.v[e->strip + k] + (uint32_t)t->sidx.n;
+    }
+    t->tri.n += 3 * e->ntri;
+    t->tpatch.n += e->ntri;
+    t->xc.n += e->nx;
+    t->sidx.n += e->nsidx;
+    t->sstart.n += e->nstrip;
+}
+
+bs_status bsi_tess_emit_parallel(tess *t, size_t workers)
+{
+    /* find without compressing paths: the threads only read parent */
+    for (size_t k = 0; k < t->nslot; k++)
+        t->parent[k] = uf_find(t->parent, k);
+    emit_part *part = calloc(t->np, sizeof(emit_part));
+    tess *scratch = calloc(workers, sizeof(tess));
+    size_t gmax = 1, gids = 1, tri = 0, strip = 0, sidx = 0;
+    for (size_t p = 0; part != NULL && p < t->np; p++) {
+        const patch_plan *pl = &t->plan[p];
+        size_t pt, ps, pi;
+        patch_room(pl, &pt, &ps, &pi);
+        part[p] = (emit_part){tri, strip, sidx, 0, 0, 0, 0};
+        tri += pt;
+        strip += ps;
+        sidx += pi;
+        gmax = pl->gu > gmax ? pl->gu : gmax;
+        gmax = pl->gv > gmax ? pl->gv : gmax;
+        gids = (pl->gu + 1) * (pl->gv + 1) > gids ? (pl->gu + 1) * (pl->gv + 1) : gids;
+    }
+    bs_status st = part && scratch ? BS_OK : BS_ERR_NO_MEMORY;
+    for (size_t k = 0; st == BS_OK && k < workers; k++) {
+        scratch[k].pu = malloc((gmax + 1) * sizeof(double));
+        scratch[k].pv = malloc((gmax + 1) * sizeof(double));
+        scratch[k].gid = calloc(gids, sizeof(uint32_t));
+        if (!scratch[k].pu || !scratch[k].pv || !scratch[k].gid)
+            st = BS_ERR_NO_MEMORY;
+    }
+    emit_job job = {t, scratch, part};
+    if (st == BS_OK)
+        st = bsi_parallel(workers, t->np, emit_task, &job);
+    for (size_t p = 0; st == BS_OK && p < t->np; p++)
+        append_part(t, &part[p]);
+    for (size_t k = 0; scratch != NULL && k < workers; k++) {
+        free(scratch[k].pu);
+        free(scratch[k].pv);
+        free(scratch[k].gid);
+    }
+    free(scratch);
+    free(part);
+    return st;
 }
 
 /* The corner list had room for every corner; keep only the few used (the mesh lives long). */

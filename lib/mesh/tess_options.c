@@ -18,6 +18,7 @@ void bs_tess_options_init(bs_tess_options *o)
     o->nu = 16;
     o->nv = 16;
     o->tolerance = 1e-3;
+    o->threads = 1; /* single-threaded unless asked */
 }
 
 /* Check the options and start t with the rates of their method (subdivision needs no t). */
@@ -51,8 +52,11 @@ bs_status bs_surface_tessellate(const bs_surface *s, const bs_tess_options *o, b
     bs_status st = start(&t, s, o);
     if (st == BS_OK && o->method == BS_TESS_SUBDIVIDE)
         return bsi_tess_subdivide(s, bsi_tess_absolute_tolerance(s, o->tolerance, o->flags), o->flags,
-                                  o->max_vertices, o->max_triangles, out);
-    return st == BS_OK ? bsi_tess_build(&t, o->max_vertices, o->max_triangles, out) : st;
+                                  o->max_vertices, o->max_triangles, o->threads, out);
+    if (st != BS_OK)
+        return st;
+    t.threads = o->threads;
+    return bsi_tess_build(&t, o->max_vertices, o->max_triangles, out);
 }
 
 bs_status bs_surface_tessellate_count(const bs_surface *s, const bs_tess_options *o, size_t *vertices,

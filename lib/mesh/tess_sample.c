@@ -14,19 +14,20 @@ static int normal_bad(unsigned char kind, double x, double y, double z)
     return kind == BS_NORMAL_UNDEFINED || !(fabs(len - 1.0) < 1e-6);
 }
 
-/* Move nr x nj grid results (rows i0.., by coordinate in t->soa) into the mesh's packed arrays at
+/* Move nr x nj grid results (rows i0.., by coordinate in w->soa) into the mesh's packed arrays at
  * vertex `first`, with their (u,v) and patch id; count the normals to repair. */
-static void store_block(tess *t, uint32_t patch, size_t first, size_t i0, size_t nr, size_t nj)
+static void store_block(const tess *t, tess_scratch *w, uint32_t patch, size_t first, size_t i0, size_t nr,
+                        size_t nj)
 {
-    const double *restrict x = t->soa, *restrict y = x + GRID_CHUNK, *restrict z = y + GRID_CHUNK;
+    const double *restrict x = w->soa, *restrict y = x + GRID_CHUNK, *restrict z = y + GRID_CHUNK;
     const double *restrict nx = z + GRID_CHUNK, *restrict ny = nx + GRID_CHUNK, *restrict nz = ny + GRID_CHUNK;
-    const double *restrict pv = t->pv + 1;
+    const double *restrict pv = w->pv + 1;
     double *restrict pos = t->pos + 3 * first, *restrict nrm = t->nrm + 3 * first, *restrict uv = t->uv + 2 * first;
     uint32_t *restrict vp = t->vpatch + first;
     const unsigned char *restrict kind = t->kind + first;
     size_t bad = 0;
     for (size_t r = 0, k = 0; r < nr; r++) {
-        double u = t->pu[1 + i0 + r];
+        double u = w->pu[1 + i0 + r];
         for (size_t j = 0; j < nj; j++, k++) {
             pos[3 * k] = x[k];
             pos[3 * k + 1] = y[k];
@@ -45,7 +46,7 @@ static void store_block(tess *t, uint32_t patch, size_t first, size_t i0, size_t
         if (!(fabs(q - 1.0) < 1e-6) || kind[k] == BS_NORMAL_UNDEFINED)
             bad += (size_t)normal_bad(kind[k], nx[k], ny[k], nz[k]);
     }
-    t->nbad += bad;
+    w->nbad += bad;
 }
 
 /* Views of coordinates 0..2 of the packed triples x[3*first ...], n elements. */
@@ -58,7 +59,7 @@ static void triple_views(double *x, size_t first, size_t n, bs_view out[3])
     }
 }
 
-bs_status bsi_tess_eval_list(tess *t, uint32_t p, size_t first, size_t n)
+bs_status bsi_tess_eval_list(const tess *t, uint32_t p, size_t first, size_t n, size_t *nbad)
 {
     for (size_t id = first; id < first + n; id++)
         t->vpatch[id] = p;
@@ -74,69 +75,112 @@ bs_status bsi_tess_eval_list(tess *t, uint32_t p, size_t first, size_t n)
         return st;
     for (size_t id = first; id < first + n; id++) {
         const double *nr = t->nrm + 3 * id;
-        t->nbad += (size_t)normal_bad(t->kind[id], nr[0], nr[1], nr[2]);
+        *nbad += (size_t)normal_bad(t->kind[id], nr[0], nr[1], nr[2]);
     }
     return BS_OK;
 }
 
-/* Parameters of every vertex, then positions and normals patch by patch: the patch's own side
- * samples (vertices vert0..inner0-1) as a list, its interior grid in one grid call. */
-bs_status bsi_tess_evaluate(tess *t)
+/* Largest grid of any patch, per direction (at least 1). */
+static size_t max_grid(const tess *t)
 {
-    size_t nv = t->nvert, gmax = 1;
+    size_t gmax = 1;
     for (size_t p = 0; p < t->np; p++) {
         gmax = t->plan[p].gu > gmax ? t->plan[p].gu : gmax;
         gmax = t->plan[p].gv > gmax ? t->plan[p].gv : gmax;
     }
+    return gmax;
+}
+
+/* Patch p: its side samples' parameters, those samples (vertices vert0..inner0-1) as a list, its
+ * interior as one grid in blocks of rows. Writes only patch p's vertices: patches run in parallel. */
+static bs_status sample_patch(const tess *t, size_t p, tess_scratch *w)
+{
+    const patch_plan *pl = &t->plan[p];
+    const bs_patch *patch = bs_surface_get(t->s, p);
+    for (int s = 0; s < 4; s++)
+        for (size_t k = 0; k <= pl->e[s]; k++) {
+            size_t slot = side_slot(pl, s, k);
+            if (t->parent[slot] != slot) /* roots are final after the plan: no path to compress */
+                continue;
+            uint32_t id = t->slot_vert[slot];
+            side_param(pl, s, k, &t->uv[2 * (size_t)id], &t->uv[2 * (size_t)id + 1]);
+        }
+    bs_status st = bsi_tess_eval_list(t, (uint32_t)p, pl->vert0, pl->inner0 - pl->vert0, &w->nbad);
+    size_t ni = pl->gu - 1, nj = pl->gv - 1;
+    if (st != BS_OK || ni == 0 || nj == 0)
+        return st;
+    grid_params(w->pu, pl->gu);
+    grid_params(w->pv, pl->gv);
+    bs_view pos[3], nrm[3];
+    /* blocks of whole rows, evaluated by coordinate, then interleaved into the mesh */
+    size_t rows = GRID_CHUNK / nj;
+    for (size_t i0 = 0; i0 < ni; i0 += rows) {
+        size_t nr = ni - i0 < rows ? ni - i0 : rows, npt = nr * nj, first = pl->inner0 + i0 * nj;
+        bs_cview gu = {w->pu + 1 + i0, nr, (ptrdiff_t)sizeof(double)};
+        bs_cview gv = {w->pv + 1, nj, (ptrdiff_t)sizeof(double)};
+        for (size_t c = 0; c < 3; c++) {
+            pos[c].data = w->soa + c * GRID_CHUNK;
+            nrm[c].data = w->soa + (3 + c) * GRID_CHUNK;
+            pos[c].count = nrm[c].count = npt;
+            pos[c].stride = nrm[c].stride = (ptrdiff_t)sizeof(double);
+        }
+        st = bs_patch_eval_grid(patch, nr, &gu, nj, &gv, pos, NULL, NULL, nrm, t->kind + first);
+        if (st != BS_OK)
+            return st;
+        store_block(t, w, (uint32_t)p, first, i0, nr, nj);
+    }
+    return BS_OK;
+}
+
+typedef struct sample_job { const tess *t; tess_scratch *w; } sample_job;
+
+static bs_status sample_task(void *ctx, size_t p, size_t worker)
+{
+    sample_job *job = ctx;
+    return sample_patch(job->t, p, &job->w[worker]);
+}
+
+/* Scratch of `workers` threads in t->work, each for grids up to gmax (freed by bsi_tess_free); one
+ * thread allocates no more than its block of rows (its parameters are t->pu, t->pv). */
+static bs_status scratch_alloc(tess *t, size_t workers, size_t gmax)
+{
+    t->work = workers > 1 ? calloc(workers, sizeof(tess_scratch)) : &t->work1;
+    if (t->work == NULL)
+        return BS_ERR_NO_MEMORY;
+    t->nwork = workers;
+    t->work1 = (tess_scratch){t->pu, t->pv, NULL, 0};
+    for (size_t k = 0; k < workers; k++) {
+        tess_scratch *w = &t->work[k];
+        w->pu = workers > 1 ? malloc((gmax + 1) * sizeof(double)) : t->pu;
+        w->pv = workers > 1 ? malloc((gmax + 1) * sizeof(double)) : t->pv;
+        w->soa = malloc(6 * GRID_CHUNK * sizeof(double));
+        if (!w->pu || !w->pv || !w->soa)
+            return BS_ERR_NO_MEMORY;
+    }
+    return BS_OK;
+}
+
+/* The mesh's vertex arrays, then every patch sampled, on up to t->threads threads. */
+bs_status bsi_tess_evaluate(tess *t)
+{
+    size_t nv = t->nvert, gmax = max_grid(t), workers = bsi_thread_count(t->threads, t->np);
     t->pos = malloc((nv ? nv : 1) * 3 * sizeof(double));
     t->nrm = malloc((nv ? nv : 1) * 3 * sizeof(double));
     t->uv = malloc((nv ? nv : 1) * 2 * sizeof(double));
     t->vpatch = malloc((nv ? nv : 1) * sizeof(uint32_t));
     t->kind = malloc(nv ? nv : 1);
-    t->pu = malloc((gmax + 1) * sizeof(double));
+    t->pu = malloc((gmax + 1) * sizeof(double)); /* for the emission phase */
     t->pv = malloc((gmax + 1) * sizeof(double));
-    t->soa = malloc(6 * GRID_CHUNK * sizeof(double));
-    if (!t->pos || !t->nrm || !t->uv || !t->vpatch || !t->kind || !t->pu || !t->pv || !t->soa)
+    if (!t->pos || !t->nrm || !t->uv || !t->vpatch || !t->kind || !t->pu || !t->pv)
         return BS_ERR_NO_MEMORY;
-    for (size_t p = 0; p < t->np; p++) {
-        const patch_plan *pl = &t->plan[p];
-        const bs_patch *patch = bs_surface_get(t->s, p);
-        for (int s = 0; s < 4; s++)
-            for (size_t k = 0; k <= pl->e[s]; k++) {
-                size_t slot = side_slot(pl, s, k);
-                if (uf_find(t->parent, slot) != slot)
-                    continue;
-                uint32_t id = t->slot_vert[slot];
-                side_param(pl, s, k, &t->uv[2 * (size_t)id], &t->uv[2 * (size_t)id + 1]);
-            }
-        bs_status st = bsi_tess_eval_list(t, (uint32_t)p, pl->vert0, pl->inner0 - pl->vert0);
-        if (st != BS_OK)
-            return st;
-        bs_view pos[3], nrm[3];
-        size_t ni = pl->gu - 1, nj = pl->gv - 1;
-        if (ni == 0 || nj == 0)
-            continue;
-        grid_params(t->pu, pl->gu);
-        grid_params(t->pv, pl->gv);
-        /* blocks of whole rows, evaluated by coordinate, then interleaved into the mesh */
-        size_t rows = GRID_CHUNK / nj;
-        for (size_t i0 = 0; i0 < ni; i0 += rows) {
-            size_t nr = ni - i0 < rows ? ni - i0 : rows, npt = nr * nj, first = pl->inner0 + i0 * nj;
-            bs_cview gu = {t->pu + 1 + i0, nr, (ptrdiff_t)sizeof(double)};
-            bs_cview gv = {t->pv + 1, nj, (ptrdiff_t)sizeof(double)};
-            for (size_t c = 0; c < 3; c++) {
-                pos[c].data = t->soa + c * GRID_CHUNK;
-                nrm[c].data = t->soa + (3 + c) * GRID_CHUNK;
-                pos[c].count = nrm[c].count = npt;
-                pos[c].stride = nrm[c].stride = (ptrdiff_t)sizeof(double);
-            }
-            st = bs_patch_eval_grid(patch, nr, &gu, nj, &gv, pos, NULL, NULL, nrm, t->kind + first);
-            if (st != BS_OK)
-                return st;
-            store_block(t, (uint32_t)p, first, i0, nr, nj);
-        }
-    }
-    return BS_OK;
+    bs_status st = scratch_alloc(t, workers, gmax);
+    if (st != BS_OK)
+        return st;
+    sample_job job = {t, t->work};
+    st = bsi_parallel(workers, t->np, sample_task, &job);
+    for (size_t k = 0; k < workers; k++)
+        t->nbad += t->work[k].nbad;
+    return st;
 }
 
 /* Normals the surface does not define at a vertex (kind UNDEFINED, or not unit) become the

@@ -51,7 +51,15 @@ void bsi_tess_free(tess *t)
     free(t->pu);
     free(t->pv);
     free(t->gid);
-    free(t->soa);
+    for (size_t k = 0; t->work != NULL && k < t->nwork; k++) {
+        if (t->work != &t->work1) { /* one thread's parameters are t->pu, t->pv */
+            free(t->work[k].pu);
+            free(t->work[k].pv);
+        }
+        free(t->work[k].soa);
+    }
+    if (t->work != &t->work1)
+        free(t->work);
 }
 
 bs_status bsi_tess_check(const bs_surface *s, int flags)
@@ -153,6 +161,7 @@ static bs_status tess_init(tess *t, const bs_surface *s, int flags)
     t->s = s;
     t->np = bs_surface_count(s);
     t->strips = (flags & BS_TESS_STRIPS) != 0;
+    t->threads = 1;
     t->plan = calloc(t->np ? t->np : 1, sizeof(patch_plan));
     return t->plan ? BS_OK : BS_ERR_NO_MEMORY;
 }

@@ -11,30 +11,6 @@
 #include <string.h>
 #include <sys/resource.h>
 
-static int same_bytes(const void *a, const void *b, size_t n) { return n == 0 || memcmp(a, b, n) == 0; }
-
-/* Every array of both meshes equal, bit for bit. */
-static int same_mesh(const bs_mesh *ma, const bs_mesh *mb)
-{
-    mesh_data a, b;
-    read_mesh(ma, &a);
-    read_mesh(mb, &b);
-    int same = a.nv == b.nv && a.nt == b.nt && a.ns == b.ns && a.nsi == b.nsi;
-    if (same)
-        same = same_bytes(a.pos, b.pos, 3 * a.nv * sizeof(double)) &&
-               same_bytes(a.nrm, b.nrm, 3 * a.nv * sizeof(double)) &&
-               same_bytes(a.uv, b.uv, 2 * a.nv * sizeof(double)) &&
-               same_bytes(a.cuv, b.cuv, 6 * a.nt * sizeof(double)) &&
-               same_bytes(a.tri, b.tri, 3 * a.nt * sizeof(uint32_t)) &&
-               same_bytes(a.tpatch, b.tpatch, a.nt * sizeof(uint32_t)) &&
-               same_bytes(a.vpatch, b.vpatch, a.nv * sizeof(uint32_t)) &&
-               same_bytes(a.sidx, b.sidx, a.nsi * sizeof(uint32_t)) &&
-               same_bytes(a.sstart, b.sstart, (a.ns + 1) * sizeof(uint32_t));
-    free_mesh(&a);
-    free_mesh(&b);
-    return same;
-}
-
 /* The mesh of o equals the 1.0 tessellator's (ref), and the counts are the mesh's. */
 static void check_against(const bs_surface *s, const bs_tess_options *o, bs_mesh *ref, const char *what)
 {

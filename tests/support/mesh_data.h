@@ -9,6 +9,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct mesh_data {
     size_t nv, nt, ns, nsi;
@@ -54,6 +55,29 @@ static void free_mesh(mesh_data *d)
     free(d->tpatch); free(d->vpatch); free(d->sidx); free(d->sstart);
 }
 
+static inline int same_bytes(const void *a, const void *b, size_t n) { return n == 0 || memcmp(a, b, n) == 0; }
+
+/* Every array of both meshes equal, bit for bit. */
+static inline int same_mesh(const bs_mesh *ma, const bs_mesh *mb)
+{
+    mesh_data a, b;
+    read_mesh(ma, &a);
+    read_mesh(mb, &b);
+    int same = a.nv == b.nv && a.nt == b.nt && a.ns == b.ns && a.nsi == b.nsi;
+    if (same)
+        same = same_bytes(a.pos, b.pos, 3 * a.nv * sizeof(double)) &&
+               same_bytes(a.nrm, b.nrm, 3 * a.nv * sizeof(double)) &&
+               same_bytes(a.uv, b.uv, 2 * a.nv * sizeof(double)) &&
+               same_bytes(a.cuv, b.cuv, 6 * a.nt * sizeof(double)) &&
+               same_bytes(a.tri, b.tri, 3 * a.nt * sizeof(uint32_t)) &&
+               same_bytes(a.tpatch, b.tpatch, a.nt * sizeof(uint32_t)) &&
+               same_bytes(a.vpatch, b.vpatch, a.nv * sizeof(uint32_t)) &&
+               same_bytes(a.sidx, b.sidx, a.nsi * sizeof(uint32_t)) &&
+               same_bytes(a.sstart, b.sstart, (a.ns + 1) * sizeof(uint32_t));
+    free_mesh(&a);
+    free_mesh(&b);
+    return same;
+}
 
 /* Append a 3-D patch of degrees (m, n) made from net (and weights w, or NULL) to s. */
 static void add_patch(bs_surface *s, size_t m, size_t n, const double *net, const double *w)

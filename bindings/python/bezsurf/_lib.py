@@ -88,7 +88,7 @@ class CTessOptions(ctypes.Structure):
 
     _fields_ = [("size", c_size_t), ("method", c_int), ("flags", c_int), ("nu", c_size_t),
                 ("nv", c_size_t), ("tolerance", c_double), ("max_vertices", c_size_t),
-                ("max_triangles", c_size_t)]
+                ("max_triangles", c_size_t), ("threads", c_size_t)]
 
 
 class _Status:
@@ -169,6 +169,9 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_locator_destroy", (HANDLE,), None),
     ("bs_locator_dim", (HANDLE,), c_size_t),
     ("bs_locator_closest_point", (HANDLE, c_size_t, CVIEW, IDS, VIEWS, VIEWS, VIEWS), STATUS),
+    ("bs_surface_eval_mt", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS, c_size_t), STATUS),
+    ("bs_surface_eval_grid", (HANDLE, c_size_t, CVIEW, c_size_t, CVIEW, VIEWS, VIEWS, VIEWS, VIEWS, BYTES,
+                              c_size_t), STATUS),
     ("bs_locator_intersect", (HANDLE, c_size_t, CVIEW, CVIEW, CVIEW, IDS, VIEWS, VIEWS, VIEWS),
      STATUS),
     # continuity.h

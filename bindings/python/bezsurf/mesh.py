@@ -25,12 +25,13 @@ OutArray = Optional["npt.NDArray[Any]"]
 
 
 def tess_options(method: int, flags: int, nu: int, nv: int, tolerance: float,
-                 max_vertices: int, max_triangles: int) -> CTessOptions:
+                 max_vertices: int, max_triangles: int, threads: int = 1) -> CTessOptions:
     """A ``bs_tess_options`` filled by the library's defaults, then with these values."""
     o = CTessOptions()
     LIB.bs_tess_options_init(ctypes.byref(o))
     o.method, o.flags, o.nu, o.nv = method, flags, nu, nv
     o.tolerance, o.max_vertices, o.max_triangles = tolerance, max_vertices, max_triangles
+    o.threads = threads
     return o
 
 

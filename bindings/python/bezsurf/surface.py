@@ -309,44 +309,46 @@ class Surface(Handle):
     # ---- evaluation --------------------------------------------------------------------------
     @overload
     def eval(self, ids: int, u: float, v: float, *, derivatives: Literal[False] = ...,
-             normals: Literal[False] = ..., out: OutArray = ...) -> Point: ...
+             normals: Literal[False] = ..., out: OutArray = ..., threads: int = ...) -> Point: ...
 
     @overload
     def eval(self, ids: Ids, u: ParamSeq, v: Params, *, derivatives: Literal[False] = ...,
-             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+             normals: Literal[False] = ..., out: OutArray = ..., threads: int = ...) -> Points: ...
 
     @overload
     def eval(self, ids: Ids, u: Params, v: ParamSeq, *, derivatives: Literal[False] = ...,
-             normals: Literal[False] = ..., out: OutArray = ...) -> Points: ...
+             normals: Literal[False] = ..., out: OutArray = ..., threads: int = ...) -> Points: ...
 
     @overload
     def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: Literal[True],
              normals: bool = ..., out: OutArray = ..., du_out: OutArray = ...,
              dv_out: OutArray = ..., normal_out: OutArray = ...,
-             kind_out: OutArray = ...) -> Evaluation: ...
+             kind_out: OutArray = ..., threads: int = ...) -> Evaluation: ...
 
     @overload
     def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = ...,
              normals: Literal[True], out: OutArray = ..., du_out: OutArray = ...,
              dv_out: OutArray = ..., normal_out: OutArray = ...,
-             kind_out: OutArray = ...) -> Evaluation: ...
+             kind_out: OutArray = ..., threads: int = ...) -> Evaluation: ...
 
     @overload
     def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = ...,
              normals: bool = ..., out: OutArray = ..., du_out: OutArray = ...,
              dv_out: OutArray = ..., normal_out: OutArray = ...,
-             kind_out: OutArray = ...) -> Union[PointOrPoints, Evaluation]: ...
+             kind_out: OutArray = ..., threads: int = ...) -> Union[PointOrPoints, Evaluation]: ...
 
     def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = False,
              normals: bool = False, out: OutArray = None, du_out: OutArray = None,
              dv_out: OutArray = None, normal_out: OutArray = None,
-             kind_out: OutArray = None) -> Any:
+             kind_out: OutArray = None, threads: int = 1) -> Any:
         """Evaluate at n scattered points: point k lies on patch ids[k] at (u[k], v[k]).
 
         ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
         Results and keyword arguments as :meth:`Patch.eval` (positions of shape (n, dim), or an
-        :class:`Evaluation`); sorting points by id is fastest.
+        :class:`Evaluation`); sorting points by id is fastest. ``threads`` threads evaluate the
+        positions and partials (0: one per CPU; since 1.1), with the same results.
         """
+        threads = A.integer(threads, "threads")
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
         call = _Call(u, v, inputs=[("ids", ids)])
         if isinstance(ids, numbers.Integral) and not isinstance(ids, bool) and not call.scalar:
@@ -370,8 +372,9 @@ class Surface(Handle):
                                        None if derivatives else pos.views, nrm.views,
                                        kinds.address)
         if derivatives or not normals:
-            LIB.bs_surface_eval(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
-                                dus.views if dus else None, dvs.views if dvs else None)
+            LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
+                                   dus.views if dus else None, dvs.views if dvs else None,
+                                   threads)
         del keep
         if not derivatives and not normals:
             return call.finish(pos.result())
@@ -410,27 +413,30 @@ class Surface(Handle):
 
     # ---- tessellation --------------------------------------------------------------------------
     def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False,
-                   max_vertices: int = 0, max_triangles: int = 0) -> Mesh:
+                   max_vertices: int = 0, max_triangles: int = 0, threads: int = 1) -> Mesh:
         """A crack-free triangle mesh with nu x nv segments per patch (nv defaults to nu);
         ``strips`` also builds triangle strips. ``max_vertices`` and ``max_triangles`` (0: no
-        limit) are budgets: a larger mesh raises SizeError before anything large is allocated."""
+        limit) are budgets: a larger mesh raises SizeError before anything large is allocated.
+        ``threads`` threads sample the vertices (0: one per CPU; since 1.1); the mesh is the same
+        bit for bit whatever their number."""
         args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, max_vertices,
-                               max_triangles)
-        if not (max_vertices or max_triangles):
+                               max_triangles, threads)
+        if not (max_vertices or max_triangles) and args[7] == 1:
             return Mesh._tessellate(self.clone(), "uniform", (args[2], args[3], args[1]))
         return Mesh._tessellate(self.clone(), "options", args)
 
     def tessellate_adaptive(self, tolerance: float, *, relative: bool = False,
                             strips: bool = False, subdivide: bool = False,
-                            max_vertices: int = 0, max_triangles: int = 0) -> Mesh:
+                            max_vertices: int = 0, max_triangles: int = 0,
+                            threads: int = 1) -> Mesh:
         """A crack-free mesh whose triangles lie within ``tolerance`` of the surface (a distance,
         or with ``relative`` a fraction of the control points' bounding-box diagonal). One
         segment count per patch, or with ``subdivide`` a quadtree of sub-patches refined only
-        where the surface curves (since 1.1). Budgets as in :meth:`tessellate`."""
+        where the surface curves (since 1.1). Budgets and threads as in :meth:`tessellate`."""
         method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
         args = self._tess_args(method, 16, 16, tolerance, relative, strips, max_vertices,
-                               max_triangles)
-        if method == TessMethod.PER_PATCH and not (max_vertices or max_triangles):
+                               max_triangles, threads)
+        if method == TessMethod.PER_PATCH and not (max_vertices or max_triangles) and args[7] == 1:
             return Mesh._tessellate(self.clone(), "adaptive", (args[4], args[1]))
         return Mesh._tessellate(self.clone(), "options", args)
 
@@ -454,13 +460,14 @@ class Surface(Handle):
 
     @staticmethod
     def _tess_args(method: int, nu: Any, nv: Any, tolerance: Any, relative: bool, strips: bool,
-                   max_vertices: Any, max_triangles: Any) -> Tuple[Any, ...]:
+                   max_vertices: Any, max_triangles: Any, threads: Any = 1) -> Tuple[Any, ...]:
         """The checked fields of a bs_tess_options, in the order tess_options() takes them."""
         nu = A.integer(nu, "nu")
         nv = nu if nv is None else A.integer(nv, "nv")
         flags = (1 if relative else 0) | (2 if strips else 0)
         return (int(method), flags, nu, nv, A.real(tolerance, "tolerance"),
-                A.integer(max_vertices, "max_vertices"), A.integer(max_triangles, "max_triangles"))
+                A.integer(max_vertices, "max_vertices"), A.integer(max_triangles, "max_triangles"),
+                A.integer(threads, "threads"))
 
     def locator(self) -> "Locator":
         """A :class:`Locator` for closest points and rays on this surface (since 1.1)."""

@@ -157,5 +157,34 @@ class TessOptionsTest(PlainTestCase):
         self.assertEqual(copy.copy(m).triangle_count, st)          # the recipe remakes it
 
 
+@requires("bs_surface_tessellate", "bs_surface_eval_mt")
+class ThreadsTest(PlainTestCase):
+    """threads= gives the results of one thread, bit for bit."""
+
+    def test_tessellate(self):
+        s = bezsurf.Surface.builtin("teapot")
+        one = s.tessellate(12, 7)
+        for n in (2, 0):
+            m = s.tessellate(12, 7, threads=n)
+            self.assertEqual(plain(m.positions()), plain(one.positions()))
+            self.assertEqual(plain(m.triangles()), plain(one.triangles()))
+        sub = s.tessellate_adaptive(1e-3, relative=True, subdivide=True, threads=2)
+        ref = s.tessellate_adaptive(1e-3, relative=True, subdivide=True)
+        self.assertEqual(plain(sub.normals()), plain(ref.normals()))
+        with self.assertRaises((TypeError, ValueError)):
+            s.tessellate(4, threads=-1)
+
+    def test_eval(self):
+        s = bezsurf.Surface.builtin("teapot")
+        n = 9000
+        ids = [k % 32 for k in range(n)]
+        u = [(k % 97) / 96 for k in range(n)]
+        v = [(k % 89) / 88 for k in range(n)]
+        one = s.eval(ids, u, v, derivatives=True)
+        two = s.eval(ids, u, v, derivatives=True, threads=2)
+        self.assertEqual(plain(one.position), plain(two.position))
+        self.assertEqual(plain(one.du), plain(two.du))
+
+
 if __name__ == "__main__":
     unittest.main()

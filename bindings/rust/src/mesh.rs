@@ -89,12 +89,20 @@ pub struct TessOptions {
     tolerance: f64,
     max_vertices: usize,
     max_triangles: usize,
+    threads: usize,
 }
 
 impl TessOptions {
     /// Options for `method` with no flags, tolerance 1e-3 and no budget.
     pub fn new(method: TessMethod) -> TessOptions {
-        TessOptions { method, flags: TessFlags::NONE, tolerance: 1e-3, max_vertices: 0, max_triangles: 0 }
+        TessOptions {
+            method,
+            flags: TessFlags::NONE,
+            tolerance: 1e-3,
+            max_vertices: 0,
+            max_triangles: 0,
+            threads: 1,
+        }
     }
 
     /// The tolerance of the adaptive methods (with [`TessFlags::RELATIVE`], a fraction of the
@@ -123,6 +131,13 @@ impl TessOptions {
         self
     }
 
+    /// Threads sampling the vertices, the calling one included (default 1, none started; 0: one
+    /// per online CPU). The mesh is the same bit for bit whatever their number.
+    pub fn threads(mut self, n: usize) -> TessOptions {
+        self.threads = n;
+        self
+    }
+
     fn raw(&self) -> sys::bs_tess_options {
         let mut o = std::mem::MaybeUninit::<sys::bs_tess_options>::uninit();
         // SAFETY: the library fills every field of the struct it is given.
@@ -143,6 +158,7 @@ impl TessOptions {
         o.tolerance = self.tolerance;
         o.max_vertices = self.max_vertices;
         o.max_triangles = self.max_triangles;
+        o.threads = self.threads;
         o
     }
 }

@@ -17,7 +17,21 @@ impl Surface {
         ids: &[u32],
         u: impl Into<Strided<'u>>,
         v: impl Into<Strided<'v>>,
+        out: Outputs<'_>,
+    ) -> Result<()> {
+        self.eval_threads(ids, u, v, out, 1)
+    }
+
+    /// [`Surface::eval`] on up to `threads` threads, the calling one included
+    /// (`bs_surface_eval_mt`, since 1.1; 0: one per online CPU). The results are the same bit
+    /// for bit whatever the number of threads.
+    pub fn eval_threads<'u, 'v>(
+        &self,
+        ids: &[u32],
+        u: impl Into<Strided<'u>>,
+        v: impl Into<Strided<'v>>,
         mut out: Outputs<'_>,
+        threads: usize,
     ) -> Result<()> {
         if out.nrm.is_some() {
             return Err(not_computed("normal", "Surface::eval", "Surface::eval_normal"));
@@ -43,7 +57,7 @@ impl Surface {
         // SAFETY: ids holds n values; every view stays inside the slice it was built from; the
         // output views come from exclusive borrows and do not overlap.
         check(unsafe {
-            crate::sys::bs_surface_eval(
+            crate::sys::bs_surface_eval_mt(
                 self.as_ptr(),
                 n,
                 ids.as_ptr(),
@@ -52,6 +66,7 @@ impl Surface {
                 pos.as_ptr(),
                 du.as_ptr(),
                 dv.as_ptr(),
+                threads,
             )
         })
         .map_err(|e| name_short_output(e, n, &[&pos, &du, &dv]))

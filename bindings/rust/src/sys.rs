@@ -231,6 +231,9 @@ pub struct bs_tess_options {
     pub max_vertices: usize,
     /// Budget on triangles; 0 = only the 32-bit index limit.
     pub max_triangles: usize,
+    /// Threads sampling the vertices, the calling one included; 1 (default) = none started,
+    /// 0 = one per online CPU.
+    pub threads: usize,
 }
 
 /// A strided float output view (`bs_fview`, core.h, since 1.1): stride in bytes, 0 = packed.
@@ -455,6 +458,33 @@ extern "C" {
         pos: *const bs_view,
         nrm: *const bs_view,
         kind: *mut c_uchar,
+    ) -> bs_status;
+    /// `bs_surface_eval` on up to `threads` threads (0 = one per online CPU), same results (since 1.1).
+    pub fn bs_surface_eval_mt(
+        s: *const bs_surface,
+        n: usize,
+        ids: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        du: *const bs_view,
+        dv: *const bs_view,
+        threads: usize,
+    ) -> bs_status;
+    /// The same nu x nv grid on every patch, point (a, b) of patch p at (p*nu + a)*nv + b, on up to
+    /// `threads` threads (since 1.1).
+    pub fn bs_surface_eval_grid(
+        s: *const bs_surface,
+        nu: usize,
+        u: *const bs_cview,
+        nv: usize,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        du: *const bs_view,
+        dv: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut c_uchar,
+        threads: usize,
     ) -> bs_status;
 
     // ---- continuity.h ----

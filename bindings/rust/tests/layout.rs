@@ -58,7 +58,7 @@ int main(void)
     SIZE(bs_tess_options); OFF(bs_tess_options, size); OFF(bs_tess_options, method);
     OFF(bs_tess_options, flags); OFF(bs_tess_options, nu); OFF(bs_tess_options, nv);
     OFF(bs_tess_options, tolerance); OFF(bs_tess_options, max_vertices);
-    OFF(bs_tess_options, max_triangles);
+    OFF(bs_tess_options, max_triangles); OFF(bs_tess_options, threads);
     CONST(BS_MESH_OBJ); CONST(BS_MESH_PLY); CONST(BS_MESH_PLY_ASCII); CONST(BS_MESH_STL);
     return 0;
 }
@@ -175,6 +175,7 @@ fn sys_matches_the_c_header() {
         ("offset bs_tess_options.tolerance", offset_of!(sys::bs_tess_options, tolerance) as i64),
         ("offset bs_tess_options.max_vertices", offset_of!(sys::bs_tess_options, max_vertices) as i64),
         ("offset bs_tess_options.max_triangles", offset_of!(sys::bs_tess_options, max_triangles) as i64),
+        ("offset bs_tess_options.threads", offset_of!(sys::bs_tess_options, threads) as i64),
     ];
     let consts: [(&str, i64); 36] = [
         ("BS_OK", sys::BS_OK as i64),

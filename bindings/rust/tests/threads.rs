@@ -78,13 +78,15 @@ fn patches_and_surfaces_are_send_and_sync() {
     check::<bezsurf::Locator>();
 }
 
+/// Positions and normals of a mesh as raw bits, and its triangles.
+fn snapshot(m: &bezsurf::Mesh) -> (Vec<u64>, Vec<u32>) {
+    let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
+    (bits, m.triangles())
+}
+
 #[test]
 fn tessellating_one_surface_from_several_threads_matches_serial() {
     let teapot = Surface::builtin("teapot").unwrap();
-    let snapshot = |m: &bezsurf::Mesh| {
-        let bits: Vec<u64> = [m.positions(), m.normals()].concat().into_iter().map(f64::to_bits).collect();
-        (bits, m.triangles())
-    };
     let serial = snapshot(&teapot.tessellate_adaptive(1e-3, bezsurf::TessFlags::RELATIVE).unwrap());
     let teapot = &teapot;
     thread::scope(|scope| {
@@ -95,4 +97,25 @@ fn tessellating_one_surface_from_several_threads_matches_serial() {
             assert!(snapshot(&h.join().unwrap()) == serial);
         }
     });
+}
+
+#[test]
+fn thread_counts_give_the_mesh_and_points_of_one_thread() {
+    use bezsurf::{TessMethod, TessOptions};
+    let teapot = Surface::builtin("teapot").unwrap();
+    for method in [TessMethod::Uniform { nu: 11, nv: 6 }, TessMethod::PerPatch, TessMethod::Subdivide] {
+        let opts = TessOptions::new(method).flags(bezsurf::TessFlags::RELATIVE);
+        let one = snapshot(&teapot.tessellate(&opts).unwrap());
+        for n in [2, 0] {
+            assert!(snapshot(&teapot.tessellate(&opts.threads(n)).unwrap()) == one);
+        }
+    }
+    let n = 9000;
+    let ids: Vec<u32> = (0..n).map(|k| (k % 32) as u32).collect();
+    let u: Vec<f64> = (0..n).map(|k| (k % 97) as f64 / 96.0).collect();
+    let v: Vec<f64> = (0..n).map(|k| (k % 89) as f64 / 88.0).collect();
+    let (mut a, mut b) = (vec![0.0; 3 * n], vec![0.0; 3 * n]);
+    teapot.eval(&ids, &u[..], &v[..], Outputs::new().pos(&mut a)).unwrap();
+    teapot.eval_threads(&ids, &u[..], &v[..], Outputs::new().pos(&mut b), 2).unwrap();
+    assert!(a.iter().map(|x| x.to_bits()).eq(b.iter().map(|x| x.to_bits())));
 }
