@@ -4,6 +4,7 @@
 #include "curvature_shade.h"
 #include "legend.h"
 #include "raycast.h"
+#include "closest_draw.h"
 #include "cmds.h"
 
 #include <math.h>
@@ -32,6 +33,8 @@ static const char usage[] =
     "                        scale); dark grey where undefined; a legend on the right (pictures of\n"
     "                        at least 240x100)\n"
     "      --nets            draw the patches' control nets over the surface\n"
+    "      --closest N       draw N points around the surface, each joined to its closest point\n"
+    "                        on the surface (red), 0..100000\n"
     "      --patch ID        render only patch ID\n"
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
     "                        the four sub-nets are drawn)\n"
@@ -51,6 +54,7 @@ typedef struct render_opts {
     double azimuth, elevation, rel, color[3];
     int up_y, up_given, nets, split, wire, method;
     size_t patch;  /* (size_t)-1: all */
+    size_t closest; /* --closest N: points of the cloud */
     int curvature; /* 0 none, 1 mean, 2 Gaussian */
     int rays;      /* ray-cast instead of tessellated */
     double unit;   /* the factor unit_scale() applied to the model */
@@ -125,6 +129,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
             if (strcmp(val, "mean") != 0 && strcmp(val, "gauss") != 0)
                 return cli_usage_error("render", "bad curvature (mean or gauss)", val);
             o->curvature = val[0] == 'm' ? 1 : 2;
+        } else if (strcmp(a, "--closest") == 0) {
+            if (!cli_parse_size(val, &o->closest) || o->closest > 100000)
+                return cli_usage_error("render", "bad point count for --closest (0..100000)", val);
         } else if (strcmp(a, "--patch") == 0) {
             if (!cli_parse_size(val, &o->patch) || o->patch == (size_t)-1)
                 return cli_usage_error("render", "bad patch id", val);
@@ -317,6 +324,13 @@ static int render(const render_opts *o, const bs_surface *s)
     if (rc == CLI_OK) {
         if (o->nets)
             draw_nets(&r, s);
+        if (o->closest > 0) {
+            bs_status st = closest_draw(&r, s, o->closest, lo, hi);
+            if (st != BS_OK)
+                rc = cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
+        }
+    }
+    if (rc == CLI_OK) {
         raster_finish(&r, rgb);
         if (o->curvature)
             legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
@@ -392,7 +406,7 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
-                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 1.0};
+                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;

@@ -8,7 +8,8 @@
 #   - pixels with a channel differing by more than 16 of 255: at most 0.5% (384);
 # and both pictures must show the surface (at least 3% of the pixels red: the thin teaspoon has
 # 4%). Also: --rays with --nets, --patch and --split, and with --curvature refused; models of
-# 1e-308, 1e-320 and 1e308 (tests/hostile/) drawn as the unit one, bit for bit.
+# 1e-308, 1e-320 and 1e308 (tests/hostile/) drawn as the unit one, bit for bit. And the
+# point cloud of --closest joined to its closest points.
 # usage: test_cli_rays.sh TOOL PNG_CHECK HOSTILE_DIR WORK_DIR
 tool=$1 pngcheck=$2 hostile=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" || exit 1
@@ -44,6 +45,17 @@ for f in tiny_box subnormal_box huge_box; do
 done
 expect 1 "rays with curvature" -- "$tool" render --rays --curvature mean -o "$work/no.png"
 check "grep -q 'do not go together' '$work/err'" "rays with curvature: message"
+
+# --closest N: the projections of a point cloud, their feet drawn red over a surface of the base
+# colour's blue (no red before); a count past 100000 refused.
+for n in 0 60; do
+    expect 0 "closest cloud of $n" -- "$tool" render --patch 4 --closest $n --color 0.2,0.3,0.9 --ss 1 \
+        --size 320x240 -o "$work/cloud$n.png"
+    expect 0 "closest cloud of $n: colours" -- "$pngcheck" --colors "$work/cloud$n.png" 0 0 319 239
+    eval "red$n=\$(field red)"
+done
+check "[ $red0 -eq 0 ] && [ $red60 -gt 60 ]" "the cloud's feet are drawn: red $red0 without, $red60 with"
+expect 1 "closest cloud too large" -- "$tool" render --closest 100001 -o "$work/no.png"
 
 echo "test_cli_rays: $checks checks, $fails failures"
 [ "$fails" -eq 0 ]
