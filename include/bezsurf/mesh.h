@@ -117,7 +117,8 @@ typedef struct bs_tess_options {
 } bs_tess_options;
 
 /**
- * @brief Fill an options struct with the defaults (uniform 16 x 16, tolerance 1e-3, no budget).
+ * @brief Fill an options struct with the defaults (uniform 16 x 16, tolerance 1e-3, no budget,
+ * one thread: the calling one).
  * @param[out] o  the options; NULL is a no-op.
  * @since 1.1
  */
