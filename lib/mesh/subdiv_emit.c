@@ -127,9 +127,10 @@ static bsi_corner point_corner(const subdiv *s, size_t g)
 static size_t put_side(emitter *x, size_t p, const leaf_sides *ls, int k, size_t n)
 {
     const subdiv *s = x->s;
-    size_t cnt = ls->l[k] - ls->f[k];
+    size_t first = ls->f[k], last = ls->l[k], cnt = last - first;
+    int reversed = k >= 2; /* top and left */
     for (size_t i = 0; i < cnt; i++) {
-        size_t r = k >= 2 ? ls->l[k] - 1 - i : ls->f[k] + i;
+        size_t r = reversed ? last - 1 - i : first + i;
         size_t g = s->pt0[p] + (k % 2 == 0 ? (size_t)(s->vu[s->pt0[p] + r] & ((UINT64_C(1) << 24) - 1)) : r);
         x->poly[n++] = point_corner(s, g);
     }
