@@ -203,8 +203,8 @@ BS_API bs_status bs_mesh_copy_positions(const bs_mesh *m, const bs_view xyz[3]);
 
 /**
  * @brief Copy the unit vertex normals into 3 views. Never NaN: where the surface has no normal at a
- * vertex (a net degenerate to a line) the average of the adjacent triangles' normals is used, or
- * (0,0,1) if that vanishes too.
+ * vertex (a net degenerate to a line) the average of the adjacent triangles' normals, weighted by
+ * their areas, is used, or (0,0,1) if that vanishes too.
  * @param[in]  m    the mesh.
  * @param[out] nrm  3 views: the normal's x, y and z of each vertex.
  * @return as bs_mesh_copy_positions().

@@ -334,6 +334,35 @@ static void test_ulp_tolerance(void)
     CHECKF(missed == 0, "%d of 4000 edges within a few ulps not matched", missed);
 }
 
+/* The worst case of the keys' rounding, built rather than searched for: every coordinate of B's
+ * side one ulp u below A's (tol = u), on values whose sums round away from each other, so that
+ * the sorting keys differ by 8 u, more than the 2 dim tol = 6 u that exact sums could differ by.
+ * The side is still found: the keys' slack counts their rounding. */
+static void test_key_rounding(void)
+{
+    const double X = 1024.0, u = 0x1p-42; /* u: the ulp of X */
+    const double e0[3] = {X, 1.5 * X, 1.75 * X}, e1[3] = {1.25 * X, 1.5 * X, 1.875 * X};
+    double a[12], b[12];
+    for (int c = 0; c < 3; c++) {
+        a[c] = 0.25 * e0[c]; /* A's far side (u = 0), away from the others */
+        a[3 + c] = 0.25 * e1[c];
+        a[6 + c] = e0[c]; /* A's side u = 1 */
+        a[9 + c] = e1[c];
+        b[c] = e0[c] - u; /* B's side u = 0 */
+        b[3 + c] = e1[c] - u;
+        b[6 + c] = e0[c] + (c == 2 ? 300.0 : 0.0); /* B's far side, lifted */
+        b[9 + c] = e1[c] + (c == 2 ? 300.0 : 0.0);
+    }
+    double ka = 0.0, kb = 0.0; /* the keys as lib/surface/topology.c forms them */
+    for (int c = 0; c < 3; c++) {
+        ka += a[6 + c] + a[9 + c];
+        kb += b[c] + b[3 + c];
+    }
+    CHECKF(ka - kb > 6.0 * u, "the keys differ by only %g u: the case lost its point", (ka - kb) / u);
+    bs_edge_continuity e[2];
+    CHECKF(pair_edges(a, b, u, 2, e) == 1, "sides one ulp apart under a tolerance of one ulp not matched");
+}
+
 /* The frozen layout documented in docs/continuity.md (bindings rely on it). */
 static void test_layout(void)
 {
@@ -358,6 +387,7 @@ int main(void)
     test_twist();
     test_flipped_edges();
     test_ulp_tolerance();
+    test_key_rounding();
     test_gap();
     test_c1_tolerance();
     return bs_test_exit("test_continuity");

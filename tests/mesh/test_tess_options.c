@@ -1,8 +1,9 @@
 /* Tessellation with options: the defaults; BS_TESS_UNIFORM and BS_TESS_PER_PATCH give meshes equal
  * bit for bit to bs_surface_tessellate_uniform() and _adaptive(); bs_surface_tessellate_count()
- * gives the counts of the mesh (tea set, poles, a patch closed on itself, shared sides of different
- * rates, strips or not) and the known counts of disjoint patches; budgets and the 32-bit index space
- * are refused without a large allocation; every error path. */
+ * gives the counts of the mesh (tea set, poles, a patch closed on itself, a side from a vertex to
+ * itself, shared sides of different rates, strips or not) and the known counts of disjoint patches;
+ * budgets and the 32-bit limits of vertices and of triangles are refused without a large
+ * allocation; every error path. */
 #include "harness.h"
 #include "bpt_reader.h"
 #include "mesh_data.h"
@@ -10,6 +11,8 @@
 #include <math.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 /* The mesh of o equals the 1.0 tessellator's (ref), and the counts are the mesh's. */
 static void check_against(const bs_surface *s, const bs_tess_options *o, bs_mesh *ref, const char *what)
@@ -110,10 +113,41 @@ static bs_surface *closed_cup(void)
     return s;
 }
 
+/* A tube of degree (3,1) closed on itself along u (its sides u = 0 and u = 1 are one segment, so
+ * the ends of its side v = 0, a teardrop loop, are one vertex), and a patch 100 times larger
+ * sharing its side v = 1. At a tolerance that gives the tube one segment in u and its neighbour
+ * several, the tube's side v = 1 is stitched at the neighbour's rate while its side v = 0 stays one
+ * segment from a vertex to itself, which gives no triangle. */
+static bs_surface *tube_and_large_neighbour(void)
+{
+    static const double loop[4][2] = {{0, 0}, {1, 1}, {1, -1}, {0, 0}};
+    double tube[4 * 2 * 3], big[4 * 2 * 3];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 2; j++) {
+            double *t = tube + (i * 2 + j) * 3, *b = big + (i * 2 + j) * 3, r = j == 0 ? 1.0 : 100.0;
+            t[0] = loop[i][0];
+            t[1] = loop[i][1];
+            t[2] = j;
+            b[0] = r * loop[i][0];
+            b[1] = r * loop[i][1];
+            b[2] = 1.0 + j;
+        }
+    bs_surface *s = NULL;
+    bs_surface_create(&s);
+    add_patch(s, 3, 1, tube, NULL);
+    add_patch(s, 3, 1, big, NULL);
+    return s;
+}
+
 static void shapes(void)
 {
     bs_surface *s = closed_cup();
     all_cases(s, "closed cup");
+    bs_surface_destroy(s);
+    s = tube_and_large_neighbour();
+    all_cases(s, "tube and a large neighbour");
+    for (double tol = 1.0; tol <= 64.0; tol *= 2.0)
+        one_case(s, BS_TESS_PER_PATCH, 16, 16, tol, 0, "tube and a large neighbour");
     bs_surface_destroy(s);
     s = bumpy_grid(3, 4, 5);
     all_cases(s, "bumpy grid");
@@ -137,6 +171,39 @@ static long peak_kib(void)
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     return ru.ru_maxrss;
+}
+
+/* Sanitizers reserve terabytes of address space, and valgrind (BS_TEST_QUICK) runs its own
+ * allocator inside the limit: a cap on the address space then fails for their own reasons. */
+static int can_cap_address_space(void)
+{
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+    return 0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || __has_feature(memory_sanitizer)
+    return 0;
+#endif
+#endif
+    return !bs_test_quick();
+}
+
+/* bs_surface_tessellate() in a child process whose address space is capped at `bytes`: its status,
+ * or BS_ERR_INVALID_ARG when the child could not be run or capped. */
+static bs_status tessellate_capped(const bs_surface *s, const bs_tess_options *o, rlim_t bytes)
+{
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        struct rlimit r = {bytes, bytes};
+        bs_mesh *m = NULL;
+        bs_status st = setrlimit(RLIMIT_AS, &r) == 0 ? bs_surface_tessellate(s, o, &m) : BS_ERR_INVALID_ARG;
+        _exit(st == BS_ERR_SIZE ? 0 : st == BS_ERR_NO_MEMORY ? 1 : st == BS_OK ? 2 : 3);
+    }
+    int wst = 0;
+    if (pid < 0 || waitpid(pid, &wst, 0) != pid || !WIFEXITED(wst))
+        return BS_ERR_INVALID_ARG;
+    static const bs_status by_code[] = {BS_ERR_SIZE, BS_ERR_NO_MEMORY, BS_OK, BS_ERR_INVALID_ARG};
+    return by_code[WEXITSTATUS(wst) & 3];
 }
 
 static void budgets(void)
@@ -186,6 +253,17 @@ static void budgets(void)
     /* 4095 squares at 1024 x 1024: 4095 * 1025^2 = 4,302,392,375 vertices > UINT32_MAX - 1 */
     s = apart(4095);
     CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_SIZE);
+    bs_surface_destroy(s);
+
+    /* 700 squares at 1024 x 1024: 1,468,006,400 triangles > UINT32_MAX / 3 with only 735 M
+     * vertices, so the triangles alone are over the limit. Refused from the counts too: in a child
+     * whose address space is capped at 2 GiB, where a tessellator that allocated first would
+     * fail with BS_ERR_NO_MEMORY. */
+    s = apart(700);
+    if (can_cap_address_space())
+        CHECK_STATUS(tessellate_capped(s, &o, (rlim_t)2 << 30), BS_ERR_SIZE);
+    CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv, &nt), BS_OK);
+    CHECK(nv == (size_t)700 * 1025 * 1025 && nt == (size_t)700 * 2 * 1024 * 1024 && nt > UINT32_MAX / 3);
     bs_surface_destroy(s);
 }
 

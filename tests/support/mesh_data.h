@@ -91,7 +91,7 @@ static void add_patch(bs_surface *s, size_t m, size_t n, const double *net, cons
 /* Grids of bicubic patches over cells of the plane, lifted by z = a(x) * sin(3x) cos(2y) with a
  * steepness a growing along x (so adaptive rates differ between neighbours), each cell's parameters
  * flipped and swapped at random. */
-static bs_surface *bumpy_grid(int rows, int cols, unsigned long long seed)
+static inline bs_surface *bumpy_grid(int rows, int cols, unsigned long long seed)
 {
     bs_surface *s = NULL;
     bs_surface_create(&s);
