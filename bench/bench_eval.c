@@ -65,7 +65,9 @@ static int load_teapot(const char *path, double nets[NPATCH][NCTRL * 3])
 #else
 #define NOINLINE
 #endif
-#ifdef BENCH_CPU_DISPATCH /* set by CMake when the library dispatches its loops */
+#if defined(BENCH_CPU_DISPATCH) && defined(BENCH_CPU_NO_AVX512) /* -DBS_CPU_AVX512=OFF */
+#define STORE_CLONES __attribute__((target_clones("avx2", "default")))
+#elif defined(BENCH_CPU_DISPATCH) /* set by CMake when the library dispatches its loops */
 #define STORE_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define STORE_CLONES

@@ -55,7 +55,9 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
  * the widest the CPU has. Every version performs the same IEEE operations in the same order (no
  * FMA: -ffp-contract=off; no reassociation), only on more points per instruction, so results are
  * the same bits whichever runs. */
-#ifdef BSI_CPU_DISPATCH
+#if defined(BSI_CPU_DISPATCH) && defined(BSI_CPU_NO_AVX512) /* -DBS_CPU_AVX512=OFF */
+#define BSI_HOT __attribute__((target_clones("avx2", "default")))
+#elif defined(BSI_CPU_DISPATCH)
 #define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define BSI_HOT
