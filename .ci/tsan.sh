@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 build=${TSAN_BUILD:-build-tsan}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_SANITIZE=thread -DBS_BUILD_EXAMPLES=OFF \
   -DBS_BUILD_BENCH=OFF -DBS_BUILD_TOOLS=OFF >/dev/null
-tests="test_threads test_tess_threads test_surface_eval_threads"
+tests="test_threads test_tess_threads test_surface_eval_threads test_locator_threads"
 cmake --build "$build" -j2 --target $tests
 for t in $tests; do
   TSAN_OPTIONS="halt_on_error=1 exitcode=66 report_signal_unsafe=1" "$build/tests/$t"

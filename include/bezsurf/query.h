@@ -164,6 +164,53 @@ BS_API bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cv
                                       const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
                                       const bs_view *uv, const bs_view *t, const bs_view *nrm);
 
+/**
+ * @brief bs_locator_closest_point() on up to `threads` threads: the queries are cut into pieces of
+ * 64, each answered by one thread, so every answer is bit-identical to bs_locator_closest_point()
+ * whatever the thread count. Every thread started is joined before the call returns; a thread that
+ * cannot be created leaves its share to the others. Arguments and statuses as
+ * bs_locator_closest_point(), all checked before any thread starts; with more than one thread,
+ * BS_ERR_NO_MEMORY may come after other pieces have been answered and written.
+ * @param[in]  L        the locator.
+ * @param[in]  n        number of query points.
+ * @param[in]  q        dim views of n query coordinates.
+ * @param[out] patch    NULL or n patch ids of the answers.
+ * @param[out] uv       NULL or 2 views receiving the parameters.
+ * @param[out] dist     NULL or 1 view receiving the distances.
+ * @param[out] pos      NULL or dim views receiving the closest points.
+ * @param[in]  threads  threads to use, the calling one included: 1 stays on the calling thread,
+ *                      0 = one per online CPU.
+ * @return as bs_locator_closest_point().
+ * @since 1.1
+ */
+BS_API bs_status bs_locator_closest_point_mt(const bs_locator *L, size_t n, const bs_cview *q,
+                                             uint32_t *patch, const bs_view *uv, const bs_view *dist,
+                                             const bs_view *pos, size_t threads);
+
+/**
+ * @brief bs_locator_intersect() on up to `threads` threads: the rays are cut into pieces of 512,
+ * each traced by one thread, so every answer is bit-identical to bs_locator_intersect() whatever
+ * the thread count. Threads, argument checks and BS_ERR_NO_MEMORY as for
+ * bs_locator_closest_point_mt().
+ * @param[in]  L        the locator (dimension 3).
+ * @param[in]  n        number of rays.
+ * @param[in]  org      3 views: ray origins.
+ * @param[in]  dir      3 views: directions, any non-zero length.
+ * @param[in]  trange   NULL for (0, +Inf), or 2 views: t_min, t_max.
+ * @param[out] patch    NULL or n patch ids; UINT32_MAX where the ray misses.
+ * @param[out] uv       NULL or 2 views.
+ * @param[out] t        NULL or 1 view: the ray parameter of the hit.
+ * @param[out] nrm      NULL or 3 views: the unit normal at the hit.
+ * @param[in]  threads  threads to use, the calling one included: 1 stays on the calling thread,
+ *                      0 = one per online CPU.
+ * @return as bs_locator_intersect().
+ * @since 1.1
+ */
+BS_API bs_status bs_locator_intersect_mt(const bs_locator *L, size_t n, const bs_cview *org,
+                                         const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
+                                         const bs_view *uv, const bs_view *t, const bs_view *nrm,
+                                         size_t threads);
+
 #ifdef __cplusplus
 }
 #endif

@@ -69,6 +69,26 @@ static inline double bsi_cget(const bs_cview *v, size_t k)
     return *(const double *)(const void *)((const char *)v->data + (ptrdiff_t)k * bsi_stride(v->stride));
 }
 
+/* A view's elements from `first` on (first <= count), for handing a part of a batch to a call. */
+static inline bs_cview bsi_sub_cview(const bs_cview *v, size_t first)
+{
+    bs_cview r = {(const double *)(const void *)((const char *)v->data + (ptrdiff_t)first * bsi_stride(v->stride)),
+                  v->count - first, v->stride};
+    return r;
+}
+/* The same for k views, into out[k]; NULL when views is NULL. */
+static inline const bs_view *bsi_sub_views(const bs_view *views, size_t k, size_t first, bs_view *out)
+{
+    if (views == NULL)
+        return NULL;
+    for (size_t c = 0; c < k; c++) {
+        out[c].data = bsi_at(&views[c], first);
+        out[c].count = views[c].count - first;
+        out[c].stride = views[c].stride;
+    }
+    return out;
+}
+
 /* All Cartesian partials S^(a,b), a <= ka, b <= kb, at one finite point (lib/core/deriv.c):
  * out[(a*(kb+1) + b)*dim + c]. scratch holds bsi_deriv_table_scratch(p, ka, kb) doubles. */
 size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);

@@ -101,4 +101,13 @@ size_t bsi_ray_leaf_scratch(size_t max_ctrl);
 void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
                   bsi_ray_hit *hit);
 
+/* The argument checks of bs_locator_closest_point() and bs_locator_intersect(), with their statuses
+ * (BS_OK for n = 0 once L is checked), so that the multi-threaded variants check everything before
+ * any thread starts (lib/query/locator_mt.c). */
+bs_status bsi_loc_closest_check(const bs_locator *L, size_t n, const bs_cview *q, const bs_view *uv,
+                                const bs_view *dist, const bs_view *pos);
+bs_status bsi_loc_intersect_check(const bs_locator *L, size_t n, const bs_cview *org, const bs_cview *dir,
+                                  const bs_cview *trange, const bs_view *uv, const bs_view *t,
+                                  const bs_view *nrm);
+
 #endif

@@ -116,9 +116,8 @@ static int query_point(const bs_cview *q, size_t k, size_t dim, double *x)
     return finite;
 }
 
-bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview *q,
-                                   uint32_t *patch, const bs_view *uv, const bs_view *dist,
-                                   const bs_view *pos)
+bs_status bsi_loc_closest_check(const bs_locator *L, size_t n, const bs_cview *q, const bs_view *uv,
+                                const bs_view *dist, const bs_view *pos)
 {
     if (L == NULL)
         return BS_ERR_INVALID_ARG;
@@ -126,14 +125,24 @@ bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview
         return BS_OK;
     if (q == NULL)
         return BS_ERR_INVALID_ARG;
-    size_t dim = L->dim;
     bs_status st = BS_OK;
-    for (size_t c = 0; c < dim && st == BS_OK; c++)
+    for (size_t c = 0; c < L->dim && st == BS_OK; c++)
         st = bsi_check_cview(&q[c], n);
     if (st != BS_OK || (uv && (st = bsi_check_views(uv, 2, n)) != BS_OK) ||
         (dist && (st = bsi_check_views(dist, 1, n)) != BS_OK) ||
-        (pos && (st = bsi_check_views(pos, dim, n)) != BS_OK))
+        (pos && (st = bsi_check_views(pos, L->dim, n)) != BS_OK))
         return st;
+    return BS_OK;
+}
+
+bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview *q,
+                                   uint32_t *patch, const bs_view *uv, const bs_view *dist,
+                                   const bs_view *pos)
+{
+    bs_status st = bsi_loc_closest_check(L, n, q, uv, dist, pos);
+    if (st != BS_OK || n == 0)
+        return st;
+    size_t dim = L->dim;
     /* the answers (patch, u, v) of every query, and a mark per patch */
     uint32_t *ids = malloc(n * sizeof *ids);
     double *at = malloc(2 * n * sizeof *at);

@@ -154,9 +154,9 @@ static bs_status check_cviews(const bs_cview *v, size_t k, size_t n)
     return st;
 }
 
-bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *org,
-                               const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
-                               const bs_view *uv, const bs_view *t, const bs_view *nrm)
+bs_status bsi_loc_intersect_check(const bs_locator *L, size_t n, const bs_cview *org, const bs_cview *dir,
+                                  const bs_cview *trange, const bs_view *uv, const bs_view *t,
+                                  const bs_view *nrm)
 {
     if (L == NULL)
         return BS_ERR_INVALID_ARG;
@@ -172,6 +172,16 @@ bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *or
         (uv && (st = bsi_check_views(uv, 2, n)) != BS_OK) ||
         (t && (st = bsi_check_views(t, 1, n)) != BS_OK) ||
         (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
+        return st;
+    return BS_OK;
+}
+
+bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *org,
+                               const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
+                               const bs_view *uv, const bs_view *t, const bs_view *nrm)
+{
+    bs_status st = bsi_loc_intersect_check(L, n, org, dir, trange, uv, t, nrm);
+    if (st != BS_OK || n == 0)
         return st;
     double *scratch = NULL;
     if (L->nleaf > 0 && (scratch = malloc(bsi_ray_leaf_scratch(L->max_ctrl) * sizeof(double))) == NULL)

@@ -6,26 +6,6 @@
 
 #include <stdint.h>
 
-static bs_cview sub_cview(const bs_cview *v, size_t first)
-{
-    bs_cview r = {(const double *)(const void *)((const char *)v->data + (ptrdiff_t)first * bsi_stride(v->stride)),
-                  v->count - first, v->stride};
-    return r;
-}
-
-/* Sub-views of k views starting at element first, into out[k]; NULL when views is NULL. */
-static const bs_view *sub_views(const bs_view *views, size_t k, size_t first, bs_view *out)
-{
-    if (views == NULL)
-        return NULL;
-    for (size_t c = 0; c < k; c++) {
-        out[c].data = bsi_at(&views[c], first);
-        out[c].count = views[c].count - first;
-        out[c].stride = views[c].stride;
-    }
-    return out;
-}
-
 /* Shared argument checks; on success every id is valid. */
 static bs_status check_args(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
                             const bs_cview *v, int normals, const bs_view *a, size_t ka,
@@ -65,9 +45,9 @@ static bs_status eval_range(const bs_surface *s, const uint32_t *ids, const bs_c
     bs_view spos[BS_MAX_DIM], sdu[BS_MAX_DIM], sdv[BS_MAX_DIM];
     while (first < end) {
         size_t len = run_length(ids, end, first);
-        bs_cview su = sub_cview(u, first), sv = sub_cview(v, first);
-        bs_status st = bs_patch_eval(bs_surface_get(s, ids[first]), len, &su, &sv, sub_views(pos, dim, first, spos),
-                                     sub_views(du, dim, first, sdu), sub_views(dv, dim, first, sdv));
+        bs_cview su = bsi_sub_cview(u, first), sv = bsi_sub_cview(v, first);
+        bs_status st = bs_patch_eval(bs_surface_get(s, ids[first]), len, &su, &sv, bsi_sub_views(pos, dim, first, spos),
+                                     bsi_sub_views(du, dim, first, sdu), bsi_sub_views(dv, dim, first, sdv));
         if (st != BS_OK) /* not expected: every argument was checked above */
             return st;
         first += len;
@@ -126,9 +106,9 @@ bs_status bs_surface_eval_normal(const bs_surface *s, size_t n, const uint32_t *
     bs_view spos[3], snrm[3];
     for (size_t first = 0; first < n;) {
         size_t len = run_length(ids, n, first);
-        bs_cview su = sub_cview(u, first), sv = sub_cview(v, first);
-        st = bs_patch_eval_normal(bs_surface_get(s, ids[first]), len, &su, &sv, sub_views(pos, 3, first, spos),
-                                  sub_views(nrm, 3, first, snrm), kind ? kind + first : NULL);
+        bs_cview su = bsi_sub_cview(u, first), sv = bsi_sub_cview(v, first);
+        st = bs_patch_eval_normal(bs_surface_get(s, ids[first]), len, &su, &sv, bsi_sub_views(pos, 3, first, spos),
+                                  bsi_sub_views(nrm, 3, first, snrm), kind ? kind + first : NULL);
         if (st != BS_OK)
             return st;
         first += len;
@@ -156,10 +136,10 @@ static bs_status grid_task(void *ctx, size_t item, size_t worker)
     size_t nr = j->nu - i0 < rows ? j->nu - i0 : rows, first = (p * j->nu + i0) * j->nv;
     size_t dim = bs_surface_dim(j->s);
     bs_view spos[BS_MAX_DIM], sdu[BS_MAX_DIM], sdv[BS_MAX_DIM], snrm[3];
-    bs_cview su = sub_cview(j->u, i0);
-    return bs_patch_eval_grid(bs_surface_get(j->s, p), nr, &su, j->nv, j->v, sub_views(j->pos, dim, first, spos),
-                              sub_views(j->du, dim, first, sdu), sub_views(j->dv, dim, first, sdv),
-                              sub_views(j->nrm, 3, first, snrm), j->kind ? j->kind + first : NULL);
+    bs_cview su = bsi_sub_cview(j->u, i0);
+    return bs_patch_eval_grid(bs_surface_get(j->s, p), nr, &su, j->nv, j->v, bsi_sub_views(j->pos, dim, first, spos),
+                              bsi_sub_views(j->du, dim, first, sdu), bsi_sub_views(j->dv, dim, first, sdv),
+                              bsi_sub_views(j->nrm, 3, first, snrm), j->kind ? j->kind + first : NULL);
 }
 
 bs_status bs_surface_eval_grid(const bs_surface *s, size_t nu, const bs_cview *u, size_t nv, const bs_cview *v,
