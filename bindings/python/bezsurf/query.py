@@ -101,9 +101,12 @@ class Locator(Handle):
         """Dimension of the surface (0 for an empty one)."""
         return int(LIB.bs_locator_dim(self._ptr))
 
-    def closest_point(self, points: Any) -> ClosestPoints:
+    def closest_point(self, points: Any, *, threads: int = 1) -> ClosestPoints:
         """The globally closest point of the whole surface to each query point, within
-        1e-9 (D + d) of the exact distance d (D the diagonal of the control points' box)."""
+        1e-9 (D + d) of the exact distance d (D the diagonal of the control points' box).
+        ``threads`` threads answer the queries (0: one per CPU; since 1.1), with the same
+        results."""
+        threads = A.integer(threads, "threads")
         dim = self.dim
         if dim == 0:
             raise ValueError("the locator's surface is empty")
@@ -112,17 +115,19 @@ class Locator(Handle):
         uv = B.Output(q.n, 2)
         dist = B.Output(q.n, 1)
         pos = B.Output(q.n, dim)
-        LIB.bs_locator_closest_point(self._ptr, q.n, q.views, ids.address, uv.views, dist.views,
-                                     pos.views)
+        LIB.bs_locator_closest_point_mt(self._ptr, q.n, q.views, ids.address, uv.views,
+                                        dist.views, pos.views, threads)
         return ClosestPoints(_finish(q.scalar, ids.result()), _finish(q.scalar, uv.result()),
                              _finish(q.scalar, _column(dist.result())),
                              _finish(q.scalar, pos.result()))
 
     def intersect(self, origins: Any, directions: Any, t_min: Optional[Any] = None,
-                  t_max: Optional[Any] = None) -> RayHits:
+                  t_max: Optional[Any] = None, *, threads: int = 1) -> RayHits:
         """The first hit of each ray o + t d with t in [t_min, t_max] (default (0, inf); either
         bound may be one number or n numbers, finite: an infinite bound makes the ray invalid,
-        t NaN). 3-D surfaces only."""
+        t NaN). 3-D surfaces only. ``threads`` threads trace the rays (0: one per CPU; since
+        1.1), with the same results."""
+        threads = A.integer(threads, "threads")
         org = B.PointsIn(origins, 3, "origins")
         dirs = B.PointsIn(directions, 3, "directions")
         if org.n != dirs.n:
@@ -147,8 +152,8 @@ class Locator(Handle):
         uv = B.Output(n, 2)
         t = B.Output(n, 1)
         nrm = B.Output(n, 3)
-        LIB.bs_locator_intersect(self._ptr, n, org.views, dirs.views, trange, ids.address,
-                                 uv.views, t.views, nrm.views)
+        LIB.bs_locator_intersect_mt(self._ptr, n, org.views, dirs.views, trange, ids.address,
+                                    uv.views, t.views, nrm.views, threads)
         scalar = org.scalar and dirs.scalar
         return RayHits(_finish(scalar, ids.result()), _finish(scalar, uv.result()),
                        _finish(scalar, _column(t.result())), _finish(scalar, nrm.result()))

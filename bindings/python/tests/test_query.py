@@ -111,6 +111,27 @@ class LocatorTest(PlainTestCase):
             self.assertAlmostEqual(plain(r.dist)[k], best[k], delta=1e-8 * (10 + best[k]))
             self.assertLess(plain(r.patch)[k], len(self.teapot))
 
+    def test_queries_on_threads(self):
+        # batches cut into pieces for the threads: the same answers as one thread
+        q = [(0.1 * k - 4.0, 0.05 * k - 2.0, 0.03 * k) for k in range(150)]
+        one = self.loc.closest_point(q)
+        for n in (2, 0):
+            many = self.loc.closest_point(q, threads=n)
+            self.assertEqual(plain(many.patch), plain(one.patch))
+            self.assertEqual(plain(many.dist), plain(one.dist))
+            self.assertEqual(plain(many.uv), plain(one.uv))
+        org = [(8.0, (k % 34) / 8.5 - 2.0, (k // 34) / 10.0) for k in range(1100)]  # a 34 x 33 grid
+        dirs = [(-1.0, 0.0, 0.0)] * len(org)
+        one_hits = self.loc.intersect(org, dirs)
+        self.assertGreater(sum(i != bezsurf.NO_PATCH for i in plain(one_hits.patch)), 100)
+        hits = self.loc.intersect(org, dirs, threads=2)
+        self.assertEqual(plain(hits.patch), plain(one_hits.patch))
+        self.assertEqual(plain(hits.t), plain(one_hits.t))
+        with self.assertRaises(TypeError):
+            self.loc.closest_point(q, threads=1.5)
+        with self.assertRaises(ValueError):
+            self.loc.intersect(org, dirs, threads=-1)
+
     def test_copy_pickle_threads(self):
         q = [(1.0, 2.0, 3.0)]
         ref = plain(self.loc.closest_point(q).dist)

@@ -104,6 +104,13 @@ impl Locator {
     /// (`bs_locator_closest_point`), within 1e-9 (D + d) of the exact distance d. `points` holds
     /// n points of [`dim`](Locator::dim) coordinates one after the other.
     pub fn closest_points(&self, points: &[f64]) -> Result<ClosestPoints> {
+        self.closest_points_threads(points, 1)
+    }
+
+    /// [`Locator::closest_points`] on up to `threads` threads, the calling one included
+    /// (`bs_locator_closest_point_mt`, since 1.1; 0: one per online CPU). The answers are the
+    /// same bit for bit whatever the number of threads.
+    pub fn closest_points_threads(&self, points: &[f64], threads: usize) -> Result<ClosestPoints> {
         let dim = self.dim();
         if dim == 0 {
             return Err(Error::argument_error(sys::BS_ERR_DIMENSION, "self", "the surface is empty"));
@@ -115,7 +122,7 @@ impl Locator {
         // SAFETY: the locator is live; q views n points of points; ids holds n ids; the output
         // views cover disjoint elements of out's vectors, each holding n entries.
         check(unsafe {
-            sys::bs_locator_closest_point(
+            sys::bs_locator_closest_point_mt(
                 self.as_ptr(),
                 n,
                 q.as_ptr(),
@@ -123,6 +130,7 @@ impl Locator {
                 uv.as_ptr(),
                 &dist,
                 pos.as_ptr(),
+                threads,
             )
         })?;
         out.patch = ids;
@@ -133,6 +141,13 @@ impl Locator {
     /// `Dimension`). No transversal first hit is missed, including rays through shared edges,
     /// corners and poles.
     pub fn intersect(&self, rays: &[Ray]) -> Result<Vec<Hit>> {
+        self.intersect_threads(rays, 1)
+    }
+
+    /// [`Locator::intersect`] on up to `threads` threads, the calling one included
+    /// (`bs_locator_intersect_mt`, since 1.1; 0: one per online CPU). The hits are the same bit
+    /// for bit whatever the number of threads.
+    pub fn intersect_threads(&self, rays: &[Ray], threads: usize) -> Result<Vec<Hit>> {
         let n = rays.len();
         let stride = std::mem::size_of::<Ray>() as isize;
         let base = rays.as_ptr() as *const f64;
@@ -153,7 +168,7 @@ impl Locator {
         // repr(C), eight f64 in a row); ids holds n ids; the output views cover disjoint
         // columns of vals.
         check(unsafe {
-            sys::bs_locator_intersect(
+            sys::bs_locator_intersect_mt(
                 self.as_ptr(),
                 n,
                 org.as_ptr(),
@@ -163,6 +178,7 @@ impl Locator {
                 uv.as_ptr(),
                 &t,
                 nrm.as_ptr(),
+                threads,
             )
         })?;
         Ok((0..n)

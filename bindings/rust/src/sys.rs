@@ -726,4 +726,28 @@ extern "C" {
         t: *const bs_view,
         nrm: *const bs_view,
     ) -> bs_status;
+    /// [`bs_locator_closest_point`] on up to `threads` threads (since 1.1).
+    pub fn bs_locator_closest_point_mt(
+        l: *const bs_locator,
+        n: usize,
+        q: *const bs_cview,
+        patch: *mut u32,
+        uv: *const bs_view,
+        dist: *const bs_view,
+        pos: *const bs_view,
+        threads: usize,
+    ) -> bs_status;
+    /// [`bs_locator_intersect`] on up to `threads` threads (since 1.1).
+    pub fn bs_locator_intersect_mt(
+        l: *const bs_locator,
+        n: usize,
+        org: *const bs_cview,
+        dir: *const bs_cview,
+        trange: *const bs_cview,
+        patch: *mut u32,
+        uv: *const bs_view,
+        t: *const bs_view,
+        nrm: *const bs_view,
+        threads: usize,
+    ) -> bs_status;
 }

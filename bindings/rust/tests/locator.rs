@@ -71,6 +71,29 @@ fn misses_ranges_and_invalid_rays() {
 }
 
 #[test]
+fn batches_on_threads_give_the_answers_of_one_thread() {
+    let pot = Surface::builtin("teapot").unwrap();
+    let loc = Locator::new(&pot).unwrap();
+    // 150 points and 1,100 rays: several pieces per thread
+    let q: Vec<f64> =
+        (0..150).flat_map(|k| [0.1 * k as f64 - 4.0, 0.05 * k as f64 - 2.0, 0.03 * k as f64]).collect();
+    let one = loc.closest_points(&q).unwrap();
+    // a 34 x 33 grid of rays along -x over the teapot's side
+    let at = |k: usize| [8.0, (k % 34) as f64 / 8.5 - 2.0, (k / 34) as f64 / 10.0];
+    let rays: Vec<Ray> = (0..1100).map(|k| Ray::new(at(k), [-1.0, 0.0, 0.0])).collect();
+    let one_hits = loc.intersect(&rays).unwrap();
+    assert!(one_hits.iter().filter(|h| h.patch.is_some()).count() > 100);
+    let bits = |h: &[bezsurf::Hit]| -> Vec<u64> {
+        h.iter().flat_map(|h| [h.t.to_bits(), h.uv[0].to_bits()]).collect()
+    };
+    for threads in [2, 0] {
+        assert_eq!(loc.closest_points_threads(&q, threads).unwrap(), one);
+        let hits = loc.intersect_threads(&rays, threads).unwrap();
+        assert_eq!(bits(&hits), bits(&one_hits));
+    }
+}
+
+#[test]
 fn locator_closest_agrees_with_the_best_patch_and_threads_agree() {
     let pot = Surface::builtin("teapot").unwrap();
     let loc = Locator::new(&pot).unwrap();
