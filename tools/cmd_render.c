@@ -12,6 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* Samples of the raster (colour and depth, 16 bytes each): 1 GiB. */
+#define RENDER_MAX_SAMPLES ((size_t)1 << 26)
+
 static const char usage[] =
     "usage: bezsurf render [options] [FILE]\n"
     "Render a surface from a .bpt FILE ('-': standard input; default: the built-in teapot)\n"
@@ -38,7 +41,8 @@ static const char usage[] =
     "      --patch ID        render only patch ID\n"
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
     "                        the four sub-nets are drawn)\n"
-    "      --ss N            supersampling per axis, 1..4 (default 3)\n"
+    "      --ss N            supersampling per axis, 1..4 (default 3); W x H x N^2 samples at most\n"
+    "                        67108864 (16 bytes each: 1 GiB), e.g. 8192x8192 with --ss 1\n"
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
     "                        (default 4000000, about 0.5 GB of memory; 0: no limit)\n"
     "      --rays            cast one ray per sample at the patches (through a locator) instead of\n"
@@ -419,6 +423,9 @@ int cmd_render(int argc, char **argv)
     }
     if (o.rays && o.curvature)
         return cli_usage_error("render", "--rays and --curvature do not go together", NULL);
+    if (o.w * o.h * o.ss * o.ss > RENDER_MAX_SAMPLES) /* each at most 8192 and 4: no overflow */
+        return cli_usage_error("render", "--size W x H times --ss N squared exceeds 67108864 samples (1 GiB)",
+                               NULL);
     rc = cli_check_output("render", o.output); /* before the work, not after it */
     if (rc != CLI_OK)
         return rc;

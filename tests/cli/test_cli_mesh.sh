@@ -75,6 +75,8 @@ expect 1 "render bad elevation" -- "$tool" render -e 91
 expect 1 "render bad up" -- "$tool" render --up x
 expect 1 "render bad colour" -- "$tool" render --color 1,2
 expect 1 "render bad ss" -- "$tool" render --ss 9
+expect 1 "render over 2^26 samples" -- "$tool" render --size 8192x4097 --ss 2 -o "$work/huge.png"
+expect 1 "render one sample over" -- "$tool" render --size 8192x8192 --ss 1 --ss 2 -o "$work/huge.png"
 expect 3 "render unwritable" -- "$tool" render --size 32x32 -o "$work/no/such/dir/x.png"
 
 echo "test_cli_mesh: $checks checks, $fails failures"
