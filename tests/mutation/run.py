@@ -151,7 +151,8 @@ def main():
     src, bld = os.path.join(a.scratch, "src"), os.path.join(a.scratch, "build")
     os.makedirs(src, exist_ok=True)
     sync_tree(src)
-    if not os.path.exists(os.path.join(bld, "CMakeCache.txt")):
+    # configured and generated (a configure step that failed leaves a cache but no test files)
+    if not os.path.exists(os.path.join(bld, "CTestTestfile.cmake")):
         if run(["cmake", "-S", src, "-B", bld, "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
                 "-DBS_CPU_DISPATCH=OFF", "-DBS_BUILD_EXAMPLES=OFF", "-DBS_BUILD_BENCH=OFF"]) != 0:
             say("mutation: cannot configure the scratch build")
