@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define L BSI_PCHUNK
 
@@ -27,7 +28,8 @@ BSI_INLINE double curv_formulas(const double *q, const double *nrm, double inv_d
     double a = l / e, b = (m * e - f * l) / (e * rw), c = (f * f * l / e - 2.0 * f * m + e * nn) / w;
     double half = 0.5 * (a - c), qs = half * half + b * b;
     double mean = 0.5 * (a + c), s = exact ? hypot(half, b) : sqrt(qs);
-    int bad = !exact && !((qs > 0x1p-900 && qs < 0x1p900) || (half == 0.0 && b == 0.0));
+    /* bitwise & and |: no branches in the vectorised loop */
+    int bad = !exact & !(((qs > 0x1p-900) & (qs < 0x1p900)) | ((half == 0.0) & (b == 0.0)));
     o[0] = a * c - b * b;
     o[1] = mean;
     o[2] = mean - s;
@@ -39,13 +41,19 @@ BSI_INLINE double curv_formulas(const double *q, const double *nrm, double inv_d
     int umbilic = 2.0 * s <= 1e-10 * scale;
     /* The eigenvector of k_max, (k_max - c, b) or (b, k_max - a), whichever row of
      * [a - k_max, b; b, c - k_max] leaves the larger first entry (no cancellation, no trig). */
-    double x = a >= c ? half + s : b, y = a >= c ? b : s - half, ql = x * x + y * y;
+    double xa = half + s, yb = s - half; /* both arms, then selects */
+    double x = a >= c ? xa : b, y = a >= c ? b : yb, ql = x * x + y * y;
     double len = exact ? hypot(x, y) : sqrt(ql), ct = x / len, st = y / len;
-    bad |= !exact && !umbilic && !(ql > 0x1p-900 && ql < 0x1p900);
-    for (int i = 0; i < 3; i++) { /* dmin x dmax = N, as e1 x e2 = N */
-        o[4 + i] = umbilic ? e1[i] : st * e1[i] - ct * e2[i];
-        o[7 + i] = umbilic ? e2[i] : ct * e1[i] + st * e2[i];
-    }
+    bad |= !exact & !umbilic & !((ql > 0x1p-900) & (ql < 0x1p900));
+    /* dmin x dmax = N, as e1 x e2 = N (written out for the vectoriser) */
+    double n0 = st * e1[0] - ct * e2[0], n1 = st * e1[1] - ct * e2[1], n2 = st * e1[2] - ct * e2[2];
+    double x0 = ct * e1[0] + st * e2[0], x1 = ct * e1[1] + st * e2[1], x2 = ct * e1[2] + st * e2[2];
+    o[4] = umbilic ? e1[0] : n0;
+    o[5] = umbilic ? e1[1] : n1;
+    o[6] = umbilic ? e1[2] : n2;
+    o[7] = umbilic ? e2[0] : x0;
+    o[8] = umbilic ? e2[1] : x1;
+    o[9] = umbilic ? e2[2] : x2;
     return bad ? 1.0 : 0.0;
 }
 
@@ -66,16 +74,24 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
 BSI_HOT static void curv_chunk(size_t nb, const double *restrict d, const double *restrict nrm,
                                double inv_d, double *restrict out, double *restrict flag)
 {
+    /* written out: GCC vectorises no loop over k with inner loops in it */
+#define D3(j) d[(j) * L + k], d[((j) + 1) * L + k], d[((j) + 2) * L + k]
     for (size_t k = 0; k < nb; k++) {
-        double q[15], nv[3], o[10];
-        for (size_t j = 0; j < 15; j++)
-            q[j] = d[j * L + k];
-        for (size_t c = 0; c < 3; c++)
-            nv[c] = nrm[c * L + k];
+        double q[15] = {D3(0), D3(3), D3(6), D3(9), D3(12)}, o[10];
+        double nv[3] = {nrm[k], nrm[L + k], nrm[2 * L + k]};
         flag[k] = curv_formulas(q, nv, inv_d, 0, o);
-        for (size_t i = 0; i < 10; i++)
-            out[i * L + k] = o[i];
+        out[k] = o[0];
+        out[L + k] = o[1];
+        out[2 * L + k] = o[2];
+        out[3 * L + k] = o[3];
+        out[4 * L + k] = o[4];
+        out[5 * L + k] = o[5];
+        out[6 * L + k] = o[6];
+        out[7 * L + k] = o[7];
+        out[8 * L + k] = o[8];
+        out[9 * L + k] = o[9];
     }
+#undef D3
 }
 
 void bsi_curv_gather(const double *d, const double *nrm, size_t k, bsi_partials *q)
@@ -122,13 +138,16 @@ static double net_diagonal(const bs_patch *p)
     return hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
 }
 
-/* Values x[k] to elements at[k] of a view (a plain loop for a packed one). */
+/* Values x[k] to elements at[k] of a view, nf > 0 (a copy for a packed one). */
 static void put_plane(const bs_view *view, const double *x, const size_t *at, size_t nf)
 {
     if (bsi_stride(view->stride) == (ptrdiff_t)sizeof(double)) {
         double *dst = view->data;
-        for (size_t k = 0; k < nf; k++)
-            dst[at[k]] = x[k];
+        if (at[nf - 1] - at[0] == nf - 1) /* at ascends: no point left out */
+            memcpy(dst + at[0], x, nf * sizeof(double));
+        else
+            for (size_t k = 0; k < nf; k++)
+                dst[at[k]] = x[k];
         return;
     }
     for (size_t k = 0; k < nf; k++)
