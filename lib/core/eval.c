@@ -7,7 +7,7 @@
 #define B BSI_BLOCK
 #define NMAX (BS_MAX_DEGREE + 1)
 
-void bsi_block_weights(size_t deg, const double *t, double *w, double *wm, double *wmm)
+void bsi_block_weights(size_t deg, const double *t, double *w, double *wm)
 {
     double s[B], saved[B];
     for (size_t k = 0; k < B; k++) {
@@ -18,9 +18,6 @@ void bsi_block_weights(size_t deg, const double *t, double *w, double *wm, doubl
         if (r == deg)
             for (size_t x = 0; x < deg * B; x++)
                 wm[x] = w[x];
-        if (wmm != NULL && r + 1 == deg)
-            for (size_t x = 0; x < (deg - 1) * B; x++)
-                wmm[x] = w[x];
         for (size_t k = 0; k < B; k++)
             saved[k] = 0.0;
         for (size_t i = 0; i < r; i++)
@@ -158,8 +155,8 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
                           first ? hu + c * B : NULL, first ? hv + c * B : NULL);
         return;
     }
-    bsi_block_weights(m, u, bu, bum, NULL);
-    bsi_block_weights(n, v, bv, bvm, NULL);
+    bsi_block_weights(m, u, bu, bum);
+    bsi_block_weights(n, v, bv, bvm);
     int du = first && m > 0, dv = first && n > 0;
 
     for (size_t c = 0; c < p->ncoord; c++) {

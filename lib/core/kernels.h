@@ -68,11 +68,10 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
 void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
                     double *ub, double *vb, int *bad);
 
-/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k] = B(deg,i)(t[k]),
- * wm[i*B + k] = B(deg-1,i)(t[k]) and, when wmm != NULL and deg >= 2, wmm[i*B + k] =
- * B(deg-2,i)(t[k]). The recurrence of bsi_bernstein_first, run on all lanes at once with the
- * same operations per lane, so the values are the same bits. */
-void bsi_block_weights(size_t deg, const double *t, double *w, double *wm, double *wmm);
+/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k] = B(deg,i)(t[k]) and
+ * wm[i*B + k] = B(deg-1,i)(t[k]) (lib/core/eval.c). The recurrence of bsi_bernstein_first, run on
+ * all lanes at once with the same operations per lane, so the values are the same bits. */
+void bsi_block_weights(size_t deg, const double *t, double *w, double *wm);
 
 /* Homogeneous value h and, when first != 0, first partials hu, hv at BSI_BLOCK finite parameter
  * pairs; each output is [ncoord][BSI_BLOCK]. The u-direction is contracted first (per column j,

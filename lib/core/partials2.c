@@ -90,8 +90,14 @@ BSI_HOT static void general_block(const bs_patch *p, const double *u, const doub
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
     double bu[NMAX * B], bum[NMAX * B], bumm[NMAX * B], bv[NMAX * B], bvm[NMAX * B],
         bvmm[NMAX * B];
-    bsi_block_weights(m, u + k0, bu, bum, bumm);
-    bsi_block_weights(n, v + k0, bv, bvm, bvmm);
+    bsi_block_weights(m, u + k0, bu, bum);
+    bsi_block_weights(n, v + k0, bv, bvm);
+    /* degrees m-2 and n-2 (their companions of degree m-1, n-1 again, into scratch) */
+    double tmp[NMAX * B];
+    if (m >= 2)
+        bsi_block_weights(m - 1, u + k0, tmp, bumm);
+    if (n >= 2)
+        bsi_block_weights(n - 1, v + k0, tmp, bvmm);
     for (size_t c = 0; c < 3; c++) {
         const double *net = p->hom + c * p->nctrl;
         double au[B], av[B], auu[B], auv[B], avv[B], pu[B], pv[B];

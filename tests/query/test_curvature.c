@@ -121,10 +121,12 @@ static void random_patches(void)
 {
     unsigned long long rng = 99;
     double ctrl[8 * 8 * 3], w[64];
-    for (int trial = 0; trial < 60; trial++) {
+    for (int trial = 0; trial < 70; trial++) {
         size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 1 + (size_t)(bs_test_rand_u64(&rng) % 5);
         if (m + n < 3)
             m = 2;
+        if (trial >= 60) /* and bicubic ones, which have their own kernel */
+            m = n = 3;
         double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
         for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
             for (int c = 0; c < 3; c++) {
