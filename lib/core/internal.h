@@ -1,7 +1,8 @@
 /*
  * Core layer, shared with every layer above it: the patch object, the checks and accessors of
- * strided views, the table of all partials at one point (what queries build on), and files
- * written atomically. The evaluation loops are the core's own business and live in
+ * strided views, the CPU-dispatch macros, the table of all partials at one point and the
+ * curvature's partials of a chunk of points (what queries build on), and files written
+ * atomically. The evaluation loops are the core's own business and live in
  * core/kernels.h. Not installed.
  */
 #ifndef BEZSURF_CORE_INTERNAL_H
@@ -75,8 +76,9 @@ size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
 void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
                      double *scratch, double *out);
 
-/* Small helpers of the evaluation loops (BSI_HOT below), in every layer: GCC does not inline a function of the
- * default target into a loop compiled for another by itself, so they are forced inline (and then
+/* ---- CPU dispatch, for the vectorised loops of every layer ----
+ * Small helpers of those loops (BSI_HOT below): GCC does not inline a function of the default
+ * target into a loop compiled for another by itself, so they are forced inline (and then
  * compiled for the loop's target). */
 #if defined(__GNUC__)
 #define BSI_INLINE static inline __attribute__((always_inline))
@@ -84,18 +86,19 @@ void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigne
 #define BSI_INLINE static inline
 #endif
 
-/* Marks the loops that carry evaluation (and the query layer's vectorised curvature). With BSI_CPU_DISPATCH (GCC on x86-64, see
- * lib/CMakeLists.txt) each is compiled for AVX-512, AVX2 and baseline SSE2, and the loader picks
- * the widest the CPU has. Every version performs the same IEEE operations in the same order (no
- * FMA: -ffp-contract=off; no reassociation), only on more points per instruction, so results are
- * the same bits whichever runs. */
+/* Marks the loops that carry evaluation (and the curvature's formulas). With BSI_CPU_DISPATCH
+ * (GCC on x86-64, see lib/CMakeLists.txt) each is compiled for AVX-512, AVX2 and baseline SSE2,
+ * and the loader picks the widest the CPU has. Every version performs the same IEEE operations
+ * in the same order (no FMA: -ffp-contract=off; no reassociation), only on more points per
+ * instruction, so results are the same bits whichever runs. */
 #ifdef BSI_CPU_DISPATCH
 #define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define BSI_HOT
 #endif
 
-/* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
+/* ---- Normal scales and curvature partials (lib/core/normal.c, lib/core/partials2.c) ----
+ * Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
 typedef struct bsi_nscale {
     double lu, lv;   /* m D, n D: scales of |S_u| and |S_v| (their bounds for a polynomial patch) */
     double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */

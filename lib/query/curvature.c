@@ -1,6 +1,7 @@
 /*
  * Curvature of a patch (bezsurf/query.h): the shape operator in an orthonormal tangent frame,
- * whose eigenvalues are the principal curvatures, by blocks of points; limit points are handed to
+ * whose eigenvalues are the principal curvatures, by chunks of points (the partials in one pass
+ * for polynomial patches, the formulas vectorised over the chunk); limit points are handed to
  * curvature_limit.c.
  */
 #include "query/internal.h"
@@ -182,9 +183,10 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         (dmin && (st = bsi_check_views(dmin, 3, n)) != BS_OK) ||
         (dmax && (st = bsi_check_views(dmax, 3, n)) != BS_OK))
         return st;
-    /* the one allocation, before anything is written */
-    double *scratch = malloc((bsi_deriv_table_scratch(p, 2, 2) + 27) * sizeof(double));
-    if (scratch == NULL)
+    /* the one allocation (the rational table's scratch), before anything is written */
+    double *scratch = NULL;
+    if (p->rational &&
+        (scratch = malloc((bsi_deriv_table_scratch(p, 2, 2) + 27) * sizeof(double))) == NULL)
         return BS_ERR_NO_MEMORY;
     double inv_d = 1.0 / net_diagonal(p);
     bsi_nscale sc;

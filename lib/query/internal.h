@@ -38,7 +38,7 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out);
  * layout of bsi_curv_partials_chunk) and the normal kinds, exactly those of bs_patch_eval_normal,
  * into kind: polynomial patches in one pass (bsi_curv_partials_chunk), rational ones by the
  * table of partials point by point. sc from bsi_normal_scale(p); scratch holds
- * bsi_deriv_table_scratch(p, 2, 2) + 27 doubles. */
+ * bsi_deriv_table_scratch(p, 2, 2) + 27 doubles for a rational p (unused, may be NULL, else). */
 void bsi_curv_partials(const bs_patch *p, const bsi_nscale *sc, size_t n, const double *u,
                        const double *v, double *scratch, double *d, double *nrm,
                        unsigned char *kind);
