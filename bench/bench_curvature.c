@@ -3,7 +3,9 @@
  * measured in one run (the ratio is the figure; seconds vary from run to run). Workload: the 32
  * patches of the built-in teapot, N pseudo-random (u,v) per patch, all outputs wanted.
  * Usage: bench_curvature [points per patch] [seconds per measurement]
- *        bench_curvature --once curvature|normal [points per patch]   (for callgrind)
+ *        bench_curvature --once curvature|normal [points per patch [m n [rational]]]
+ * --once is for callgrind; with m n, one pseudo-random patch of degree (m,n) (weights too with
+ * "rational") is evaluated 32 times in place of the teapot's 32 patches.
  */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <bezsurf.h>
@@ -14,7 +16,7 @@
 #include <time.h>
 
 typedef struct context {
-    const bs_surface *s;
+    const bs_patch *patches[32];
     size_t n;
     double *u, *v, *out; /* 10 arrays of n doubles */
     unsigned char *kind;
@@ -33,8 +35,8 @@ static int run(const context *cx, int curvature)
     bs_view o[10];
     for (int c = 0; c < 10; c++)
         o[c] = (bs_view){cx->out + (size_t)c * cx->n, cx->n, 0};
-    for (size_t i = 0; i < bs_surface_count(cx->s); i++) {
-        const bs_patch *p = bs_surface_get(cx->s, i);
+    for (size_t i = 0; i < 32; i++) {
+        const bs_patch *p = cx->patches[i];
         bs_status st = curvature ? bs_patch_eval_curvature(p, cx->n, &u, &v, o, o + 4, o + 7, cx->kind)
                                  : bs_patch_eval_normal(p, cx->n, &u, &v, o, o + 3, cx->kind);
         if (st != BS_OK)
@@ -56,6 +58,26 @@ static double measure(const context *cx, int curvature, double budget)
     return best;
 }
 
+/* A wavy patch of degree (m,n) over the unit square, control points jittered by an LCG. */
+static bs_patch *random_patch(size_t m, size_t n, int rational)
+{
+    if (m > 9 || n > 9)
+        return NULL;
+    double ctrl[100 * 3], w[100];
+    unsigned long long x = 5;
+    for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
+        for (size_t c = 0; c < 3; c++) {
+            x = x * 6364136223846793005ull + 1442695040888963407ull;
+            double r = (double)(x >> 11) * 0x1.0p-53 - 0.5;
+            double base = c == 0 ? (double)(k / (n + 1)) : c == 1 ? (double)(k % (n + 1)) : 0.0;
+            ctrl[3 * k + c] = base + 0.4 * r;
+        }
+        w[k] = 1.0 + 0.5 * (double)(k % 3);
+    }
+    bs_patch *p;
+    return bs_patch_create(m, n, 3, ctrl, rational ? w : NULL, &p) == BS_OK ? p : NULL;
+}
+
 int main(int argc, char **argv)
 {
     int once = argc > 1 && strcmp(argv[1], "--once") == 0;
@@ -63,9 +85,15 @@ int main(int argc, char **argv)
     cx.n = (size_t)atol(argc > (once ? 3 : 1) ? argv[once ? 3 : 1] : "4096");
     double budget = !once && argc > 2 ? atof(argv[2]) : 1.0;
     bs_surface *s;
-    if (cx.n == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK)
+    if (cx.n == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK || bs_surface_count(s) != 32)
         return 1;
-    cx.s = s;
+    bs_patch *own = NULL;
+    if (once && argc > 5) {
+        if (!(own = random_patch((size_t)atol(argv[4]), (size_t)atol(argv[5]), argc > 6)))
+            return 1;
+    }
+    for (size_t i = 0; i < 32; i++)
+        cx.patches[i] = own ? own : bs_surface_get(s, i);
     cx.u = malloc(cx.n * sizeof(double));
     cx.v = malloc(cx.n * sizeof(double));
     cx.out = malloc(10 * cx.n * sizeof(double));
@@ -94,6 +122,7 @@ int main(int argc, char **argv)
     free(cx.v);
     free(cx.out);
     free(cx.kind);
+    bs_patch_destroy(own);
     bs_surface_destroy(s);
     return ok ? 0 : 1;
 }

@@ -7,10 +7,7 @@
 #define B BSI_BLOCK
 #define NMAX (BS_MAX_DEGREE + 1)
 
-/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k] = B(deg,i)(t[k]) and
- * wm[i*B + k] = B(deg-1,i)(t[k]). The recurrence of bsi_bernstein_first, run on all lanes at
- * once with the same operations per lane, so the values are the same bits. */
-static void block_weights(size_t deg, const double *t, double *w, double *wm)
+void bsi_block_weights(size_t deg, const double *t, double *w, double *wm)
 {
     double s[B], saved[B];
     for (size_t k = 0; k < B; k++) {
@@ -31,24 +28,6 @@ static void block_weights(size_t deg, const double *t, double *w, double *wm)
             }
         for (size_t k = 0; k < B; k++)
             w[r * B + k] = saved[k];
-    }
-}
-
-/* block_weights for degree 3 on a block of L lanes (w[i*L + k]), lane by lane, written out so
- * that the loop vectorises. */
-BSI_INLINE void weights3(size_t L, const double *restrict t, double *restrict w,
-                         double *restrict wm)
-{
-    for (size_t k = 0; k < L; k++) {
-        double a[4], am[3];
-        bsi_bernstein3_first(t[k], a, am);
-        wm[k] = am[0];
-        wm[L + k] = am[1];
-        wm[2 * L + k] = am[2];
-        w[k] = a[0];
-        w[L + k] = a[1];
-        w[2 * L + k] = a[2];
-        w[3 * L + k] = a[3];
     }
 }
 
@@ -124,8 +103,8 @@ BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *
             x[k] = ok ? u[k0 + k] : 0.0;
             y[k] = ok ? v[k0 + k] : 0.0;
         }
-        weights3(PB, x, bu[0], bum[0]);
-        weights3(PB, y, bv[0], bvm[0]);
+        bsi_weights3(PB, x, bu[0], bum[0]);
+        bsi_weights3(PB, y, bv[0], bvm[0]);
         for (size_t c = 0; c < p->dim; c++) {
             /* straight into the outputs; a result not asked for goes to scratch */
             double th[PB], thu[PB], thv[PB];
@@ -145,8 +124,8 @@ BSI_HOT void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const d
                                      double *h, double *hu, double *hv)
 {
     double bu[4][PB], bum[3][PB], bv[4][PB], bvm[3][PB];
-    weights3(PB, u, bu[0], bum[0]);
-    weights3(PB, v, bv[0], bvm[0]);
+    bsi_weights3(PB, u, bu[0], bum[0]);
+    bsi_weights3(PB, v, bv[0], bvm[0]);
     for (size_t c = 0; c < p->dim; c++)
         bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h + c * PB,
                       hu + c * PB, hv + c * PB);
@@ -169,15 +148,15 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
     double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
     if (m == 3 && n == 3) {
-        weights3(B, u, bu, bum);
-        weights3(B, v, bv, bvm);
+        bsi_weights3(B, u, bu, bum);
+        bsi_weights3(B, v, bv, bvm);
         for (size_t c = 0; c < p->ncoord; c++)
             bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
                           first ? hu + c * B : NULL, first ? hv + c * B : NULL);
         return;
     }
-    block_weights(m, u, bu, bum);
-    block_weights(n, v, bv, bvm);
+    bsi_block_weights(m, u, bu, bum);
+    bsi_block_weights(n, v, bv, bvm);
     int du = first && m > 0, dv = first && n > 0;
 
     for (size_t c = 0; c < p->ncoord; c++) {

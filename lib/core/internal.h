@@ -1,7 +1,8 @@
 /*
  * Core layer, shared with every layer above it: the patch object, the checks and accessors of
- * strided views, the table of all partials at one point (what queries build on), and files
- * written atomically. The evaluation loops are the core's own business and live in
+ * strided views, the CPU-dispatch macros, the table of all partials at one point and the
+ * curvature's partials of a chunk of points (what queries build on), and files written
+ * atomically. The evaluation loops are the core's own business and live in
  * core/kernels.h. Not installed.
  */
 #ifndef BEZSURF_CORE_INTERNAL_H
@@ -94,6 +95,54 @@ static inline const bs_view *bsi_sub_views(const bs_view *views, size_t k, size_
 size_t bsi_deriv_table_scratch(const bs_patch *p, unsigned ka, unsigned kb);
 void bsi_deriv_table(const bs_patch *p, double u, double v, unsigned ka, unsigned kb,
                      double *scratch, double *out);
+
+/* ---- CPU dispatch, for the vectorised loops of every layer ----
+ * Small helpers of those loops (BSI_HOT below): GCC does not inline a function of the default
+ * target into a loop compiled for another by itself, so they are forced inline (and then
+ * compiled for the loop's target). */
+#if defined(__GNUC__)
+#define BSI_INLINE static inline __attribute__((always_inline))
+#else
+#define BSI_INLINE static inline
+#endif
+
+/* Marks the loops that carry evaluation (and the curvature's formulas). With BSI_CPU_DISPATCH
+ * (GCC on x86-64, see lib/CMakeLists.txt) each is compiled for AVX-512, AVX2 and baseline SSE2,
+ * and the loader picks the widest the CPU has. Every version performs the same IEEE operations
+ * in the same order (no FMA: -ffp-contract=off; no reassociation), only on more points per
+ * instruction, so results are the same bits whichever runs. */
+#if defined(BSI_CPU_DISPATCH) && defined(BSI_CPU_NO_AVX512) /* -DBS_CPU_AVX512=OFF */
+#define BSI_HOT __attribute__((target_clones("avx2", "default")))
+#elif defined(BSI_CPU_DISPATCH)
+#define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define BSI_HOT
+#endif
+
+/* ---- Normal scales and curvature partials (lib/core/normal.c, lib/core/partials2.c) ----
+ * Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
+typedef struct bsi_nscale {
+    double lu, lv;   /* m D, n D: scales of |S_u| and |S_v| (their bounds for a polynomial patch) */
+    double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
+    double rho;      /* wmax / wmin, 1 for polynomial patches */
+    double wmax;     /* largest weight, 1 for polynomial patches */
+    double fu, fv;   /* CLEAN times the rounding bound of S_u, S_v per unit of wmax / w(u,v) */
+    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero anywhere (with wmax / w = rho) */
+} bsi_nscale;
+
+void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
+
+/* Points per chunk of bsi_curv_partials_chunk. */
+#define BSI_PCHUNK ((size_t)32)
+
+/* The partials a curvature needs at nb <= BSI_PCHUNK finite points (u[k], v[k]) of a polynomial
+ * 3-D patch, in one pass per point (lib/core/partials2.c): d[(3 j + c) BSI_PCHUNK + k] for
+ * S_u, S_v, S_uu, S_uv, S_vv (j = 0..4), coordinate c, point k; the unit normal
+ * nrm[c BSI_PCHUNK + k] and its kind exactly as bs_patch_eval_normal gives them (S_u and S_v come
+ * from the same operations as its evaluators, so the normal rule sees the same bits). sc from
+ * bsi_normal_scale(p). */
+void bsi_curv_partials_chunk(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
+                             const double *v, double *d, double *nrm, unsigned char *kind);
 
 /* Row k of Pascal's triangle: c[a] = C(k, a), a <= k (rounded beyond 2^53). */
 void bsi_binomial_row(unsigned k, double *c);

@@ -10,15 +10,6 @@
 
 #include <math.h>
 
-/* Small helpers of the evaluation loops (BSI_HOT below): GCC does not inline a function of the
- * default target into a loop compiled for another by itself, so they are forced inline (and then
- * compiled for the loop's target). */
-#if defined(__GNUC__)
-#define BSI_INLINE static inline __attribute__((always_inline))
-#else
-#define BSI_INLINE static inline
-#endif
-
 /* ---- Bernstein basis (lib/core/basis.c) ----
  * All by the triangular recurrence B(r,k) = (1-t) B(r-1,k) + t B(r-1,k-1), so every value is a
  * sum of non-negative terms for t in [0,1]. */
@@ -44,24 +35,28 @@ BSI_INLINE void bsi_bernstein3_first(double x, double w[4], double wm[3])
     w[2] = x * wm[1] + s * wm[2];
     w[3] = x * wm[2];
 }
+/* The weights of bsi_bernstein3_first at L parameters, point-innermost (w[i*L + k], as
+ * bsi_block_weights lays them out), written out so that the loop vectorises. */
+BSI_INLINE void bsi_weights3(size_t L, const double *restrict t, double *restrict w,
+                             double *restrict wm)
+{
+    for (size_t k = 0; k < L; k++) {
+        double a[4], am[3];
+        bsi_bernstein3_first(t[k], a, am);
+        wm[k] = am[0];
+        wm[L + k] = am[1];
+        wm[2 * L + k] = am[2];
+        w[k] = a[0];
+        w[L + k] = a[1];
+        w[2 * L + k] = a[2];
+        w[3 * L + k] = a[3];
+    }
+}
 /* b[0..deg] = d^k/dt^k B(deg,i)(t): B(deg-k, .) differenced k times and scaled by deg!/(deg-k)!;
  * all zero when k > deg. */
 void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
 
 /* ---- Evaluation kernels (lib/core/eval.c, lib/core/deriv.c) ---- */
-
-/* Marks the loops that carry evaluation. With BSI_CPU_DISPATCH (GCC on x86-64, see
- * lib/CMakeLists.txt) each is compiled for AVX-512, AVX2 and baseline SSE2, and the loader picks
- * the widest the CPU has. Every version performs the same IEEE operations in the same order (no
- * FMA: -ffp-contract=off; no reassociation), only on more points per instruction, so results are
- * the same bits whichever runs. */
-#if defined(BSI_CPU_DISPATCH) && defined(BSI_CPU_NO_AVX512) /* -DBS_CPU_AVX512=OFF */
-#define BSI_HOT __attribute__((target_clones("avx2", "default")))
-#elif defined(BSI_CPU_DISPATCH)
-#define BSI_HOT __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define BSI_HOT
-#endif
 
 /* Points per block of the scattered evaluators. Every point's arithmetic is the same whatever
  * its position in a block, so results do not depend on batch size. */
@@ -72,6 +67,11 @@ void bsi_bernstein_deriv(size_t deg, unsigned k, double t, double *b);
  * latter, so the kernels only ever see finite parameters (lib/core/eval.c). */
 void bsi_load_block(const bs_cview *u, const bs_cview *v, size_t k0, size_t nb,
                     double *ub, double *vb, int *bad);
+
+/* Bernstein weights of BSI_BLOCK parameters, point-innermost: w[i*B + k] = B(deg,i)(t[k]) and
+ * wm[i*B + k] = B(deg-1,i)(t[k]) (lib/core/eval.c). The recurrence of bsi_bernstein_first, run on
+ * all lanes at once with the same operations per lane, so the values are the same bits. */
+void bsi_block_weights(size_t deg, const double *t, double *w, double *wm);
 
 /* Homogeneous value h and, when first != 0, first partials hu, hv at BSI_BLOCK finite parameter
  * pairs; each output is [ncoord][BSI_BLOCK]. The u-direction is contracted first (per column j,
@@ -117,17 +117,6 @@ BSI_CUBIC_KERNELS(bsi_cubic_rows_f32, bsi_cubic_pos_normal_f32, float);
 
 /* ---- Normals (lib/core/normal.c) ---- */
 
-/* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
-typedef struct bsi_nscale {
-    double lu, lv;   /* m D, n D: scales of |S_u| and |S_v| (their bounds for a polynomial patch) */
-    double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
-    double rho;      /* wmax / wmin, 1 for polynomial patches */
-    double wmax;     /* largest weight, 1 for polynomial patches */
-    double fu, fv;   /* CLEAN times the rounding bound of S_u, S_v per unit of wmax / w(u,v) */
-    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero anywhere (with wmax / w = rho) */
-} bsi_nscale;
-
-void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm);

@@ -1,81 +1,130 @@
 /*
  * Curvature of a patch (bezsurf/query.h): the shape operator in an orthonormal tangent frame,
- * whose eigenvalues are the principal curvatures, by blocks of points; limit points are handed to
+ * whose eigenvalues are the principal curvatures, by chunks of points (the partials in one pass
+ * for polynomial patches, the formulas vectorised over the chunk); limit points are handed to
  * curvature_limit.c.
  */
 #include "query/internal.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
-void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
+#define L BSI_PCHUNK
+
+/* The curvature at one regular point from its partials q (S_u, S_v, S_uu, S_uv, S_vv, 3 each)
+ * and unit normal nrm, into o (K, H, k_min, k_max, dmin, dmax). Branch-free, so that a loop over
+ * points vectorises. With exact, hypot; else sqrt(x^2 + y^2), returning 1.0 (o unusable) where
+ * its squares could underflow or overflow: the caller then takes the exact path. */
+BSI_INLINE double curv_formulas(const double *q, const double *nrm, double inv_d, int exact,
+                                double *o)
 {
-    const double *su = q->d[0], *sv = q->d[1], *nrm = q->nrm;
+    const double *su = q, *sv = q + 3;
     double e = bsi_dot3(su, su), f = bsi_dot3(su, sv), cr[3];
     bsi_cross3(su, sv, cr);
     double w = bsi_dot3(cr, cr), rw = sqrt(w), ru = sqrt(e);
-    double l = bsi_dot3(q->d[2], nrm), m = bsi_dot3(q->d[3], nrm), nn = bsi_dot3(q->d[4], nrm);
+    double l = bsi_dot3(q + 6, nrm), m = bsi_dot3(q + 9, nrm), nn = bsi_dot3(q + 12, nrm);
     /* The shape operator in the frame e1 = S_u/|S_u|, e2 = N x e1 (a symmetric matrix [a b; b c]):
      * no cancellation between the principal curvatures, unlike H +- sqrt(H^2 - K). */
     double a = l / e, b = (m * e - f * l) / (e * rw), c = (f * f * l / e - 2.0 * f * m + e * nn) / w;
-    double mean = 0.5 * (a + c), s = hypot(0.5 * (a - c), b);
-    out->k[0] = a * c - b * b;
-    out->k[1] = mean;
-    out->k[2] = mean - s;
-    out->k[3] = mean + s;
+    double half = 0.5 * (a - c), qs = half * half + b * b;
+    double mean = 0.5 * (a + c), s = exact ? hypot(half, b) : sqrt(qs);
+    /* bitwise & and |: no branches in the vectorised loop */
+    int bad = !exact & !(((qs > 0x1p-900) & (qs < 0x1p900)) | ((half == 0.0) & (b == 0.0)));
+    o[0] = a * c - b * b;
+    o[1] = mean;
+    o[2] = mean - s;
+    o[3] = mean + s;
     double e1[3] = {su[0] / ru, su[1] / ru, su[2] / ru}, e2[3];
     bsi_cross3(nrm, e1, e2);
-    double scale = fabs(out->k[2]) + fabs(out->k[3]) + inv_d;
-    if (2.0 * s <= 1e-10 * scale) { /* umbilic or planar: (dmin, dmax, N) = (e1, e2, N) */
-        for (int i = 0; i < 3; i++) {
-            out->dmin[i] = e1[i];
-            out->dmax[i] = e2[i];
-        }
-        return;
-    }
+    double scale = fabs(o[2]) + fabs(o[3]) + inv_d;
+    /* umbilic or planar: every direction is principal, (dmin, dmax, N) = (e1, e2, N) */
+    int umbilic = 2.0 * s <= 1e-10 * scale;
     /* The eigenvector of k_max, (k_max - c, b) or (b, k_max - a), whichever row of
      * [a - k_max, b; b, c - k_max] leaves the larger first entry (no cancellation, no trig). */
-    double half = 0.5 * (a - c), x = a >= c ? half + s : b, y = a >= c ? b : s - half;
-    double len = hypot(x, y), ct = x / len, st = y / len;
-    for (int i = 0; i < 3; i++) { /* dmin x dmax = N, as e1 x e2 = N */
-        out->dmax[i] = ct * e1[i] + st * e2[i];
-        out->dmin[i] = st * e1[i] - ct * e2[i];
+    double xa = half + s, yb = s - half; /* both arms, then selects */
+    double x = a >= c ? xa : b, y = a >= c ? b : yb, ql = x * x + y * y;
+    double len = exact ? hypot(x, y) : sqrt(ql), ct = x / len, st = y / len;
+    bad |= !exact & !umbilic & !((ql > 0x1p-900) & (ql < 0x1p900));
+    /* dmin x dmax = N, as e1 x e2 = N (written out for the vectoriser) */
+    double n0 = st * e1[0] - ct * e2[0], n1 = st * e1[1] - ct * e2[1], n2 = st * e1[2] - ct * e2[2];
+    double x0 = ct * e1[0] + st * e2[0], x1 = ct * e1[1] + st * e2[1], x2 = ct * e1[2] + st * e2[2];
+    o[4] = umbilic ? e1[0] : n0;
+    o[5] = umbilic ? e1[1] : n1;
+    o[6] = umbilic ? e1[2] : n2;
+    o[7] = umbilic ? e2[0] : x0;
+    o[8] = umbilic ? e2[1] : x1;
+    o[9] = umbilic ? e2[2] : x2;
+    return bad ? 1.0 : 0.0;
+}
+
+void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
+{
+    double o[10];
+    (void)curv_formulas(q->d[0], q->nrm, inv_d, 1, o);
+    for (int i = 0; i < 4; i++)
+        out->k[i] = o[i];
+    for (int i = 0; i < 3; i++) {
+        out->dmin[i] = o[4 + i];
+        out->dmax[i] = o[7 + i];
     }
 }
 
-void bsi_curv_partials(const bs_patch *p, const bsi_curv_nets *nets, size_t n, const double *u,
-                       const double *v, double *scratch, bsi_partials *q, unsigned char *kind)
+/* The fast formulas at nb points of a chunk (d, nrm as bsi_curv_partials fills them) into
+ * out[i L + k]; flag[k] = 1.0 where point k needs bsi_curv_regular. */
+BSI_HOT static void curv_chunk(size_t nb, const double *restrict d, const double *restrict nrm,
+                               double inv_d, double *restrict out, double *restrict flag)
 {
-    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
-    bs_cview cu = {u, n, 0}, cv = {v, n, 0};
-    bs_view views[6][3]; /* S_u, S_v, S_uu, S_uv, S_vv, N, each through q's fields */
-    for (int j = 0; j < 6; j++)
-        for (int c = 0; c < 3; c++) {
-            views[j][c].data = j < 5 ? &q[0].d[j][c] : &q[0].nrm[c];
-            views[j][c].count = n;
-            views[j][c].stride = (ptrdiff_t)sizeof(bsi_partials);
-        }
+    /* written out: GCC vectorises no loop over k with inner loops in it */
+#define D3(j) d[(j) * L + k], d[((j) + 1) * L + k], d[((j) + 2) * L + k]
+    for (size_t k = 0; k < nb; k++) {
+        double q[15] = {D3(0), D3(3), D3(6), D3(9), D3(12)}, o[10];
+        double nv[3] = {nrm[k], nrm[L + k], nrm[2 * L + k]};
+        flag[k] = curv_formulas(q, nv, inv_d, 0, o);
+        out[k] = o[0];
+        out[L + k] = o[1];
+        out[2 * L + k] = o[2];
+        out[3 * L + k] = o[3];
+        out[4 * L + k] = o[4];
+        out[5 * L + k] = o[5];
+        out[6 * L + k] = o[6];
+        out[7 * L + k] = o[7];
+        out[8 * L + k] = o[8];
+        out[9 * L + k] = o[9];
+    }
+#undef D3
+}
+
+void bsi_curv_gather(const double *d, const double *nrm, size_t k, bsi_partials *q)
+{
+    for (int j = 0; j < 5; j++)
+        for (int c = 0; c < 3; c++)
+            q->d[j][c] = d[(size_t)(3 * j + c) * L + k];
+    for (int c = 0; c < 3; c++)
+        q->nrm[c] = nrm[(size_t)c * L + k];
+}
+
+void bsi_curv_partials(const bs_patch *p, const bsi_nscale *sc, size_t n, const double *u,
+                       const double *v, double *scratch, double *d, double *nrm,
+                       unsigned char *kind)
+{
     if (!p->rational) {
-        /* the block evaluators (which allocate nothing for polynomial patches); second
-         * derivatives as the points of their own patches when the caller made them */
-        (void)bs_patch_eval(p, n, &cu, &cv, NULL, views[0], views[1]);
-        for (int j = 2; j < 5; j++)
-            if (nets != NULL && nets->d2[j - 2] != NULL)
-                (void)bs_patch_eval(nets->d2[j - 2], n, &cu, &cv, views[j], NULL, NULL);
-            else
-                (void)bs_patch_eval_deriv(p, ab[j][0], ab[j][1], n, &cu, &cv, views[j]);
-    } else {
-        double *table = scratch + bsi_deriv_table_scratch(p, 2, 2); /* S^(a,b), a, b <= 2 */
-        for (size_t k = 0; k < n; k++) {
-            bsi_deriv_table(p, u[k], v[k], 2, 2, scratch, table);
-            for (int j = 0; j < 5; j++)
-                for (int c = 0; c < 3; c++)
-                    q[k].d[j][c] = table[(ab[j][0] * 3 + ab[j][1]) * 3 + (unsigned)c];
-        }
+        bsi_curv_partials_chunk(p, sc, n, u, v, d, nrm, kind);
+        return;
+    }
+    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+    double *table = scratch + bsi_deriv_table_scratch(p, 2, 2); /* S^(a,b), a, b <= 2 */
+    for (size_t k = 0; k < n; k++) {
+        bsi_deriv_table(p, u[k], v[k], 2, 2, scratch, table);
+        for (size_t j = 0; j < 5; j++)
+            for (size_t c = 0; c < 3; c++)
+                d[(3 * j + c) * L + k] = table[(ab[j][0] * 3 + ab[j][1]) * 3 + c];
     }
     /* The normal and its kind as bs_patch_eval_normal gives them (the sign convention). Every
-     * view was made here from valid memory: these calls cannot fail. */
-    (void)bs_patch_eval_normal(p, n, &cu, &cv, NULL, views[5], kind);
+     * view was made here from valid memory: the call cannot fail. */
+    bs_cview cu = {u, n, 0}, cv = {v, n, 0};
+    bs_view views[3] = {{nrm, n, 0}, {nrm + L, n, 0}, {nrm + 2 * L, n, 0}};
+    (void)bs_patch_eval_normal(p, n, &cu, &cv, NULL, views, kind);
 }
 
 /* Diagonal of the bounding box of the control points. */
@@ -88,6 +137,22 @@ static double net_diagonal(const bs_patch *p)
             hi[c] = fmax(hi[c], p->ctrl[3 * k + (size_t)c]);
         }
     return hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+}
+
+/* Values x[k] to elements at[k] of a view, nf > 0 (a copy for a packed one). */
+static void put_plane(const bs_view *view, const double *x, const size_t *at, size_t nf)
+{
+    if (bsi_stride(view->stride) == (ptrdiff_t)sizeof(double)) {
+        double *dst = view->data;
+        if (at[nf - 1] - at[0] == nf - 1) /* at ascends: no point left out */
+            memcpy(dst + at[0], x, nf * sizeof(double));
+        else
+            for (size_t k = 0; k < nf; k++)
+                dst[at[k]] = x[k];
+        return;
+    }
+    for (size_t k = 0; k < nf; k++)
+        *bsi_at(view, at[k]) = x[k];
 }
 
 /* Outputs of point k: the curvature, or NaN everywhere. */
@@ -118,24 +183,18 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         (dmin && (st = bsi_check_views(dmin, 3, n)) != BS_OK) ||
         (dmax && (st = bsi_check_views(dmax, 3, n)) != BS_OK))
         return st;
-    /* the one allocation, before anything is written */
-    double *scratch = malloc((bsi_deriv_table_scratch(p, 2, 2) + 27) * sizeof(double));
-    bsi_curv_nets nets = {{NULL, NULL, NULL}};
-    int nets_ok = scratch != NULL;
-    for (int j = 0; j < 3 && nets_ok && !p->rational; j++) /* S_uu, S_uv, S_vv */
-        nets_ok = bs_patch_derivative(p, (unsigned)(2 - j), (unsigned)j, &nets.d2[j]) == BS_OK;
-    if (!nets_ok) {
-        free(scratch);
-        for (int j = 0; j < 3; j++)
-            bs_patch_destroy(nets.d2[j]);
+    /* the one allocation (the rational table's scratch), before anything is written */
+    double *scratch = NULL;
+    if (p->rational &&
+        (scratch = malloc((bsi_deriv_table_scratch(p, 2, 2) + 27) * sizeof(double))) == NULL)
         return BS_ERR_NO_MEMORY;
-    }
     double inv_d = 1.0 / net_diagonal(p);
-    enum { B = 32 };
-    for (size_t k0 = 0; k0 < n; k0 += B) {
-        size_t nb = n - k0 < B ? n - k0 : B, nf = 0;
-        double ub[B], vb[B];
-        size_t at[B];
+    bsi_nscale sc;
+    bsi_normal_scale(p, &sc);
+    for (size_t k0 = 0; k0 < n; k0 += L) {
+        size_t nb = n - k0 < L ? n - k0 : L, nf = 0;
+        double ub[L], vb[L];
+        size_t at[L];
         for (size_t k = 0; k < nb; k++) {
             double x = bsi_cget(u, k0 + k), y = bsi_cget(v, k0 + k);
             if (isfinite(x) && isfinite(y)) {
@@ -148,25 +207,43 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
                     kind[k0 + k] = BS_CURV_UNDEFINED;
             }
         }
-        bsi_partials q[B];
-        unsigned char nk[B];
-        bsi_curv_partials(p, p->rational ? NULL : &nets, nf, ub, vb, scratch, q, nk);
+        if (nf == 0)
+            continue;
+        double d[15 * L], nrm[3 * L], out[10 * L], flag[L];
+        unsigned char nk[L], ck[L];
+        bsi_curv_partials(p, &sc, nf, ub, vb, scratch, d, nrm, nk);
+        curv_chunk(nf, d, nrm, inv_d, out, flag);
         for (size_t k = 0; k < nf; k++) {
+            ck[k] = BS_CURV_REGULAR;
+            if (nk[k] == BS_NORMAL_REGULAR && flag[k] == 0.0)
+                continue;
+            /* the rare points: squares out of range, limit or undefined normals */
             bsi_curv c;
-            unsigned char ck = BS_CURV_UNDEFINED;
-            if (nk[k] == BS_NORMAL_REGULAR) {
-                bsi_curv_regular(&q[k], inv_d, &c);
-                ck = BS_CURV_REGULAR;
-            } else if (nk[k] == BS_NORMAL_LIMIT) {
-                ck = bsi_curv_limit(p, ub[k], vb[k], q[k].nrm, inv_d, scratch, &c);
+            bsi_partials q;
+            bsi_curv_gather(d, nrm, k, &q);
+            if (nk[k] == BS_NORMAL_REGULAR)
+                bsi_curv_regular(&q, inv_d, &c);
+            else
+                ck[k] = nk[k] == BS_NORMAL_LIMIT
+                            ? bsi_curv_limit(p, &sc, ub[k], vb[k], q.nrm, inv_d, scratch, &c)
+                            : BS_CURV_UNDEFINED;
+            int defined = ck[k] != BS_CURV_UNDEFINED;
+            for (size_t i = 0; i < 4; i++)
+                out[i * L + k] = defined ? c.k[i] : NAN;
+            for (size_t i = 0; i < 3; i++) {
+                out[(4 + i) * L + k] = defined ? c.dmin[i] : NAN;
+                out[(7 + i) * L + k] = defined ? c.dmax[i] : NAN;
             }
-            put(curv, dmin, dmax, at[k], &c, ck != BS_CURV_UNDEFINED);
-            if (kind)
-                kind[at[k]] = ck;
         }
+        for (size_t i = 0; i < 4 && curv; i++)
+            put_plane(&curv[i], out + i * L, at, nf);
+        for (size_t i = 0; i < 3 && dmin; i++)
+            put_plane(&dmin[i], out + (4 + i) * L, at, nf);
+        for (size_t i = 0; i < 3 && dmax; i++)
+            put_plane(&dmax[i], out + (7 + i) * L, at, nf);
+        for (size_t k = 0; kind && k < nf; k++)
+            kind[at[k]] = ck[k];
     }
     free(scratch);
-    for (int j = 0; j < 3; j++)
-        bs_patch_destroy(nets.d2[j]);
     return BS_OK;
 }

@@ -51,8 +51,8 @@ static int frame(const double *t, const double *nrm, bsi_curv *out)
     return 1;
 }
 
-unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double nrm[3],
-                             double inv_d, double *scratch, bsi_curv *out)
+unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, double v,
+                             const double nrm[3], double inv_d, double *scratch, bsi_curv *out)
 {
     double du = 0.5 - u, dv = 0.5 - v;
     if (du == 0.0 && dv == 0.0)
@@ -63,14 +63,16 @@ unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double
         us[j] = u + h * du;
         vs[j] = v + h * dv;
     }
-    bsi_partials q[LEVELS];
-    unsigned char nk[LEVELS];
+    double d[15 * BSI_PCHUNK], nv[3 * BSI_PCHUNK];
+    unsigned char nk[BSI_PCHUNK];
     bsi_curv c[LEVELS];
-    bsi_curv_partials(p, NULL, LEVELS, us, vs, scratch, q, nk);
+    bsi_curv_partials(p, sc, LEVELS, us, vs, scratch, d, nv, nk);
     for (int j = 0; j < LEVELS; j++) {
         if (nk[j] != BS_NORMAL_REGULAR)
             return BS_CURV_UNDEFINED;
-        bsi_curv_regular(&q[j], inv_d, &c[j]);
+        bsi_partials q;
+        bsi_curv_gather(d, nv, (size_t)j, &q);
+        bsi_curv_regular(&q, inv_d, &c[j]);
         /* principal directions are lines: keep each sample's sign next to the first's */
         double smin = bsi_dot3(c[j].dmin, c[0].dmin) < 0.0 ? -1.0 : 1.0;
         for (int i = 0; i < 3; i++)
@@ -94,8 +96,8 @@ unsigned char bsi_curv_limit(const bs_patch *p, double u, double v, const double
     double t[3];
     if (out->k[3] - out->k[2] <= 10.0 * LIMIT_TOL * scale) {
         bsi_partials here;
-        unsigned char hk;
-        bsi_curv_partials(p, NULL, 1, &u, &v, scratch, &here, &hk);
+        bsi_curv_partials(p, sc, 1, &u, &v, scratch, d, nv, nk);
+        bsi_curv_gather(d, nv, 0, &here);
         double len = 1.0 / inv_d;
         if (unit3(here.d[0], len, t) && frame(t, nrm, out))
             return BS_CURV_LIMIT;

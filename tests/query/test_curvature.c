@@ -121,10 +121,12 @@ static void random_patches(void)
 {
     unsigned long long rng = 99;
     double ctrl[8 * 8 * 3], w[64];
-    for (int trial = 0; trial < 60; trial++) {
+    for (int trial = 0; trial < 70; trial++) {
         size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 1 + (size_t)(bs_test_rand_u64(&rng) % 5);
         if (m + n < 3)
             m = 2;
+        if (trial >= 60) /* and bicubic ones, which have their own kernel */
+            m = n = 3;
         double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
         for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
             for (int c = 0; c < 3; c++) {
@@ -248,6 +250,88 @@ static void teapot_poles(void)
     bs_surface_destroy(s);
 }
 
+/* n points at once (packed outputs) against the same points one by one (the same bits), and
+ * each kind against bs_patch_eval_normal's at the point: regular with regular, undefined with
+ * undefined, a limit normal giving a limit or undefined curvature. Returns the limits seen. */
+enum { KN = 300 };
+static int kinds_and_bits(const bs_patch *p, size_t n, const double *u, const double *v)
+{
+    static double out[10][KN], nrm[3][KN];
+    static unsigned char ck[KN], nk[KN];
+    bs_cview cu = {u, n, 0}, cv = {v, n, 0};
+    bs_view o[10], nv[3];
+    for (int i = 0; i < 10; i++)
+        o[i] = (bs_view){out[i], n, 0};
+    for (int i = 0; i < 3; i++)
+        nv[i] = (bs_view){nrm[i], n, 0};
+    CHECK_STATUS(bs_patch_eval_curvature(p, n, &cu, &cv, o, o + 4, o + 7, ck), BS_OK);
+    CHECK_STATUS(bs_patch_eval_normal(p, n, &cu, &cv, NULL, nv, nk), BS_OK);
+    int limits = 0;
+    for (size_t k = 0; k < n; k++) {
+        int ok = nk[k] == BS_NORMAL_REGULAR ? ck[k] == BS_CURV_REGULAR
+                 : nk[k] == BS_NORMAL_LIMIT ? ck[k] == BS_CURV_LIMIT || ck[k] == BS_CURV_UNDEFINED
+                                            : ck[k] == BS_CURV_UNDEFINED;
+        CHECKF(ok, "(%.17g,%.17g): curvature kind %d, normal kind %d", u[k], v[k], ck[k], nk[k]);
+        limits += ck[k] == BS_CURV_LIMIT;
+        result r;
+        CHECK_STATUS(curvature_at(p, u[k], v[k], &r), BS_OK);
+        int same = r.kind == ck[k];
+        for (int i = 0; i < 4; i++)
+            same &= memcmp(&r.k[i], &out[i][k], sizeof(double)) == 0;
+        for (int i = 0; i < 3; i++)
+            same &= memcmp(&r.dmin[i], &out[4 + i][k], sizeof(double)) == 0 &&
+                    memcmp(&r.dmax[i], &out[7 + i][k], sizeof(double)) == 0;
+        CHECKF(same, "(%.17g,%.17g): a batch differs from the point alone", u[k], v[k]);
+        if (ck[k] != BS_CURV_UNDEFINED) {
+            double nk3[3] = {nrm[0][k], nrm[1][k], nrm[2][k]};
+            check_frame(&r, nk3);
+        }
+    }
+    return limits;
+}
+
+/* kinds_and_bits on the teapot (bicubic, with collapsed edges and poles) on a grid with its
+ * edges and points just inside them, and on polynomial patches of other degrees, some
+ * degenerate (a collapsed row, degree 0). */
+static void kinds_polynomial(void)
+{
+    static const double t[17] = {0.0, 1e-12, 1e-6, 0.0625, 0.125, 0.25, 0.3, 0.375, 0.5, 0.6,
+                                 0.7, 0.75, 0.875, 0.9375, 1.0 - 1e-6, 1.0 - 1e-12, 1.0};
+    double u[KN], v[KN];
+    size_t n = 0;
+    for (int i = 0; i < 17; i++)
+        for (int j = 0; j < 17; j++) {
+            u[n] = t[i];
+            v[n++] = t[j];
+        }
+    bs_surface *s;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    int limits = 0;
+    for (size_t i = 0; i < bs_surface_count(s); i++)
+        limits += kinds_and_bits(bs_surface_get(s, i), n, u, v);
+    CHECKF(limits >= 8, "only %d limit points of the teapot's grid", limits);
+    bs_surface_destroy(s);
+    static const size_t deg[][2] = {{2, 3}, {3, 2}, {5, 1}, {1, 1}, {4, 4}, {3, 3}, {0, 2}, {6, 3}};
+    unsigned long long rng = 7;
+    double ctrl[7 * 7 * 3];
+    for (size_t d = 0; d < sizeof deg / sizeof deg[0]; d++) {
+        for (int collapsed = 0; collapsed < 2; collapsed++) {
+            size_t m = deg[d][0], nn = deg[d][1];
+            for (size_t k = 0; k < (m + 1) * (nn + 1); k++)
+                for (size_t c = 0; c < 3; c++) {
+                    double base = c == 0 ? (double)(k / (nn + 1)) : c == 1 ? (double)(k % (nn + 1)) : 0.0;
+                    /* collapsed: row i = 0 is one point (a pole or collapsed edge at u = 0) */
+                    ctrl[3 * k + c] = collapsed && k <= nn ? (c == 2 ? 0.3 : 0.0)
+                                                           : base + bs_test_rand(&rng, -0.4, 0.4);
+                }
+            bs_patch *p;
+            CHECK_STATUS(bs_patch_create(m, nn, 3, ctrl, NULL, &p), BS_OK);
+            kinds_and_bits(p, n, u, v);
+            bs_patch_destroy(p);
+        }
+    }
+}
+
 static void cone_apex(void)
 {
     /* S(u,v) = u (a(v), b(v), 1): apex at u = 0 (a collapsed side) */
@@ -323,6 +407,7 @@ int main(void)
     printf("limit points (the sphere's pole): worst error %.3g of the scale (contract 1e-6)\n", worst_limit);
     cylinder();
     teapot_poles();
+    kinds_polynomial();
     cone_apex();
     arguments();
     return bs_test_exit("test_curvature");
