@@ -18,6 +18,8 @@
  */
 #include "query/closest.h"
 
+#include "core/kernels.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -125,7 +127,7 @@ void bsi_cl_setup(bsi_cl *w, const double *q)
 }
 
 /* One line of deg+1 values at src, stride apart, halved: the left half to lo, the right to hi. */
-static void split_line(const double *src, size_t deg, size_t stride, double *lo, double *hi,
+BSI_INLINE void split_line(const double *src, size_t deg, size_t stride, double *lo, double *hi,
                        double *t)
 {
     for (size_t k = 0; k <= deg; k++)
@@ -140,9 +142,14 @@ static void split_line(const double *src, size_t deg, size_t stride, double *lo,
     }
 }
 
-void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
+/* The loops below take the sizes as arguments so that the bicubic 3-D polynomial patch (the
+ * teapot's) gets its own copy with constant sizes, unrolled and vectorised by the compiler: the
+ * same operations in the same order as the general copy. */
+#define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
+
+BSI_INLINE void split_sized(bsi_cl *w, const double *src, int dir, double *lo, double *hi,
+                            size_t m, size_t n, size_t nc)
 {
-    size_t m = w->m, n = w->n, nc = w->nc;
     if (dir == BS_DIR_U) {
         for (size_t j = 0; j <= n; j++)
             for (size_t c = 0; c < nc; c++) {
@@ -158,9 +165,18 @@ void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
     }
 }
 
-void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
+void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
 {
-    size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
+    if (BSI_CL_BICUBIC3(w))
+        split_sized(w, src, dir, lo, hi, 3, 3, 3);
+    else
+        split_sized(w, src, dir, lo, hi, w->m, w->n, w->nc);
+}
+
+BSI_INLINE void box_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size_t m, size_t n,
+                          size_t dim, size_t nc)
+{
+    size_t pts = (m + 1) * (n + 1);
     double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
     for (size_t c = 0; c < dim; c++) {
         lo[c] = INFINITY;
@@ -202,9 +218,17 @@ void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
     b->dir = m == 0 && n == 0 ? -1 : (n == 0 || (m > 0 && lu >= lv)) ? BS_DIR_U : BS_DIR_V;
 }
 
+void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
+{
+    if (BSI_CL_BICUBIC3(w))
+        box_sized(w, net, b, 3, 3, 3, 3);
+    else
+        box_sized(w, net, b, w->m, w->n, w->dim, w->nc);
+}
+
 /* out[(i+i')(2n+1) + j+j'] += f x[i][j] y[i'][j'] over all pairs with i' >= i (f = 2 where i' > i):
  * the self-product x y of one coordinate plane when y = x (planes (m+1) x (n+1), row-major). */
-static void self_product(const double *x, size_t m, size_t n, double *out)
+BSI_INLINE void self_product(const double *x, size_t m, size_t n, double *out)
 {
     size_t n1 = n + 1, n2 = 2 * n + 1;
     for (size_t i = 0; i <= m; i++)
@@ -220,12 +244,37 @@ static void self_product(const double *x, size_t m, size_t n, double *out)
         }
 }
 
+/* N's coefficients (times the binomials, into out, zeroed) of a bicubic 3-D polynomial net from
+ * its planes x (coordinate-major, 16 each, times the binomials): the pairs of self_product, the
+ * three coordinates' products summed before they are added in, vectorised over j'. */
+BSI_HOT static void product_bicubic3(const double *x, double *out)
+{
+    double o[7][8] = {{0.0}}, y[3][4][4];
+    for (int c = 0; c < 3; c++)
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 4; j++)
+                y[c][i][j] = x[c * 16 + i * 4 + j];
+    for (int i = 0; i < 4; i++)
+        for (int i2 = i; i2 < 4; i2++) {
+            double f = i2 == i ? 1.0 : 2.0;
+            for (int j = 0; j < 4; j++) {
+                double a0 = f * y[0][i][j], a1 = f * y[1][i][j], a2 = f * y[2][i][j];
+                double *row = &o[i + i2][j];
+                for (int j2 = 0; j2 < 4; j2++)
+                    row[j2] += a0 * y[0][i2][j2] + a1 * y[1][i2][j2] + a2 * y[2][i2][j2];
+            }
+        }
+    for (int k = 0; k < 7; k++)
+        for (int l = 0; l < 7; l++)
+            out[k * 7 + l] = o[k][l];
+}
+
 /* The direction in which the coefficients of f (the ratios N_kl / W_kl) differ
  * most from f: their second differences along it times the degree, the size of the gap between
  * coefficients and values that halving the box along it divides by 4. -1 when both are zero
  * (then the net's longer side decides); f's coefficients are in w->fco. Where f does not depend on one direction (a cylinder
  * seen from its axis: a line of minima) only the other is split. */
-static int slack_direction(const bsi_cl *w, size_t m, size_t n)
+BSI_INLINE int slack_direction(const bsi_cl *w, size_t m, size_t n)
 {
     size_t K = 2 * m, L = 2 * n, n2 = L + 1;
     const double *f = w->fco;
@@ -248,9 +297,10 @@ static int slack_direction(const bsi_cl *w, size_t m, size_t n)
     return eu > ev ? BS_DIR_U : BS_DIR_V;
 }
 
-void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
+BSI_INLINE void fbound_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size_t m, size_t n,
+                             size_t dim, size_t nc)
 {
-    size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
+    size_t pts = (m + 1) * (n + 1);
     size_t n2 = 2 * n + 1, coef = (2 * m + 1) * n2;
     int rational = nc > dim;
     const double *bm = w->binom, *bn = bm + m + 1, *b2m = bn + n + 1, *b2n = b2m + 2 * m + 1;
@@ -271,8 +321,11 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
         w->nco[k] = w->wco[k] = 0.0;
     /* N = sum over pairs of net points of C(m,i)C(m,i')C(n,j)C(n,j') A_ij . A_i'j'
      * B(2m, i+i') B(2n, j+j') / (C(2m,i+i') C(2n,j+j')); W likewise from the weights. */
-    for (size_t c = 0; c < dim; c++)
-        self_product(w->scaled + c * pts, m, n, w->nco);
+    if (m == 3 && n == 3 && dim == 3 && !rational)
+        product_bicubic3(w->scaled, w->nco);
+    else
+        for (size_t c = 0; c < dim; c++)
+            self_product(w->scaled + c * pts, m, n, w->nco);
     if (rational)
         self_product(w->scaled + dim * pts, m, n, w->wco);
     /* Rounding: each N_kl sums at most pts dim products whose magnitudes, over the binomials,
@@ -303,6 +356,14 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
     size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
     b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
     b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
+}
+
+void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
+{
+    if (BSI_CL_BICUBIC3(w))
+        fbound_sized(w, net, b, 3, 3, 3, 3);
+    else
+        fbound_sized(w, net, b, w->m, w->n, w->dim, w->nc);
 }
 
 /* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
