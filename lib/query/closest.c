@@ -80,7 +80,13 @@ static int pruned(const search *s, double lb) { return lb >= current(s) - tolera
  * square is pruned whatever its size, instead of being split until its own bounds reach T. */
 static void certify(bsi_cl *w, search *s)
 {
-    double g[2], c = bsi_cl_grad(w, s->uv, g);
+    double g[2], h[3], c = bsi_cl_grad(w, s->uv, g, h);
+    /* For a polynomial patch G = f - c, and lambda bounds its Hessian from below over a square
+     * that holds x*: where f's Hessian at x* is not positive definite no square can be shown
+     * convex, so none is tried (this saves work only: a square is an extra pruning). */
+    if (w->nc == w->dim && w->m > 0 && w->n > 0 &&
+        !(h[0] > 0.0 && h[2] > 0.0 && h[0] * h[2] - h[1] * h[1] > 0.0))
+        return;
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
     double rho_w = 1.0 / w->wmin;
     double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w * sqrt((double)w->dim);

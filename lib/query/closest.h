@@ -80,8 +80,8 @@ double bsi_cl_f(bsi_cl *w, double u, double v);
  * Gauss-Newton or gradient step where the Hessian is not positive, and halving steps until f
  * decreases. */
 double bsi_cl_newton(bsi_cl *w, double x[2]);
-/* f and its gradient g[2] at x. */
-double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2]);
+/* f, its gradient g[2] and its Hessian h[3] (uu, uv, vv) at x. */
+double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3]);
 
 /* bsi_patch_closest_one, also counting the boxes whose second-order bound was computed
  * (lib/query/closest.c; boxes may be NULL). */

@@ -51,9 +51,9 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
 
 double bsi_cl_f(bsi_cl *w, double u, double v) { return eval(w, u, v, NULL, NULL, NULL); }
 
-double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2])
+double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3])
 {
-    double h[3], gn[3];
+    double gn[3];
     return eval(w, x[0], x[1], g, h, gn);
 }
 
