@@ -30,7 +30,7 @@
 typedef struct box {
     double u0, u1, v0, v1, aabb;
     unsigned depth, slot;
-    int dir; /* the direction to split it, -1 for none */
+    int dir; /* the direction to split it (set when it survives), -1 for none */
 } box;
 
 /* Rounding of the nets of boxes at depth k (scaled units, the root net's magnitude 1): each
@@ -167,8 +167,8 @@ static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
     if (pruned(s, lb))
         return 0;
     try_candidate(w, s, b, &fb);
-    if (fb.dir >= 0)
-        b->dir = fb.dir; /* the direction in which the second-order bound is loosest */
+    /* the direction in which the second-order bound is loosest, else the net's longer side */
+    b->dir = fb.dir >= 0 ? fb.dir : bsi_cl_longer(w, w->pool + b->slot * w->np);
     return !pruned(s, lb);
 }
 
@@ -179,11 +179,9 @@ static size_t search_patch(bsi_cl *w, search *s)
     unsigned free_slots[BSI_CL_SLOTS], nfree = 0;
     for (unsigned k = BSI_CL_SLOTS - 1; k > 0; k--)
         free_slots[nfree++] = k;
-    bsi_cl_bound fb;
     for (size_t k = 0; k < w->np; k++)
         w->pool[k] = w->root[k];
-    bsi_cl_box(w, w->pool, &fb);
-    stack[0] = (box){0.0, 1.0, 0.0, 1.0, fb.aabb, 0, 0, fb.dir};
+    stack[0] = (box){0.0, 1.0, 0.0, 1.0, bsi_cl_box(w, w->pool), 0, 0, -1};
     size_t top = 1, visited = 0;
     while (top > 0 && visited < BOX_CAP) {
         box b = stack[--top];
@@ -204,11 +202,8 @@ static size_t search_patch(bsi_cl *w, search *s)
         double *net = w->pool + b.slot * w->np;
         bsi_cl_split(w, net, b.dir, w->pool + half[0].slot * w->np, w->pool + half[1].slot * w->np);
         free_slots[nfree++] = b.slot;
-        for (int k = 0; k < 2; k++) {
-            bsi_cl_box(w, w->pool + half[k].slot * w->np, &fb);
-            half[k].aabb = fb.aabb;
-            half[k].dir = fb.dir;
-        }
+        for (int k = 0; k < 2; k++)
+            half[k].aabb = bsi_cl_box(w, w->pool + half[k].slot * w->np);
         int near = half[1].aabb < half[0].aabb; /* popped first */
         stack[top++] = half[1 - near];
         stack[top++] = half[near];

@@ -44,12 +44,11 @@ typedef struct bsi_cl {
 
 /* What is known of one box from its sub-net. */
 typedef struct bsi_cl_bound {
-    double aabb;   /* squared distance from q to the bounding box of the Cartesian sub-net */
     double lbf;    /* lower bound on f over the box from the Bernstein coefficients of f, the
                     * rounding of their computation allowed for */
     double su, sv; /* where the smallest coefficient sits, in the box's own parameters */
-    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V), -1 for a constant patch;
-                    * bsi_cl_fbound sets it from the coefficients of f, -1 when they do not tell */
+    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V) from the coefficients of f,
+                    * -1 when they do not tell */
     double err;    /* rounding of the coefficients of N (w->nco), relative of W (w->wco) */
     double rel;
 } bsi_cl_bound;
@@ -61,8 +60,11 @@ void bsi_cl_free(bsi_cl *w);
 void bsi_cl_setup(bsi_cl *w, const double *q);
 /* de Casteljau at 1/2 along dir: the halves of src into lo and hi. */
 void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi);
-/* b->aabb and b->dir of a sub-net. */
-void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* The squared distance from q to the bounding box of the Cartesian sub-net (first order). */
+double bsi_cl_box(bsi_cl *w, const double *net);
+/* The direction to split a sub-net across its longer side (BS_DIR_U or BS_DIR_V; -1 for a
+ * constant patch): where the coefficients of f do not tell. */
+int bsi_cl_longer(bsi_cl *w, const double *net);
 /* b->lbf, b->su and b->sv of a sub-net: the second-order bound (N and W left in w->nco, w->wco). */
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b);
 /* The sub-net of the box [x[0], x[1]] x [x[2], x[3]] of the root net into w->region. */

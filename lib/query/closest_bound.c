@@ -142,15 +142,47 @@ BSI_INLINE void split_line(const double *src, size_t deg, size_t stride, double 
     }
 }
 
-/* The loops below take the sizes as arguments so that the bicubic 3-D polynomial patch (the
- * teapot's) gets its own copy with constant sizes, unrolled and vectorised by the compiler: the
- * same operations in the same order as the general copy. */
+/* Halving of a bicubic 3-D polynomial net (the teapot's), the same operations as split_line:
+ * a line along u is a column of rows of 12 doubles, one along v 4 points of 3 doubles in a row,
+ * so each step of de Casteljau's algorithm runs over len (12 or 3) contiguous values at once. */
+BSI_INLINE void halve4(const double *x, size_t len, double *l, double *h)
+{
+    double t[4][12];
+    for (size_t k = 0; k < 4; k++)
+        for (size_t e = 0; e < len; e++)
+            t[k][e] = x[k * len + e];
+    for (size_t e = 0; e < len; e++) {
+        l[e] = t[0][e];
+        h[3 * len + e] = t[3][e];
+    }
+    for (size_t r = 1; r <= 3; r++) {
+        for (size_t k = 0; k + r <= 3; k++)
+            for (size_t e = 0; e < len; e++)
+                t[k][e] = 0.5 * (t[k][e] + t[k + 1][e]);
+        for (size_t e = 0; e < len; e++) {
+            l[r * len + e] = t[0][e];
+            h[(3 - r) * len + e] = t[3 - r][e];
+        }
+    }
+}
+
+BSI_HOT static void split_bicubic3(const double *src, int dir, double *lo, double *hi)
+{
+    if (dir == BS_DIR_U)
+        halve4(src, 12, lo, hi);
+    else
+        for (size_t i = 0; i < 4; i++)
+            halve4(src + i * 12, 3, lo + i * 12, hi + i * 12);
+}
+
 #define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
 
-BSI_INLINE void split_sized(bsi_cl *w, const double *src, int dir, double *lo, double *hi,
-                            size_t m, size_t n, size_t nc)
+void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
 {
-    if (dir == BS_DIR_U) {
+    size_t m = w->m, n = w->n, nc = w->nc;
+    if (BSI_CL_BICUBIC3(w)) {
+        split_bicubic3(src, dir, lo, hi);
+    } else if (dir == BS_DIR_U) {
         for (size_t j = 0; j <= n; j++)
             for (size_t c = 0; c < nc; c++) {
                 size_t o = j * nc + c;
@@ -165,40 +197,56 @@ BSI_INLINE void split_sized(bsi_cl *w, const double *src, int dir, double *lo, d
     }
 }
 
-void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
+/* The Cartesian points of a net into w->cart. */
+static void cartesian(bsi_cl *w, const double *net)
 {
-    if (BSI_CL_BICUBIC3(w))
-        split_sized(w, src, dir, lo, hi, 3, 3, 3);
-    else
-        split_sized(w, src, dir, lo, hi, w->m, w->n, w->nc);
-}
-
-BSI_INLINE void box_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size_t m, size_t n,
-                          size_t dim, size_t nc)
-{
-    size_t pts = (m + 1) * (n + 1);
-    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
-    for (size_t c = 0; c < dim; c++) {
-        lo[c] = INFINITY;
-        hi[c] = -INFINITY;
-    }
+    size_t dim = w->dim, nc = w->nc, pts = (w->m + 1) * (w->n + 1);
     for (size_t k = 0; k < pts; k++) {
         double inv = nc > dim ? 1.0 / net[k * nc + dim] : 1.0;
-        for (size_t c = 0; c < dim; c++) {
-            double x = nc > dim ? net[k * nc + c] * inv : net[k * nc + c];
-            w->cart[k * dim + c] = x;
-            lo[c] = x < lo[c] ? x : lo[c];
-            hi[c] = x > hi[c] ? x : hi[c];
-        }
+        for (size_t c = 0; c < dim; c++)
+            w->cart[k * dim + c] = nc > dim ? net[k * nc + c] * inv : net[k * nc + c];
     }
+}
+
+/* The squared distance from the origin to the bounding box of pts points x of dimension dim. */
+BSI_INLINE double box_gap2(const double *x, size_t pts, size_t dim)
+{
+    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
+    for (size_t c = 0; c < dim; c++)
+        lo[c] = hi[c] = x[c];
+    for (size_t k = 1; k < pts; k++)
+        for (size_t c = 0; c < dim; c++) {
+            double y = x[k * dim + c];
+            lo[c] = y < lo[c] ? y : lo[c];
+            hi[c] = y > hi[c] ? y : hi[c];
+        }
     double gap2 = 0.0;
     for (size_t c = 0; c < dim; c++) {
         double g = fmax(0.0, fmax(lo[c], -hi[c]));
         gap2 += g * g;
     }
-    b->aabb = gap2;
-    /* Split across the longer direction of the net: the largest step between neighbours along
-     * u (times m) against along v (times n), a bound on |S_u| and |S_v| over the box. */
+    return gap2;
+}
+
+BSI_HOT static double box_bicubic3(const double *net) { return box_gap2(net, 16, 3); }
+
+double bsi_cl_box(bsi_cl *w, const double *net)
+{
+    if (BSI_CL_BICUBIC3(w))
+        return box_bicubic3(net);
+    if (w->nc > w->dim) {
+        cartesian(w, net);
+        net = w->cart;
+    }
+    return box_gap2(net, (w->m + 1) * (w->n + 1), w->dim);
+}
+
+int bsi_cl_longer(bsi_cl *w, const double *net)
+{
+    size_t m = w->m, n = w->n, dim = w->dim;
+    cartesian(w, net);
+    /* the largest step between neighbours along u (times m) against along v (times n), a bound
+     * on |S_u| and |S_v| over the box */
     double lu = 0.0, lv = 0.0;
     for (size_t i = 0; i <= m; i++)
         for (size_t j = 0; j <= n; j++) {
@@ -215,15 +263,7 @@ BSI_INLINE void box_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size_t 
         }
     lu *= (double)m;
     lv *= (double)n;
-    b->dir = m == 0 && n == 0 ? -1 : (n == 0 || (m > 0 && lu >= lv)) ? BS_DIR_U : BS_DIR_V;
-}
-
-void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
-{
-    if (BSI_CL_BICUBIC3(w))
-        box_sized(w, net, b, 3, 3, 3, 3);
-    else
-        box_sized(w, net, b, w->m, w->n, w->dim, w->nc);
+    return m == 0 && n == 0 ? -1 : (n == 0 || (m > 0 && lu >= lv)) ? BS_DIR_U : BS_DIR_V;
 }
 
 /* out[(i+i')(2n+1) + j+j'] += f x[i][j] y[i'][j'] over all pairs with i' >= i (f = 2 where i' > i):
@@ -360,10 +400,7 @@ BSI_INLINE void fbound_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size
 
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
 {
-    if (BSI_CL_BICUBIC3(w))
-        fbound_sized(w, net, b, 3, 3, 3, 3);
-    else
-        fbound_sized(w, net, b, w->m, w->n, w->dim, w->nc);
+    fbound_sized(w, net, b, w->m, w->n, w->dim, w->nc);
 }
 
 /* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
