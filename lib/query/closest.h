@@ -11,6 +11,7 @@
 #ifndef BEZSURF_QUERY_CLOSEST_H
 #define BEZSURF_QUERY_CLOSEST_H
 
+#include "core/kernels.h"
 #include "query/internal.h"
 
 /* Deepest box (binary splits of the domain); nets kept at once is at most one more than that. */
@@ -89,5 +90,63 @@ double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3]);
  * (lib/query/closest.c; boxes may be NULL). */
 int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
                             double uv[2], size_t *boxes);
+
+/* The bicubic 3-D polynomial patch (m = n = 3, dim = nc = 3), lib/query/closest_bicubic.c:
+ * bsi_cl_split, bsi_cl_box and bsi_cl_fbound on constant sizes. */
+#define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
+void bsi_cl_split3(const double *src, int dir, double *lo, double *hi);
+double bsi_cl_box3(const double *net);
+void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* The end of bsi_cl_fbound: what b receives from the smallest ratio (at arg), the smallest lower
+ * bound low on the ratios, the rounding terms err and rel, and the direction dir to split. */
+void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,
+                          double rel, int dir);
+
+/* The squared distance from the origin to the bounding box of pts points x of dimension dim. */
+BSI_INLINE double bsi_cl_box_gap2(const double *x, size_t pts, size_t dim)
+{
+    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
+    for (size_t c = 0; c < dim; c++)
+        lo[c] = hi[c] = x[c];
+    for (size_t k = 1; k < pts; k++)
+        for (size_t c = 0; c < dim; c++) {
+            double y = x[k * dim + c];
+            lo[c] = y < lo[c] ? y : lo[c];
+            hi[c] = y > hi[c] ? y : hi[c];
+        }
+    double gap2 = 0.0;
+    for (size_t c = 0; c < dim; c++) {
+        double g = fmax(0.0, fmax(lo[c], -hi[c]));
+        gap2 += g * g;
+    }
+    return gap2;
+}
+
+/* The direction in which the coefficients of f (the ratios N_kl / W_kl, in w->fco) differ most
+ * from f: their second differences along it times the degree, the size of the gap between
+ * coefficients and values that halving the box along it divides by 4. -1 when both are zero
+ * (then the net's longer side decides). Where f does not depend on one direction (a cylinder
+ * seen from its axis: a line of minima) only the other is split. */
+BSI_INLINE int bsi_cl_slack(const bsi_cl *w, size_t m, size_t n)
+{
+    size_t K = 2 * m, L = 2 * n, n2 = L + 1;
+    const double *f = w->fco;
+    double eu = 0.0, ev = 0.0;
+    for (size_t k = 0; k + 2 <= K; k++)
+        for (size_t l = 0; l <= L; l++) {
+            double d = fabs(f[(k + 2) * n2 + l] - 2.0 * f[(k + 1) * n2 + l] + f[k * n2 + l]);
+            eu = d > eu ? d : eu;
+        }
+    for (size_t k = 0; k <= K; k++)
+        for (size_t l = 0; l + 2 <= L; l++) {
+            double d = fabs(f[k * n2 + l + 2] - 2.0 * f[k * n2 + l + 1] + f[k * n2 + l]);
+            ev = d > ev ? d : ev;
+        }
+    eu *= (double)K;
+    ev *= (double)L;
+    if (eu == ev) /* both zero, or a tie */
+        return -1;
+    return eu > ev ? BS_DIR_U : BS_DIR_V;
+}
 
 #endif

@@ -18,7 +18,6 @@
  */
 #include "query/closest.h"
 
-#include "core/kernels.h"
 
 #include <float.h>
 #include <math.h>
@@ -142,46 +141,11 @@ BSI_INLINE void split_line(const double *src, size_t deg, size_t stride, double 
     }
 }
 
-/* Halving of a bicubic 3-D polynomial net (the teapot's), the same operations as split_line:
- * a line along u is a column of rows of 12 doubles, one along v 4 points of 3 doubles in a row,
- * so each step of de Casteljau's algorithm runs over len (12 or 3) contiguous values at once. */
-BSI_INLINE void halve4(const double *x, size_t len, double *l, double *h)
-{
-    double t[4][12];
-    for (size_t k = 0; k < 4; k++)
-        for (size_t e = 0; e < len; e++)
-            t[k][e] = x[k * len + e];
-    for (size_t e = 0; e < len; e++) {
-        l[e] = t[0][e];
-        h[3 * len + e] = t[3][e];
-    }
-    for (size_t r = 1; r <= 3; r++) {
-        for (size_t k = 0; k + r <= 3; k++)
-            for (size_t e = 0; e < len; e++)
-                t[k][e] = 0.5 * (t[k][e] + t[k + 1][e]);
-        for (size_t e = 0; e < len; e++) {
-            l[r * len + e] = t[0][e];
-            h[(3 - r) * len + e] = t[3 - r][e];
-        }
-    }
-}
-
-BSI_HOT static void split_bicubic3(const double *src, int dir, double *lo, double *hi)
-{
-    if (dir == BS_DIR_U)
-        halve4(src, 12, lo, hi);
-    else
-        for (size_t i = 0; i < 4; i++)
-            halve4(src + i * 12, 3, lo + i * 12, hi + i * 12);
-}
-
-#define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
-
 void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
 {
     size_t m = w->m, n = w->n, nc = w->nc;
     if (BSI_CL_BICUBIC3(w)) {
-        split_bicubic3(src, dir, lo, hi);
+        bsi_cl_split3(src, dir, lo, hi);
     } else if (dir == BS_DIR_U) {
         for (size_t j = 0; j <= n; j++)
             for (size_t c = 0; c < nc; c++) {
@@ -208,37 +172,15 @@ static void cartesian(bsi_cl *w, const double *net)
     }
 }
 
-/* The squared distance from the origin to the bounding box of pts points x of dimension dim. */
-BSI_INLINE double box_gap2(const double *x, size_t pts, size_t dim)
-{
-    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
-    for (size_t c = 0; c < dim; c++)
-        lo[c] = hi[c] = x[c];
-    for (size_t k = 1; k < pts; k++)
-        for (size_t c = 0; c < dim; c++) {
-            double y = x[k * dim + c];
-            lo[c] = y < lo[c] ? y : lo[c];
-            hi[c] = y > hi[c] ? y : hi[c];
-        }
-    double gap2 = 0.0;
-    for (size_t c = 0; c < dim; c++) {
-        double g = fmax(0.0, fmax(lo[c], -hi[c]));
-        gap2 += g * g;
-    }
-    return gap2;
-}
-
-BSI_HOT static double box_bicubic3(const double *net) { return box_gap2(net, 16, 3); }
-
 double bsi_cl_box(bsi_cl *w, const double *net)
 {
     if (BSI_CL_BICUBIC3(w))
-        return box_bicubic3(net);
+        return bsi_cl_box3(net);
     if (w->nc > w->dim) {
         cartesian(w, net);
         net = w->cart;
     }
-    return box_gap2(net, (w->m + 1) * (w->n + 1), w->dim);
+    return bsi_cl_box_gap2(net, (w->m + 1) * (w->n + 1), w->dim);
 }
 
 int bsi_cl_longer(bsi_cl *w, const double *net)
@@ -268,7 +210,7 @@ int bsi_cl_longer(bsi_cl *w, const double *net)
 
 /* out[(i+i')(2n+1) + j+j'] += f x[i][j] y[i'][j'] over all pairs with i' >= i (f = 2 where i' > i):
  * the self-product x y of one coordinate plane when y = x (planes (m+1) x (n+1), row-major). */
-BSI_INLINE void self_product(const double *x, size_t m, size_t n, double *out)
+static void self_product(const double *x, size_t m, size_t n, double *out)
 {
     size_t n1 = n + 1, n2 = 2 * n + 1;
     for (size_t i = 0; i <= m; i++)
@@ -284,63 +226,26 @@ BSI_INLINE void self_product(const double *x, size_t m, size_t n, double *out)
         }
 }
 
-/* N's coefficients (times the binomials, into out, zeroed) of a bicubic 3-D polynomial net from
- * its planes x (coordinate-major, 16 each, times the binomials): the pairs of self_product, the
- * three coordinates' products summed before they are added in, vectorised over j'. */
-BSI_HOT static void product_bicubic3(const double *x, double *out)
+void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,
+                          double rel, int dir)
 {
-    double o[7][8] = {{0.0}}, y[3][4][4];
-    for (int c = 0; c < 3; c++)
-        for (int i = 0; i < 4; i++)
-            for (int j = 0; j < 4; j++)
-                y[c][i][j] = x[c * 16 + i * 4 + j];
-    for (int i = 0; i < 4; i++)
-        for (int i2 = i; i2 < 4; i2++) {
-            double f = i2 == i ? 1.0 : 2.0;
-            for (int j = 0; j < 4; j++) {
-                double a0 = f * y[0][i][j], a1 = f * y[1][i][j], a2 = f * y[2][i][j];
-                double *row = &o[i + i2][j];
-                for (int j2 = 0; j2 < 4; j2++)
-                    row[j2] += a0 * y[0][i2][j2] + a1 * y[1][i2][j2] + a2 * y[2][i2][j2];
-            }
-        }
-    for (int k = 0; k < 7; k++)
-        for (int l = 0; l < 7; l++)
-            out[k * 7 + l] = o[k][l];
+    size_t m = w->m, n = w->n, n2 = 2 * n + 1;
+    b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
+    b->err = err;
+    b->rel = rel;
+    b->dir = dir;
+    size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
+    b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
+    b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
 }
 
-/* The direction in which the coefficients of f (the ratios N_kl / W_kl) differ
- * most from f: their second differences along it times the degree, the size of the gap between
- * coefficients and values that halving the box along it divides by 4. -1 when both are zero
- * (then the net's longer side decides); f's coefficients are in w->fco. Where f does not depend on one direction (a cylinder
- * seen from its axis: a line of minima) only the other is split. */
-BSI_INLINE int slack_direction(const bsi_cl *w, size_t m, size_t n)
+void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
 {
-    size_t K = 2 * m, L = 2 * n, n2 = L + 1;
-    const double *f = w->fco;
-    double eu = 0.0, ev = 0.0;
-    for (size_t k = 0; k <= K; k++)
-        for (size_t l = 0; l <= L; l++) {
-            if (k + 2 <= K) {
-                double d = fabs(f[(k + 2) * n2 + l] - 2.0 * f[(k + 1) * n2 + l] + f[k * n2 + l]);
-                eu = d > eu ? d : eu;
-            }
-            if (l + 2 <= L) {
-                double d = fabs(f[k * n2 + l + 2] - 2.0 * f[k * n2 + l + 1] + f[k * n2 + l]);
-                ev = d > ev ? d : ev;
-            }
-        }
-    eu *= (double)K;
-    ev *= (double)L;
-    if (eu == ev) /* both zero, or a tie */
-        return -1;
-    return eu > ev ? BS_DIR_U : BS_DIR_V;
-}
-
-BSI_INLINE void fbound_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size_t m, size_t n,
-                             size_t dim, size_t nc)
-{
-    size_t pts = (m + 1) * (n + 1);
+    size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
+    if (BSI_CL_BICUBIC3(w)) {
+        bsi_cl_fbound3(w, net, b);
+        return;
+    }
     size_t n2 = 2 * n + 1, coef = (2 * m + 1) * n2;
     int rational = nc > dim;
     const double *bm = w->binom, *bn = bm + m + 1, *b2m = bn + n + 1, *b2n = b2m + 2 * m + 1;
@@ -361,11 +266,8 @@ BSI_INLINE void fbound_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size
         w->nco[k] = w->wco[k] = 0.0;
     /* N = sum over pairs of net points of C(m,i)C(m,i')C(n,j)C(n,j') A_ij . A_i'j'
      * B(2m, i+i') B(2n, j+j') / (C(2m,i+i') C(2n,j+j')); W likewise from the weights. */
-    if (m == 3 && n == 3 && dim == 3 && !rational)
-        product_bicubic3(w->scaled, w->nco);
-    else
-        for (size_t c = 0; c < dim; c++)
-            self_product(w->scaled + c * pts, m, n, w->nco);
+    for (size_t c = 0; c < dim; c++)
+        self_product(w->scaled + c * pts, m, n, w->nco);
     if (rational)
         self_product(w->scaled + dim * pts, m, n, w->wco);
     /* Rounding: each N_kl sums at most pts dim products whose magnitudes, over the binomials,
@@ -389,18 +291,7 @@ BSI_INLINE void fbound_sized(bsi_cl *w, const double *net, bsi_cl_bound *b, size
                 lowk = den > 0.0 ? lowk / (den * (lowk > 0.0 ? 1.0 + rel : 1.0 - rel)) : -INFINITY;
             low = lowk < low ? lowk : low;
         }
-    b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
-    b->err = err;
-    b->rel = rel;
-    b->dir = slack_direction(w, m, n);
-    size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
-    b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
-    b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
-}
-
-void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
-{
-    fbound_sized(w, net, b, w->m, w->n, w->dim, w->nc);
+    bsi_cl_fbound_finish(w, b, low, arg, err, rel, bsi_cl_slack(w, m, n));
 }
 
 /* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
