@@ -92,11 +92,13 @@ int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, 
                             double uv[2], size_t *boxes);
 
 /* The bicubic 3-D polynomial patch (m = n = 3, dim = nc = 3), lib/query/closest_bicubic.c:
- * bsi_cl_split, bsi_cl_box and bsi_cl_fbound on constant sizes. */
+ * bsi_cl_split, bsi_cl_box, bsi_cl_fbound and the partials on constant sizes. */
 #define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
 void bsi_cl_split3(const double *src, int dir, double *lo, double *hi);
 double bsi_cl_box3(const double *net);
 void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* bsi_deriv_table(p, u, v, k, k, ...) for k = 0 or 2, hom = p->hom: the same bits. */
+void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, double *out);
 /* The end of bsi_cl_fbound: what b receives from the smallest ratio (at arg), the smallest lower
  * bound low on the ratios, the rounding terms err and rel, and the direction dir to split. */
 void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,

@@ -90,3 +90,57 @@ BSI_HOT void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b)
     /* min (N_kl - err) is the smallest ratio minus err: the rounding of a difference is monotone */
     bsi_cl_fbound_finish(w, b, best - err, arg, err, rel, bsi_cl_slack(w, 3, 3));
 }
+
+/* The degree-3 basis at t and its derivatives up to order k (b[a][i]), the operations of
+ * bsi_bernstein_deriv (the same bits). */
+BSI_INLINE void basis3(double t, unsigned k, double b[3][4])
+{
+    double s = 1.0 - t, q0 = s * s, q1 = t * s + s * t, q2 = t * t;
+    b[0][0] = s * q0;
+    b[0][1] = t * q0 + s * q1;
+    b[0][2] = t * q1 + s * q2;
+    b[0][3] = t * q2;
+    if (k == 0)
+        return;
+    b[1][3] = 3.0 * q2;
+    b[1][2] = 3.0 * (q1 - q2);
+    b[1][1] = 3.0 * (q0 - q1);
+    b[1][0] = 3.0 * (0.0 - q0);
+    double c2 = 2.0 * t, c1 = 2.0 * (s - t), c0 = 2.0 * (0.0 - s);
+    b[2][3] = 3.0 * c2;
+    b[2][2] = 3.0 * (c1 - c2);
+    b[2][1] = 3.0 * (c0 - c1);
+    b[2][0] = 3.0 * (0.0 - c0);
+}
+
+/* bsi_deriv_table of a bicubic 3-D polynomial patch (hom its coordinate planes) for k = ka = kb
+ * (0 or 2): u contracted first, then v, in bsi_deriv_table's order (the same bits). */
+BSI_INLINE void deriv3_k(const double *hom, double u, double v, unsigned k, double *out)
+{
+    double wu[3][4], wv[3][4];
+    basis3(u, k, wu);
+    basis3(v, k, wv);
+    for (size_t c = 0; c < 3; c++) {
+        const double *net = hom + c * 16;
+        for (size_t a = 0; a <= k; a++) {
+            double q[4] = {-0.0, -0.0, -0.0, -0.0};
+            for (size_t i = 0; i < 4; i++)
+                for (size_t j = 0; j < 4; j++)
+                    q[j] += wu[a][i] * net[i * 4 + j];
+            for (size_t b = 0; b <= k; b++) {
+                double acc = -0.0;
+                for (size_t j = 0; j < 4; j++)
+                    acc += wv[b][j] * q[j];
+                out[(a * (k + 1) + b) * 3 + c] = acc;
+            }
+        }
+    }
+}
+
+BSI_HOT void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, double *out)
+{
+    if (k == 0)
+        deriv3_k(hom, u, v, 0, out);
+    else
+        deriv3_k(hom, u, v, 2, out);
+}

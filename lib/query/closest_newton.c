@@ -20,7 +20,10 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
 {
     size_t dim = w->dim;
     unsigned k = g != NULL ? 2u : 0u;
-    bsi_deriv_table(w->p, u, v, k, k, w->dscratch, w->table);
+    if (BSI_CL_BICUBIC3(w))
+        bsi_cl_deriv3(w->p->hom, u, v, k, w->table);
+    else
+        bsi_deriv_table(w->p, u, v, k, k, w->dscratch, w->table);
     const double *t = w->table;
     double s = w->s1 * w->s2, f = 0.0;
     if (g != NULL)
