@@ -73,8 +73,10 @@ void bsi_cl_region(bsi_cl *w, const double x[4]);
 /* How convex G = N - c W is over the box of the last bsi_cl_fbound (b its result): a lower bound
  * on the smallest eigenvalue of G's Hessian in the box's own parameters (s, t in [0,1]) from its
  * second-difference coefficients, their rounding allowed for; 0 or less when G is not shown
- * convex there, INFINITY for a constant patch. *wlo and *whi receive bounds on W over the box. */
-double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi);
+ * convex there, INFINITY for a constant patch. *wlo and *whi receive bounds on W over the box,
+ * abc the bounds A <= G_ss, |G_st| <= B, C <= G_tt over it (NAN where not found). */
+double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,
+                     double abc[3]);
 
 /* f = |S - q|^2 at (u,v) in scaled units (lib/query/closest_newton.c). */
 double bsi_cl_f(bsi_cl *w, double u, double v);

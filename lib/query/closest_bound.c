@@ -322,8 +322,10 @@ void bsi_cl_region(bsi_cl *w, const double x[4])
             sub_line(w->region + i * (n + 1) * nc + c, n, nc, x[2], x[3]);
 }
 
-double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi)
+double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,
+                     double abc[3])
 {
+    abc[0] = abc[1] = abc[2] = NAN;
     size_t K = 2 * w->m, L = 2 * w->n, n2 = L + 1;
     int rational = w->nc > w->dim;
     const double *b2m = w->binom + w->m + w->n + 2, *b2n = b2m + K + 1;
@@ -364,6 +366,9 @@ double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *w
      * with |b|, so it is at least that of [A B; B C]. A direction of degree 0 does not count. */
     double kk = (double)K, ll = (double)L;
     double A = kk * (kk - 1.0) * alo, C = ll * (ll - 1.0) * clo, B = kk * ll * bhi;
+    abc[0] = A;
+    abc[1] = B;
+    abc[2] = C;
     if (K == 0)
         return L == 0 ? INFINITY : C;
     if (L == 0)
