@@ -231,9 +231,11 @@ static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
     double lb = sqrt(fmax(fb.lbf, 0.0)) - err;
     if (pruned(s, lb))
         return 0;
+    /* the direction in which the second-order bound is loosest, else the net's longer side
+     * (before the candidate, whose squares overwrite the coefficients) */
+    int dir = bsi_cl_direction(w);
+    b->dir = dir >= 0 ? dir : bsi_cl_longer(w, w->pool + b->slot * w->np);
     try_candidate(w, s, b, &fb);
-    /* the direction in which the second-order bound is loosest, else the net's longer side */
-    b->dir = fb.dir >= 0 ? fb.dir : bsi_cl_longer(w, w->pool + b->slot * w->np);
     return !pruned(s, lb);
 }
 

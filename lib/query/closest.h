@@ -48,8 +48,6 @@ typedef struct bsi_cl_bound {
     double lbf;    /* lower bound on f over the box from the Bernstein coefficients of f, the
                     * rounding of their computation allowed for */
     double su, sv; /* where the smallest coefficient sits, in the box's own parameters */
-    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V) from the coefficients of f,
-                    * -1 when they do not tell */
     double err;    /* rounding of the coefficients of N (w->nco), relative of W (w->wco) */
     double rel;
 } bsi_cl_bound;
@@ -63,10 +61,14 @@ void bsi_cl_setup(bsi_cl *w, const double *q);
 void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi);
 /* The squared distance from q to the bounding box of the Cartesian sub-net (first order). */
 double bsi_cl_box(bsi_cl *w, const double *net);
+/* The direction to split the box of the last bsi_cl_fbound from the coefficients of f
+ * (bsi_cl_slack below): BS_DIR_U or BS_DIR_V, -1 when they do not tell. */
+int bsi_cl_direction(const bsi_cl *w);
 /* The direction to split a sub-net across its longer side (BS_DIR_U or BS_DIR_V; -1 for a
  * constant patch): where the coefficients of f do not tell. */
 int bsi_cl_longer(bsi_cl *w, const double *net);
-/* b->lbf, b->su and b->sv of a sub-net: the second-order bound (N and W left in w->nco, w->wco). */
+/* b->lbf, b->su and b->sv of a sub-net: the second-order bound (N and W left in w->nco, w->wco,
+ * the ratios in w->fco). */
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b);
 /* The sub-net of the box [x[0], x[1]] x [x[2], x[3]] of the root net into w->region. */
 void bsi_cl_region(bsi_cl *w, const double x[4]);
@@ -99,12 +101,16 @@ int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, 
 void bsi_cl_split3(const double *src, int dir, double *lo, double *hi);
 double bsi_cl_box3(const double *net);
 void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* bsi_cl_region's subdivision of a copy of the root net to the box x (the same bits). */
+void bsi_cl_region3(double *net, const double x[4]);
 /* bsi_deriv_table(p, u, v, k, k, ...) for k = 0 or 2, hom = p->hom: the same bits. */
 void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, double *out);
 /* The end of bsi_cl_fbound: what b receives from the smallest ratio (at arg), the smallest lower
- * bound low on the ratios, the rounding terms err and rel, and the direction dir to split. */
+ * bound low on the ratios and the rounding terms err and rel. */
 void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,
-                          double rel, int dir);
+                          double rel);
+/* bsi_cl_slack(w, 3, 3). */
+int bsi_cl_slack3(const bsi_cl *w);
 
 /* The squared distance from the origin to the bounding box of pts points x of dimension dim. */
 BSI_INLINE double bsi_cl_box_gap2(const double *x, size_t pts, size_t dim)
@@ -151,6 +157,24 @@ BSI_INLINE int bsi_cl_slack(const bsi_cl *w, size_t m, size_t n)
     if (eu == ev) /* both zero, or a tie */
         return -1;
     return eu > ev ? BS_DIR_U : BS_DIR_V;
+}
+
+/* The part [a, b] of len lines of deg+1 values at once (value e of point k at x[k stride + e]),
+ * in place: at b from the left, then at a/b from the right. */
+BSI_INLINE void bsi_cl_sub_line(double *x, size_t deg, size_t stride, size_t len, double a,
+                                double b)
+{
+    /* [0, b]: after step r the point r of the left part is x[0] of that step; keep them in
+     * place by running the recurrence from the right end */
+    for (size_t r = 1; r <= deg; r++)
+        for (size_t k = deg; k >= r; k--)
+            for (size_t e = 0; e < len; e++)
+                x[k * stride + e] = (1.0 - b) * x[(k - 1) * stride + e] + b * x[k * stride + e];
+    double t = b > 0.0 ? a / b : 0.0; /* [a, b] is [t, 1] of [0, b] */
+    for (size_t r = 1; r <= deg; r++)
+        for (size_t k = 0; k + r <= deg; k++)
+            for (size_t e = 0; e < len; e++)
+                x[k * stride + e] = (1.0 - t) * x[k * stride + e] + t * x[(k + 1) * stride + e];
 }
 
 #endif

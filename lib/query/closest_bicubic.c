@@ -43,6 +43,13 @@ BSI_HOT void bsi_cl_split3(const double *src, int dir, double *lo, double *hi)
             halve4(src + i * 12, 3, lo + i * 12, hi + i * 12);
 }
 
+BSI_HOT void bsi_cl_region3(double *net, const double x[4])
+{
+    bsi_cl_sub_line(net, 3, 12, 12, x[0], x[1]); /* along u: the rows of 12 values at once */
+    for (size_t i = 0; i < 4; i++)
+        bsi_cl_sub_line(net + i * 12, 3, 3, 3, x[2], x[3]); /* along v: 4 points of 3 */
+}
+
 BSI_HOT double bsi_cl_box3(const double *net) { return bsi_cl_box_gap2(net, 16, 3); }
 
 
@@ -88,8 +95,10 @@ BSI_HOT void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b)
             }
         }
     /* min (N_kl - err) is the smallest ratio minus err: the rounding of a difference is monotone */
-    bsi_cl_fbound_finish(w, b, best - err, arg, err, rel, bsi_cl_slack(w, 3, 3));
+    bsi_cl_fbound_finish(w, b, best - err, arg, err, rel);
 }
+
+BSI_HOT int bsi_cl_slack3(const bsi_cl *w) { return bsi_cl_slack(w, 3, 3); }
 
 /* The degree-3 basis at t and its derivatives up to order k (b[a][i]), the operations of
  * bsi_bernstein_deriv (the same bits). */

@@ -227,13 +227,12 @@ static void self_product(const double *x, size_t m, size_t n, double *out)
 }
 
 void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,
-                          double rel, int dir)
+                          double rel)
 {
     size_t m = w->m, n = w->n, n2 = 2 * n + 1;
     b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
     b->err = err;
     b->rel = rel;
-    b->dir = dir;
     size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
     b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
     b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
@@ -291,22 +290,12 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
                 lowk = den > 0.0 ? lowk / (den * (lowk > 0.0 ? 1.0 + rel : 1.0 - rel)) : -INFINITY;
             low = lowk < low ? lowk : low;
         }
-    bsi_cl_fbound_finish(w, b, low, arg, err, rel, bsi_cl_slack(w, m, n));
+    bsi_cl_fbound_finish(w, b, low, arg, err, rel);
 }
 
-/* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
- * then at a/b from the right. */
-static void sub_line(double *x, size_t deg, size_t stride, double a, double b)
+int bsi_cl_direction(const bsi_cl *w)
 {
-    /* [0, b]: after step r the point r of the left part is x[0] of that step; keep them in
-     * place by running the recurrence from the right end */
-    for (size_t r = 1; r <= deg; r++)
-        for (size_t k = deg; k >= r; k--)
-            x[k * stride] = (1.0 - b) * x[(k - 1) * stride] + b * x[k * stride];
-    double t = b > 0.0 ? a / b : 0.0; /* [a, b] is [t, 1] of [0, b] */
-    for (size_t r = 1; r <= deg; r++)
-        for (size_t k = 0; k + r <= deg; k++)
-            x[k * stride] = (1.0 - t) * x[k * stride] + t * x[(k + 1) * stride];
+    return BSI_CL_BICUBIC3(w) ? bsi_cl_slack3(w) : bsi_cl_slack(w, w->m, w->n);
 }
 
 void bsi_cl_region(bsi_cl *w, const double x[4])
@@ -314,12 +303,16 @@ void bsi_cl_region(bsi_cl *w, const double x[4])
     size_t m = w->m, n = w->n, nc = w->nc;
     for (size_t k = 0; k < w->np; k++)
         w->region[k] = w->root[k];
+    if (BSI_CL_BICUBIC3(w)) {
+        bsi_cl_region3(w->region, x);
+        return;
+    }
     for (size_t j = 0; j <= n; j++)
         for (size_t c = 0; c < nc; c++)
-            sub_line(w->region + j * nc + c, m, (n + 1) * nc, x[0], x[1]);
+            bsi_cl_sub_line(w->region + j * nc + c, m, (n + 1) * nc, 1, x[0], x[1]);
     for (size_t i = 0; i <= m; i++)
         for (size_t c = 0; c < nc; c++)
-            sub_line(w->region + i * (n + 1) * nc + c, n, nc, x[2], x[3]);
+            bsi_cl_sub_line(w->region + i * (n + 1) * nc + c, n, nc, 1, x[2], x[3]);
 }
 
 double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,
