@@ -103,16 +103,21 @@ static double separable_bound(const search *s, const double x[4], const double g
                               const double dg[2], const double abc[3])
 {
     double A = abc[0], B = abc[1], C = abc[2], lo[2], hi[2], g0[2], g1[2];
+    double up = 1.0 + 4.0 * DBL_EPSILON, down = 1.0 - 4.0 * DBL_EPSILON;
     for (int i = 0; i < 2; i++) {
+        /* the ranges of d and of the gradient, widened by their rounding (an end at x* exact) */
         double width = x[2 * i + 1] - x[2 * i], at = (s->uv[i] - x[2 * i]) / width;
         lo[i] = s->uv[i] == x[2 * i] ? 0.0 : -(at + 8.0 * DBL_EPSILON);
         hi[i] = s->uv[i] == x[2 * i + 1] ? 0.0 : (1.0 - at) + 8.0 * DBL_EPSILON;
-        g0[i] = (g[i] - dg[i]) * width * (g[i] - dg[i] > 0.0 ? 1.0 - 4.0 * DBL_EPSILON : 1.0 + 4.0 * DBL_EPSILON);
-        g1[i] = (g[i] + dg[i]) * width * (g[i] + dg[i] > 0.0 ? 1.0 + 4.0 * DBL_EPSILON : 1.0 - 4.0 * DBL_EPSILON);
+        double a = g[i] - dg[i], b = g[i] + dg[i];
+        g0[i] = a * width * (a > 0.0 ? down : up);
+        g1[i] = b * width * (b > 0.0 ? up : down);
     }
     if (!(B >= 0.0 && isfinite(A) && isfinite(B) && isfinite(C)))
         return -INFINITY;
-    double alphas[4] = {1.0, C > 0.0 && B > 0.0 ? 2.0 * B / C : 1.0, A > 0.0 && B > 0.0 ? A / (2.0 * B) : 1.0,
+    /* alpha = 1; the t part convex (C - B / alpha = C / 2); the s part convex; balanced */
+    double alphas[4] = {1.0, C > 0.0 && B > 0.0 ? 2.0 * B / C : 1.0,
+                        A > 0.0 && B > 0.0 ? A / (2.0 * B) : 1.0,
                         A > 0.0 && C > 0.0 ? sqrt(C / A) : 1.0};
     double best = -INFINITY;
     for (int k = 0; k < 4; k++) {
@@ -162,8 +167,8 @@ static void certify(bsi_cl *w, search *s)
         double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi, abc);
         if (!(lambda > 0.0 && convex)) {
             /* a square kept only where it prunes now */
-            double lb = poly ? sqrt(fmax(fmax(c + separable_bound(s, x, g, dg, abc), b.lbf), 0.0)) - noise
-                             : -INFINITY;
+            double lbf = poly ? fmax(c + separable_bound(s, x, g, dg, abc), b.lbf) : 0.0;
+            double lb = poly ? sqrt(fmax(lbf, 0.0)) - noise : -INFINITY;
             if (!pruned(s, lb))
                 continue;
             region *rg = &s->reg[s->nreg++ % REGIONS];

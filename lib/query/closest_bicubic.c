@@ -59,7 +59,8 @@ BSI_HOT double bsi_cl_box3(const double *net) { return bsi_cl_box_gap2(net, 16, 
  * 48 products), vectorised over j'. */
 BSI_HOT void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b)
 {
-    static const double b3[4] = {1.0, 3.0, 3.0, 1.0}, b6[7] = {1.0, 6.0, 15.0, 20.0, 15.0, 6.0, 1.0};
+    static const double b3[4] = {1.0, 3.0, 3.0, 1.0};
+    static const double b6[7] = {1.0, 6.0, 15.0, 20.0, 15.0, 6.0, 1.0};
     double y[3][4][4], o[7][8] = {{0.0}}, amax = 0.0;
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++) {
