@@ -30,7 +30,7 @@
 typedef struct box {
     double u0, u1, v0, v1, aabb;
     unsigned depth, slot;
-    int dir; /* the direction to split it, -1 for none */
+    int dir; /* the direction to split it (set when it survives), -1 for none */
 } box;
 
 /* Rounding of the nets of boxes at depth k (scaled units, the root net's magnitude 1): each
@@ -70,6 +70,67 @@ static double tolerance(const search *s)
 /* 1 when a lower bound lb on the distance over a box cannot beat the best by more than T. */
 static int pruned(const search *s, double lb) { return lb >= current(s) - tolerance(s); }
 
+/* The smallest of q(x) = gam x + a x^2 / 2 over x in [l, h] (l <= 0 <= h) for every gam in
+ * [g0, g1] (it is concave in gam: attained at g0 or g1); *mag grows to the largest magnitude of
+ * the terms (for the rounding). */
+static double quad_min(double g0, double g1, double a, double l, double h, double *mag)
+{
+    double least = 0.0, gs[2] = {g0, g1};
+    for (int k = 0; k < 2; k++) {
+        double gam = gs[k], xs[2] = {l, h};
+        for (int i = 0; i < 2; i++) {
+            double lin = gam * xs[i], sq = 0.5 * a * xs[i] * xs[i];
+            least = fmin(least, lin + sq);
+            *mag = fmax(*mag, fabs(lin) + fabs(sq));
+        }
+        if (a > 0.0 && -gam >= a * l && -gam <= a * h) { /* the vertex -gam/a lies in [l, h] */
+            double v = gam * gam / (2.0 * a);
+            least = fmin(least, -v);
+            *mag = fmax(*mag, v);
+        }
+    }
+    return least;
+}
+
+/* A lower bound on f - c over the square x around x* = s->uv of a polynomial patch (G = f - c)
+ * without convexity, for minima on an edge or at a corner: with A <= G_ss, C <= G_tt, |G_st| <= B
+ * in the square's parameters (abc), Taylor's formula with the integral remainder gives
+ * G(x* + d) >= G(x*) + gam . d + (A ds^2 + C dt^2) / 2 - B |ds dt|, and for any alpha > 0
+ * B |ds dt| <= B (alpha ds^2 + dt^2 / alpha) / 2 splits it into two quadratics of one variable,
+ * each bounded over its range of d (exactly, at its ends or its vertex). gam is the gradient g in
+ * the square's parameters, off by dg; several alpha are tried, the best bound kept. */
+static double separable_bound(const search *s, const double x[4], const double g[2],
+                              const double dg[2], const double abc[3])
+{
+    double A = abc[0], B = abc[1], C = abc[2], lo[2], hi[2], g0[2], g1[2];
+    double up = 1.0 + 4.0 * DBL_EPSILON, down = 1.0 - 4.0 * DBL_EPSILON;
+    for (int i = 0; i < 2; i++) {
+        /* the ranges of d and of the gradient, widened by their rounding (an end at x* exact) */
+        double width = x[2 * i + 1] - x[2 * i], at = (s->uv[i] - x[2 * i]) / width;
+        lo[i] = s->uv[i] == x[2 * i] ? 0.0 : -(at + 8.0 * DBL_EPSILON);
+        hi[i] = s->uv[i] == x[2 * i + 1] ? 0.0 : (1.0 - at) + 8.0 * DBL_EPSILON;
+        double a = g[i] - dg[i], b = g[i] + dg[i];
+        g0[i] = a * width * (a > 0.0 ? down : up);
+        g1[i] = b * width * (b > 0.0 ? up : down);
+    }
+    if (!(B >= 0.0 && isfinite(A) && isfinite(B) && isfinite(C)))
+        return -INFINITY;
+    /* alpha = 1; the t part convex (C - B / alpha = C / 2); the s part convex; balanced */
+    double alphas[4] = {1.0, C > 0.0 && B > 0.0 ? 2.0 * B / C : 1.0,
+                        A > 0.0 && B > 0.0 ? A / (2.0 * B) : 1.0,
+                        A > 0.0 && C > 0.0 ? sqrt(C / A) : 1.0};
+    double best = -INFINITY;
+    for (int k = 0; k < 4; k++) {
+        double al = alphas[k], mag = 0.0;
+        if (!(al > 0.0 && isfinite(al)))
+            continue;
+        double d = quad_min(g0[0], g1[0], A - B * al, lo[0], hi[0], &mag) +
+                   quad_min(g0[1], g1[1], C - B / al, lo[1], hi[1], &mag);
+        best = fmax(best, d - 16.0 * DBL_EPSILON * mag);
+    }
+    return best;
+}
+
 /* Certify a square around the best point x* (a local minimum from Newton) in which no point
  * is closer: the second-order closure. With c = f(x*) and G = N - c W (G >= 0 exactly where
  * f >= c; G(x*) = 0), if G is convex over the square, with Hessian at least lambda, then
@@ -80,7 +141,12 @@ static int pruned(const search *s, double lb) { return lb >= current(s) - tolera
  * square is pruned whatever its size, instead of being split until its own bounds reach T. */
 static void certify(bsi_cl *w, search *s)
 {
-    double g[2], c = bsi_cl_grad(w, s->uv, g);
+    double g[2], h[3], c = bsi_cl_grad(w, s->uv, g, h);
+    /* For a polynomial patch G = f - c, and lambda bounds its Hessian from below over a square
+     * that holds x*: where f's Hessian at x* is not positive definite (a minimum on an edge or
+     * at a corner) no square can be shown convex, and only separable_bound is tried. */
+    int poly = w->nc == w->dim && w->m > 0 && w->n > 0;
+    int convex = !poly || (h[0] > 0.0 && h[2] > 0.0 && h[0] * h[2] - h[1] * h[1] > 0.0);
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
     double rho_w = 1.0 / w->wmin;
     double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w * sqrt((double)w->dim);
@@ -95,12 +161,22 @@ static void certify(bsi_cl *w, search *s)
         double x[4] = {fmax(0.0, s->uv[0] - r), fmin(1.0, s->uv[0] + r), fmax(0.0, s->uv[1] - r),
                        fmin(1.0, s->uv[1] + r)};
         bsi_cl_bound b;
-        double wlo, whi;
+        double wlo, whi, abc[3];
         bsi_cl_region(w, x);
         bsi_cl_fbound(w, w->region, &b);
-        double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi);
-        if (!(lambda > 0.0))
-            continue;
+        double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi, abc);
+        if (!(lambda > 0.0 && convex)) {
+            /* a square kept only where it prunes now */
+            double lbf = poly ? fmax(c + separable_bound(s, x, g, dg, abc), b.lbf) : 0.0;
+            double lb = poly ? sqrt(fmax(lbf, 0.0)) - noise : -INFINITY;
+            if (!pruned(s, lb))
+                continue;
+            region *rg = &s->reg[s->nreg++ % REGIONS];
+            for (int i = 0; i < 4; i++)
+                rg->x[i] = x[i];
+            rg->lb = lb;
+            return;
+        }
         double rho = 0.0, width = 0.0; /* width: the longer side, over a direction that counts */
         for (size_t i = 0; i < 2; i++) {
             rho += dg[i] * (x[2 * i + 1] - x[2 * i]) -
@@ -160,9 +236,11 @@ static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
     double lb = sqrt(fmax(fb.lbf, 0.0)) - err;
     if (pruned(s, lb))
         return 0;
+    /* the direction in which the second-order bound is loosest, else the net's longer side
+     * (before the candidate, whose squares overwrite the coefficients) */
+    int dir = bsi_cl_direction(w);
+    b->dir = dir >= 0 ? dir : bsi_cl_longer(w, w->pool + b->slot * w->np);
     try_candidate(w, s, b, &fb);
-    if (fb.dir >= 0)
-        b->dir = fb.dir; /* the direction in which the second-order bound is loosest */
     return !pruned(s, lb);
 }
 
@@ -173,11 +251,9 @@ static size_t search_patch(bsi_cl *w, search *s)
     unsigned free_slots[BSI_CL_SLOTS], nfree = 0;
     for (unsigned k = BSI_CL_SLOTS - 1; k > 0; k--)
         free_slots[nfree++] = k;
-    bsi_cl_bound fb;
     for (size_t k = 0; k < w->np; k++)
         w->pool[k] = w->root[k];
-    bsi_cl_box(w, w->pool, &fb);
-    stack[0] = (box){0.0, 1.0, 0.0, 1.0, fb.aabb, 0, 0, fb.dir};
+    stack[0] = (box){0.0, 1.0, 0.0, 1.0, bsi_cl_box(w, w->pool), 0, 0, -1};
     size_t top = 1, visited = 0;
     while (top > 0 && visited < BOX_CAP) {
         box b = stack[--top];
@@ -198,11 +274,8 @@ static size_t search_patch(bsi_cl *w, search *s)
         double *net = w->pool + b.slot * w->np;
         bsi_cl_split(w, net, b.dir, w->pool + half[0].slot * w->np, w->pool + half[1].slot * w->np);
         free_slots[nfree++] = b.slot;
-        for (int k = 0; k < 2; k++) {
-            bsi_cl_box(w, w->pool + half[k].slot * w->np, &fb);
-            half[k].aabb = fb.aabb;
-            half[k].dir = fb.dir;
-        }
+        for (int k = 0; k < 2; k++)
+            half[k].aabb = bsi_cl_box(w, w->pool + half[k].slot * w->np);
         int near = half[1].aabb < half[0].aabb; /* popped first */
         stack[top++] = half[1 - near];
         stack[top++] = half[near];

@@ -11,6 +11,7 @@
 #ifndef BEZSURF_QUERY_CLOSEST_H
 #define BEZSURF_QUERY_CLOSEST_H
 
+#include "core/kernels.h"
 #include "query/internal.h"
 
 /* Deepest box (binary splits of the domain); nets kept at once is at most one more than that. */
@@ -44,12 +45,9 @@ typedef struct bsi_cl {
 
 /* What is known of one box from its sub-net. */
 typedef struct bsi_cl_bound {
-    double aabb;   /* squared distance from q to the bounding box of the Cartesian sub-net */
     double lbf;    /* lower bound on f over the box from the Bernstein coefficients of f, the
                     * rounding of their computation allowed for */
     double su, sv; /* where the smallest coefficient sits, in the box's own parameters */
-    int dir;       /* the direction to split (BS_DIR_U or BS_DIR_V), -1 for a constant patch;
-                    * bsi_cl_fbound sets it from the coefficients of f, -1 when they do not tell */
     double err;    /* rounding of the coefficients of N (w->nco), relative of W (w->wco) */
     double rel;
 } bsi_cl_bound;
@@ -61,17 +59,26 @@ void bsi_cl_free(bsi_cl *w);
 void bsi_cl_setup(bsi_cl *w, const double *q);
 /* de Casteljau at 1/2 along dir: the halves of src into lo and hi. */
 void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi);
-/* b->aabb and b->dir of a sub-net. */
-void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b);
-/* b->lbf, b->su and b->sv of a sub-net: the second-order bound (N and W left in w->nco, w->wco). */
+/* The squared distance from q to the bounding box of the Cartesian sub-net (first order). */
+double bsi_cl_box(bsi_cl *w, const double *net);
+/* The direction to split the box of the last bsi_cl_fbound from the coefficients of f
+ * (bsi_cl_slack below): BS_DIR_U or BS_DIR_V, -1 when they do not tell. */
+int bsi_cl_direction(const bsi_cl *w);
+/* The direction to split a sub-net across its longer side (BS_DIR_U or BS_DIR_V; -1 for a
+ * constant patch): where the coefficients of f do not tell. */
+int bsi_cl_longer(bsi_cl *w, const double *net);
+/* b->lbf, b->su and b->sv of a sub-net: the second-order bound (N and W left in w->nco, w->wco,
+ * the ratios in w->fco). */
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b);
 /* The sub-net of the box [x[0], x[1]] x [x[2], x[3]] of the root net into w->region. */
 void bsi_cl_region(bsi_cl *w, const double x[4]);
 /* How convex G = N - c W is over the box of the last bsi_cl_fbound (b its result): a lower bound
  * on the smallest eigenvalue of G's Hessian in the box's own parameters (s, t in [0,1]) from its
  * second-difference coefficients, their rounding allowed for; 0 or less when G is not shown
- * convex there, INFINITY for a constant patch. *wlo and *whi receive bounds on W over the box. */
-double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi);
+ * convex there, INFINITY for a constant patch. *wlo and *whi receive bounds on W over the box,
+ * abc the bounds A <= G_ss, |G_st| <= B, C <= G_tt over it (NAN where not found). */
+double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,
+                     double abc[3]);
 
 /* f = |S - q|^2 at (u,v) in scaled units (lib/query/closest_newton.c). */
 double bsi_cl_f(bsi_cl *w, double u, double v);
@@ -80,12 +87,94 @@ double bsi_cl_f(bsi_cl *w, double u, double v);
  * Gauss-Newton or gradient step where the Hessian is not positive, and halving steps until f
  * decreases. */
 double bsi_cl_newton(bsi_cl *w, double x[2]);
-/* f and its gradient g[2] at x. */
-double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2]);
+/* f, its gradient g[2] and its Hessian h[3] (uu, uv, vv) at x. */
+double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3]);
 
 /* bsi_patch_closest_one, also counting the boxes whose second-order bound was computed
  * (lib/query/closest.c; boxes may be NULL). */
 int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
                             double uv[2], size_t *boxes);
+
+/* The bicubic 3-D polynomial patch (m = n = 3, dim = nc = 3), lib/query/closest_bicubic.c:
+ * bsi_cl_split, bsi_cl_box, bsi_cl_fbound and the partials on constant sizes. */
+#define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
+void bsi_cl_split3(const double *src, int dir, double *lo, double *hi);
+double bsi_cl_box3(const double *net);
+void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b);
+/* bsi_cl_region's subdivision of a copy of the root net to the box x (the same bits). */
+void bsi_cl_region3(double *net, const double x[4]);
+/* bsi_deriv_table(p, u, v, k, k, ...) for k = 0 or 2, hom = p->hom: the same bits. */
+void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, double *out);
+/* The end of bsi_cl_fbound: what b receives from the smallest ratio (at arg), the smallest lower
+ * bound low on the ratios and the rounding terms err and rel. */
+void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,
+                          double rel);
+/* bsi_cl_slack(w, 3, 3). */
+int bsi_cl_slack3(const bsi_cl *w);
+
+/* The squared distance from the origin to the bounding box of pts points x of dimension dim. */
+BSI_INLINE double bsi_cl_box_gap2(const double *x, size_t pts, size_t dim)
+{
+    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
+    for (size_t c = 0; c < dim; c++)
+        lo[c] = hi[c] = x[c];
+    for (size_t k = 1; k < pts; k++)
+        for (size_t c = 0; c < dim; c++) {
+            double y = x[k * dim + c];
+            lo[c] = y < lo[c] ? y : lo[c];
+            hi[c] = y > hi[c] ? y : hi[c];
+        }
+    double gap2 = 0.0;
+    for (size_t c = 0; c < dim; c++) {
+        double g = fmax(0.0, fmax(lo[c], -hi[c]));
+        gap2 += g * g;
+    }
+    return gap2;
+}
+
+/* The direction in which the coefficients of f (the ratios N_kl / W_kl, in w->fco) differ most
+ * from f: their second differences along it times the degree, the size of the gap between
+ * coefficients and values that halving the box along it divides by 4. -1 when both are zero
+ * (then the net's longer side decides). Where f does not depend on one direction (a cylinder
+ * seen from its axis: a line of minima) only the other is split. */
+BSI_INLINE int bsi_cl_slack(const bsi_cl *w, size_t m, size_t n)
+{
+    size_t K = 2 * m, L = 2 * n, n2 = L + 1;
+    const double *f = w->fco;
+    double eu = 0.0, ev = 0.0;
+    for (size_t k = 0; k + 2 <= K; k++)
+        for (size_t l = 0; l <= L; l++) {
+            double d = fabs(f[(k + 2) * n2 + l] - 2.0 * f[(k + 1) * n2 + l] + f[k * n2 + l]);
+            eu = d > eu ? d : eu;
+        }
+    for (size_t k = 0; k <= K; k++)
+        for (size_t l = 0; l + 2 <= L; l++) {
+            double d = fabs(f[k * n2 + l + 2] - 2.0 * f[k * n2 + l + 1] + f[k * n2 + l]);
+            ev = d > ev ? d : ev;
+        }
+    eu *= (double)K;
+    ev *= (double)L;
+    if (eu == ev) /* both zero, or a tie */
+        return -1;
+    return eu > ev ? BS_DIR_U : BS_DIR_V;
+}
+
+/* The part [a, b] of len lines of deg+1 values at once (value e of point k at x[k stride + e]),
+ * in place: at b from the left, then at a/b from the right. */
+BSI_INLINE void bsi_cl_sub_line(double *x, size_t deg, size_t stride, size_t len, double a,
+                                double b)
+{
+    /* [0, b]: after step r the point r of the left part is x[0] of that step; keep them in
+     * place by running the recurrence from the right end */
+    for (size_t r = 1; r <= deg; r++)
+        for (size_t k = deg; k >= r; k--)
+            for (size_t e = 0; e < len; e++)
+                x[k * stride + e] = (1.0 - b) * x[(k - 1) * stride + e] + b * x[k * stride + e];
+    double t = b > 0.0 ? a / b : 0.0; /* [a, b] is [t, 1] of [0, b] */
+    for (size_t r = 1; r <= deg; r++)
+        for (size_t k = 0; k + r <= deg; k++)
+            for (size_t e = 0; e < len; e++)
+                x[k * stride + e] = (1.0 - t) * x[k * stride + e] + t * x[(k + 1) * stride + e];
+}
 
 #endif

@@ -18,6 +18,7 @@
  */
 #include "query/closest.h"
 
+
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -125,7 +126,7 @@ void bsi_cl_setup(bsi_cl *w, const double *q)
 }
 
 /* One line of deg+1 values at src, stride apart, halved: the left half to lo, the right to hi. */
-static void split_line(const double *src, size_t deg, size_t stride, double *lo, double *hi,
+BSI_INLINE void split_line(const double *src, size_t deg, size_t stride, double *lo, double *hi,
                        double *t)
 {
     for (size_t k = 0; k <= deg; k++)
@@ -143,7 +144,9 @@ static void split_line(const double *src, size_t deg, size_t stride, double *lo,
 void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
 {
     size_t m = w->m, n = w->n, nc = w->nc;
-    if (dir == BS_DIR_U) {
+    if (BSI_CL_BICUBIC3(w)) {
+        bsi_cl_split3(src, dir, lo, hi);
+    } else if (dir == BS_DIR_U) {
         for (size_t j = 0; j <= n; j++)
             for (size_t c = 0; c < nc; c++) {
                 size_t o = j * nc + c;
@@ -158,31 +161,34 @@ void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
     }
 }
 
-void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
+/* The Cartesian points of a net into w->cart. */
+static void cartesian(bsi_cl *w, const double *net)
 {
-    size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
-    double lo[BS_MAX_DIM], hi[BS_MAX_DIM];
-    for (size_t c = 0; c < dim; c++) {
-        lo[c] = INFINITY;
-        hi[c] = -INFINITY;
-    }
+    size_t dim = w->dim, nc = w->nc, pts = (w->m + 1) * (w->n + 1);
     for (size_t k = 0; k < pts; k++) {
         double inv = nc > dim ? 1.0 / net[k * nc + dim] : 1.0;
-        for (size_t c = 0; c < dim; c++) {
-            double x = nc > dim ? net[k * nc + c] * inv : net[k * nc + c];
-            w->cart[k * dim + c] = x;
-            lo[c] = x < lo[c] ? x : lo[c];
-            hi[c] = x > hi[c] ? x : hi[c];
-        }
+        for (size_t c = 0; c < dim; c++)
+            w->cart[k * dim + c] = nc > dim ? net[k * nc + c] * inv : net[k * nc + c];
     }
-    double gap2 = 0.0;
-    for (size_t c = 0; c < dim; c++) {
-        double g = fmax(0.0, fmax(lo[c], -hi[c]));
-        gap2 += g * g;
+}
+
+double bsi_cl_box(bsi_cl *w, const double *net)
+{
+    if (BSI_CL_BICUBIC3(w))
+        return bsi_cl_box3(net);
+    if (w->nc > w->dim) {
+        cartesian(w, net);
+        net = w->cart;
     }
-    b->aabb = gap2;
-    /* Split across the longer direction of the net: the largest step between neighbours along
-     * u (times m) against along v (times n), a bound on |S_u| and |S_v| over the box. */
+    return bsi_cl_box_gap2(net, (w->m + 1) * (w->n + 1), w->dim);
+}
+
+int bsi_cl_longer(bsi_cl *w, const double *net)
+{
+    size_t m = w->m, n = w->n, dim = w->dim;
+    cartesian(w, net);
+    /* the largest step between neighbours along u (times m) against along v (times n), a bound
+     * on |S_u| and |S_v| over the box */
     double lu = 0.0, lv = 0.0;
     for (size_t i = 0; i <= m; i++)
         for (size_t j = 0; j <= n; j++) {
@@ -199,7 +205,7 @@ void bsi_cl_box(bsi_cl *w, const double *net, bsi_cl_bound *b)
         }
     lu *= (double)m;
     lv *= (double)n;
-    b->dir = m == 0 && n == 0 ? -1 : (n == 0 || (m > 0 && lu >= lv)) ? BS_DIR_U : BS_DIR_V;
+    return m == 0 && n == 0 ? -1 : (n == 0 || (m > 0 && lu >= lv)) ? BS_DIR_U : BS_DIR_V;
 }
 
 /* out[(i+i')(2n+1) + j+j'] += f x[i][j] y[i'][j'] over all pairs with i' >= i (f = 2 where i' > i):
@@ -220,37 +226,25 @@ static void self_product(const double *x, size_t m, size_t n, double *out)
         }
 }
 
-/* The direction in which the coefficients of f (the ratios N_kl / W_kl) differ
- * most from f: their second differences along it times the degree, the size of the gap between
- * coefficients and values that halving the box along it divides by 4. -1 when both are zero
- * (then the net's longer side decides); f's coefficients are in w->fco. Where f does not depend on one direction (a cylinder
- * seen from its axis: a line of minima) only the other is split. */
-static int slack_direction(const bsi_cl *w, size_t m, size_t n)
+void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,
+                          double rel)
 {
-    size_t K = 2 * m, L = 2 * n, n2 = L + 1;
-    const double *f = w->fco;
-    double eu = 0.0, ev = 0.0;
-    for (size_t k = 0; k <= K; k++)
-        for (size_t l = 0; l <= L; l++) {
-            if (k + 2 <= K) {
-                double d = fabs(f[(k + 2) * n2 + l] - 2.0 * f[(k + 1) * n2 + l] + f[k * n2 + l]);
-                eu = d > eu ? d : eu;
-            }
-            if (l + 2 <= L) {
-                double d = fabs(f[k * n2 + l + 2] - 2.0 * f[k * n2 + l + 1] + f[k * n2 + l]);
-                ev = d > ev ? d : ev;
-            }
-        }
-    eu *= (double)K;
-    ev *= (double)L;
-    if (eu == ev) /* both zero, or a tie */
-        return -1;
-    return eu > ev ? BS_DIR_U : BS_DIR_V;
+    size_t m = w->m, n = w->n, n2 = 2 * n + 1;
+    b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
+    b->err = err;
+    b->rel = rel;
+    size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
+    b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
+    b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
 }
 
 void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
 {
     size_t m = w->m, n = w->n, dim = w->dim, nc = w->nc, pts = (m + 1) * (n + 1);
+    if (BSI_CL_BICUBIC3(w)) {
+        bsi_cl_fbound3(w, net, b);
+        return;
+    }
     size_t n2 = 2 * n + 1, coef = (2 * m + 1) * n2;
     int rational = nc > dim;
     const double *bm = w->binom, *bn = bm + m + 1, *b2m = bn + n + 1, *b2n = b2m + 2 * m + 1;
@@ -296,28 +290,12 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
                 lowk = den > 0.0 ? lowk / (den * (lowk > 0.0 ? 1.0 + rel : 1.0 - rel)) : -INFINITY;
             low = lowk < low ? lowk : low;
         }
-    b->lbf = low > 0.0 ? low * (1.0 - 4.0 * DBL_EPSILON) : low;
-    b->err = err;
-    b->rel = rel;
-    b->dir = slack_direction(w, m, n);
-    size_t ka = arg / n2, la = arg % n2; /* the coefficient's indices */
-    b->su = m > 0 ? (double)ka / (double)(2 * m) : 0.5;
-    b->sv = n > 0 ? (double)la / (double)(2 * n) : 0.5;
+    bsi_cl_fbound_finish(w, b, low, arg, err, rel);
 }
 
-/* The part [a, b] of one line of deg+1 values, stride apart, in place: at b from the left,
- * then at a/b from the right. */
-static void sub_line(double *x, size_t deg, size_t stride, double a, double b)
+int bsi_cl_direction(const bsi_cl *w)
 {
-    /* [0, b]: after step r the point r of the left part is x[0] of that step; keep them in
-     * place by running the recurrence from the right end */
-    for (size_t r = 1; r <= deg; r++)
-        for (size_t k = deg; k >= r; k--)
-            x[k * stride] = (1.0 - b) * x[(k - 1) * stride] + b * x[k * stride];
-    double t = b > 0.0 ? a / b : 0.0; /* [a, b] is [t, 1] of [0, b] */
-    for (size_t r = 1; r <= deg; r++)
-        for (size_t k = 0; k + r <= deg; k++)
-            x[k * stride] = (1.0 - t) * x[k * stride] + t * x[(k + 1) * stride];
+    return BSI_CL_BICUBIC3(w) ? bsi_cl_slack3(w) : bsi_cl_slack(w, w->m, w->n);
 }
 
 void bsi_cl_region(bsi_cl *w, const double x[4])
@@ -325,16 +303,22 @@ void bsi_cl_region(bsi_cl *w, const double x[4])
     size_t m = w->m, n = w->n, nc = w->nc;
     for (size_t k = 0; k < w->np; k++)
         w->region[k] = w->root[k];
+    if (BSI_CL_BICUBIC3(w)) {
+        bsi_cl_region3(w->region, x);
+        return;
+    }
     for (size_t j = 0; j <= n; j++)
         for (size_t c = 0; c < nc; c++)
-            sub_line(w->region + j * nc + c, m, (n + 1) * nc, x[0], x[1]);
+            bsi_cl_sub_line(w->region + j * nc + c, m, (n + 1) * nc, 1, x[0], x[1]);
     for (size_t i = 0; i <= m; i++)
         for (size_t c = 0; c < nc; c++)
-            sub_line(w->region + i * (n + 1) * nc + c, n, nc, x[2], x[3]);
+            bsi_cl_sub_line(w->region + i * (n + 1) * nc + c, n, nc, 1, x[2], x[3]);
 }
 
-double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi)
+double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,
+                     double abc[3])
 {
+    abc[0] = abc[1] = abc[2] = NAN;
     size_t K = 2 * w->m, L = 2 * w->n, n2 = L + 1;
     int rational = w->nc > w->dim;
     const double *b2m = w->binom + w->m + w->n + 2, *b2n = b2m + K + 1;
@@ -375,6 +359,9 @@ double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *w
      * with |b|, so it is at least that of [A B; B C]. A direction of degree 0 does not count. */
     double kk = (double)K, ll = (double)L;
     double A = kk * (kk - 1.0) * alo, C = ll * (ll - 1.0) * clo, B = kk * ll * bhi;
+    abc[0] = A;
+    abc[1] = B;
+    abc[2] = C;
     if (K == 0)
         return L == 0 ? INFINITY : C;
     if (L == 0)

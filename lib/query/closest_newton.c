@@ -20,7 +20,10 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
 {
     size_t dim = w->dim;
     unsigned k = g != NULL ? 2u : 0u;
-    bsi_deriv_table(w->p, u, v, k, k, w->dscratch, w->table);
+    if (BSI_CL_BICUBIC3(w))
+        bsi_cl_deriv3(w->p->hom, u, v, k, w->table);
+    else
+        bsi_deriv_table(w->p, u, v, k, k, w->dscratch, w->table);
     const double *t = w->table;
     double s = w->s1 * w->s2, f = 0.0;
     if (g != NULL)
@@ -51,9 +54,9 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
 
 double bsi_cl_f(bsi_cl *w, double u, double v) { return eval(w, u, v, NULL, NULL, NULL); }
 
-double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2])
+double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3])
 {
-    double h[3], gn[3];
+    double gn[3];
     return eval(w, x[0], x[1], g, h, gn);
 }
 

@@ -1,0 +1,156 @@
+/*
+ * Closest points, the kernels of the bicubic 3-D polynomial patch (the teapot's, the common
+ * case): the halving, the box distance and the second-order bound of closest_bound.c with
+ * constant sizes, laid out so that the compiler runs them over several values at once (and
+ * compiled for AVX-512, AVX2 and baseline with BSI_CPU_DISPATCH). Each performs the operations
+ * of the general code, except where said, so the rounding terms of closest_bound.c hold.
+ */
+#include "query/closest.h"
+
+#include <float.h>
+#include <math.h>
+
+/* Halving of a bicubic 3-D polynomial net (the teapot's), the same operations as split_line:
+ * a line along u is a column of rows of 12 doubles, one along v 4 points of 3 doubles in a row,
+ * so each step of de Casteljau's algorithm runs over len (12 or 3) contiguous values at once. */
+BSI_INLINE void halve4(const double *x, size_t len, double *l, double *h)
+{
+    double t[4][12];
+    for (size_t k = 0; k < 4; k++)
+        for (size_t e = 0; e < len; e++)
+            t[k][e] = x[k * len + e];
+    for (size_t e = 0; e < len; e++) {
+        l[e] = t[0][e];
+        h[3 * len + e] = t[3][e];
+    }
+    for (size_t r = 1; r <= 3; r++) {
+        for (size_t k = 0; k + r <= 3; k++)
+            for (size_t e = 0; e < len; e++)
+                t[k][e] = 0.5 * (t[k][e] + t[k + 1][e]);
+        for (size_t e = 0; e < len; e++) {
+            l[r * len + e] = t[0][e];
+            h[(3 - r) * len + e] = t[3 - r][e];
+        }
+    }
+}
+
+BSI_HOT void bsi_cl_split3(const double *src, int dir, double *lo, double *hi)
+{
+    if (dir == BS_DIR_U)
+        halve4(src, 12, lo, hi);
+    else
+        for (size_t i = 0; i < 4; i++)
+            halve4(src + i * 12, 3, lo + i * 12, hi + i * 12);
+}
+
+BSI_HOT void bsi_cl_region3(double *net, const double x[4])
+{
+    bsi_cl_sub_line(net, 3, 12, 12, x[0], x[1]); /* along u: the rows of 12 values at once */
+    for (size_t i = 0; i < 4; i++)
+        bsi_cl_sub_line(net + i * 12, 3, 3, 3, x[2], x[3]); /* along v: 4 points of 3 */
+}
+
+BSI_HOT double bsi_cl_box3(const double *net) { return bsi_cl_box_gap2(net, 16, 3); }
+
+
+/* The second-order bound of a bicubic 3-D polynomial net (the teapot's): the operations of the
+ * general bsi_cl_fbound below on constant sizes, with N's products summed over the three
+ * coordinates before they are added in (the same rounding bound: each N_kl is a sum of at most
+ * 48 products), vectorised over j'. */
+BSI_HOT void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b)
+{
+    static const double b3[4] = {1.0, 3.0, 3.0, 1.0};
+    static const double b6[7] = {1.0, 6.0, 15.0, 20.0, 15.0, 6.0, 1.0};
+    double y[3][4][4], o[7][8] = {{0.0}}, amax = 0.0;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double s = b3[i] * b3[j], a2 = 0.0;
+            for (int c = 0; c < 3; c++) {
+                double x = net[(i * 4 + j) * 3 + c];
+                y[c][i][j] = s * x;
+                a2 += x * x;
+            }
+            amax = a2 > amax ? a2 : amax;
+        }
+    for (int i = 0; i < 4; i++)
+        for (int i2 = i; i2 < 4; i2++) {
+            double f = i2 == i ? 1.0 : 2.0;
+            for (int j = 0; j < 4; j++) {
+                double a0 = f * y[0][i][j], a1 = f * y[1][i][j], a2 = f * y[2][i][j];
+                double *row = &o[i + i2][j];
+                for (int j2 = 0; j2 < 4; j2++)
+                    row[j2] += a0 * y[0][i2][j2] + a1 * y[1][i2][j2] + a2 * y[2][i2][j2];
+            }
+        }
+    double err = (double)(16 * 3 + 16) * DBL_EPSILON * amax, rel = (double)(16 + 16) * DBL_EPSILON;
+    double best = INFINITY;
+    size_t arg = 0;
+    for (int k = 0; k < 7; k++)
+        for (int l = 0; l < 7; l++) {
+            double ratio = o[k][l] / (b6[k] * b6[l]);
+            w->nco[k * 7 + l] = o[k][l];
+            w->fco[k * 7 + l] = ratio;
+            if (ratio < best) {
+                best = ratio;
+                arg = (size_t)(k * 7 + l);
+            }
+        }
+    /* min (N_kl - err) is the smallest ratio minus err: the rounding of a difference is monotone */
+    bsi_cl_fbound_finish(w, b, best - err, arg, err, rel);
+}
+
+BSI_HOT int bsi_cl_slack3(const bsi_cl *w) { return bsi_cl_slack(w, 3, 3); }
+
+/* The degree-3 basis at t and its derivatives up to order k (b[a][i]), the operations of
+ * bsi_bernstein_deriv (the same bits). */
+BSI_INLINE void basis3(double t, unsigned k, double b[3][4])
+{
+    double s = 1.0 - t, q0 = s * s, q1 = t * s + s * t, q2 = t * t;
+    b[0][0] = s * q0;
+    b[0][1] = t * q0 + s * q1;
+    b[0][2] = t * q1 + s * q2;
+    b[0][3] = t * q2;
+    if (k == 0)
+        return;
+    b[1][3] = 3.0 * q2;
+    b[1][2] = 3.0 * (q1 - q2);
+    b[1][1] = 3.0 * (q0 - q1);
+    b[1][0] = 3.0 * (0.0 - q0);
+    double c2 = 2.0 * t, c1 = 2.0 * (s - t), c0 = 2.0 * (0.0 - s);
+    b[2][3] = 3.0 * c2;
+    b[2][2] = 3.0 * (c1 - c2);
+    b[2][1] = 3.0 * (c0 - c1);
+    b[2][0] = 3.0 * (0.0 - c0);
+}
+
+/* bsi_deriv_table of a bicubic 3-D polynomial patch (hom its coordinate planes) for k = ka = kb
+ * (0 or 2): u contracted first, then v, in bsi_deriv_table's order (the same bits). */
+BSI_INLINE void deriv3_k(const double *hom, double u, double v, unsigned k, double *out)
+{
+    double wu[3][4], wv[3][4];
+    basis3(u, k, wu);
+    basis3(v, k, wv);
+    for (size_t c = 0; c < 3; c++) {
+        const double *net = hom + c * 16;
+        for (size_t a = 0; a <= k; a++) {
+            double q[4] = {-0.0, -0.0, -0.0, -0.0};
+            for (size_t i = 0; i < 4; i++)
+                for (size_t j = 0; j < 4; j++)
+                    q[j] += wu[a][i] * net[i * 4 + j];
+            for (size_t b = 0; b <= k; b++) {
+                double acc = -0.0;
+                for (size_t j = 0; j < 4; j++)
+                    acc += wv[b][j] * q[j];
+                out[(a * (k + 1) + b) * 3 + c] = acc;
+            }
+        }
+    }
+}
+
+BSI_HOT void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, double *out)
+{
+    if (k == 0)
+        deriv3_k(hom, u, v, 0, out);
+    else
+        deriv3_k(hom, u, v, 2, out);
+}
