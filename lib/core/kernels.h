@@ -88,6 +88,10 @@ void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, i
 void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v, double *h,
                              double *hu, double *hv);
 
+/* bsi_eval_first_block with first != 0 at one finite point (u, v): h, hu, hv get ncoord values
+ * each, the same bits as the block and chunk paths give that point. */
+void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double *hu, double *hv);
+
 /* Cartesian S (and S_u, S_v when su != NULL) of one point from its homogeneous values; element c
  * of h, hu, hv is at index c*stride. */
 void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
@@ -136,6 +140,10 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
 void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
                       size_t ustep, const double *v, const double *const *su,
                       const double *const *sv, double *const *nrm, unsigned char *kind);
+/* bs_patch_eval_normal at one finite point of a 3-D patch, with sc from bsi_normal_scale(p) made
+ * once by the caller: the same position and normal bits. */
+void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
+                         double pos[3], double nrm[3]);
 /* ---- The regular normal rule at one point (lib/core/normal.c, lib/core/eval_grid.c) ----
  * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
  * when the point needs bsi_normal. Inline so that every vectorised caller does the same

@@ -6,6 +6,7 @@
 #ifndef BEZSURF_QUERY_LOCATOR_H
 #define BEZSURF_QUERY_LOCATOR_H
 
+#include "core/kernels.h"
 #include "query/internal.h"
 
 /* Every patch is cut into BSI_LOC_SPLIT x BSI_LOC_SPLIT sub-patches by halving its net twice in
@@ -36,6 +37,8 @@ struct bs_locator {
     double *nets;        /* the leaves' nets */
     bsi_loc_node *nodes; /* nodes[0] is the root */
     double *box;         /* node k: lower corner box[2*k*dim ...], upper corner right after */
+    double *leaf_box;    /* leaf k's box, as node boxes: tested before its net is projected */
+    bsi_nscale *nscale;  /* per patch, for its normals (3-D locators): bsi_normal_scale's once */
 };
 
 /* Halve a net of (m+1) x (n+1) points of nc interleaved doubles at the parameter 1/2 along dir
@@ -76,13 +79,15 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
 }
 
 /* Build the hierarchy over L->nleaf leaves whose boxes are in leaf_box (2*dim doubles each, as
- * node boxes): fills L->nodes, L->nnode, L->box and reorders L->leaves. BS_ERR_NO_MEMORY. */
+ * node boxes): fills L->nodes, L->nnode, L->box, reorders L->leaves and puts their boxes, in the
+ * same order, in L->leaf_box. BS_ERR_NO_MEMORY. */
 bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box);
 
 /* A ray in the frame it is tested in: origin o, unit direction d, and e1, e2 completing an
- * orthonormal frame; t in units of |d| = 1, from tmin (exclusive when open) to tmax. */
+ * orthonormal frame (and 1 / d); t in units of |d| = 1, from tmin (exclusive when open) to tmax. */
 typedef struct bsi_ray {
     double o[3], d[3], e1[3], e2[3];
+    double inv[3]; /* 1 / d, for the slab tests */
     double tmin, tmax;
     int open;
 } bsi_ray;

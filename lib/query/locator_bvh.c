@@ -99,8 +99,9 @@ bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
     double *cen = malloc(n * dim * sizeof(double));
     uint32_t *perm = malloc(n * sizeof *perm);
     bsi_loc_leaf *sorted = malloc(n * sizeof *sorted);
+    L->leaf_box = malloc(n * 2 * dim * sizeof(double));
     bs_status st = BS_ERR_NO_MEMORY;
-    if (L->nodes && L->box && cen && perm && sorted) {
+    if (L->nodes && L->box && cen && perm && sorted && L->leaf_box) {
         for (size_t k = 0; k < n; k++) {
             perm[k] = (uint32_t)k;
             for (size_t c = 0; c < dim; c++)
@@ -109,8 +110,11 @@ bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
         builder b = {L, leaf_box, cen, perm, 1};
         build_node(&b, 0, 0, n);
         L->nnode = b.next;
-        for (size_t k = 0; k < n; k++)
+        for (size_t k = 0; k < n; k++) {
             sorted[k] = L->leaves[perm[k]];
+            for (size_t c = 0; c < 2 * dim; c++)
+                L->leaf_box[2 * dim * k + c] = leaf_box[2 * dim * perm[k] + c];
+        }
         bsi_loc_leaf *old = L->leaves;
         L->leaves = sorted;
         sorted = old;

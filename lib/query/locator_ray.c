@@ -2,7 +2,7 @@
  * Rays against a locator (bs_locator_intersect): each ray is put in its own orthonormal frame,
  * the hierarchy is walked nearest box first, boxes beyond the best hit so far are skipped, and
  * the sub-patches reached are tested by ray_patch.c. The answer's point and normal come from
- * bs_patch_eval_normal on the locator's copy of the patch (limit normals at poles), and t from
+ * bs_patch_eval_normal's arithmetic on the locator's copy of the patch (limit normals at poles), and t from
  * that point.
  */
 #include "query/locator.h"
@@ -10,6 +10,9 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+
+/* min without the NaN rules of fmin, which keep it out of line */
+static inline double lesser(double a, double b) { return a < b ? a : b; }
 
 #define STACK 128 /* twice the depth of a median-split tree of up to 2^32 leaves, and more */
 
@@ -27,6 +30,7 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
     for (int c = 0; c < 3; c++) {
         ray->o[c] = o[c];
         ray->d[c] = dd[c] / l;
+        ray->inv[c] = 1.0 / ray->d[c];
     }
     /* e1, e2: the branch-free orthonormal basis of Duff et al. (2017) */
     double x = ray->d[0], y = ray->d[1], z = ray->d[2], sg = copysign(1.0, z);
@@ -53,7 +57,7 @@ static int slab(const double *lo, const double *hi, const bsi_ray *ray, double t
                 return 0;
             continue;
         }
-        double inv = 1.0 / ray->d[c], a = (lo[c] - ray->o[c]) * inv, b = (hi[c] - ray->o[c]) * inv;
+        double inv = ray->inv[c], a = (lo[c] - ray->o[c]) * inv, b = (hi[c] - ray->o[c]) * inv;
         if (a > b) {
             double x = a;
             a = b;
@@ -91,15 +95,19 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
             continue;
         const bsi_loc_node *nd = &L->nodes[stack[top].node];
         if (nd->count > 0) {
-            for (uint32_t k = nd->first; k < nd->first + nd->count; k++)
-                bsi_ray_leaf(L, k, ray, scratch, hit);
+            /* each sub-patch's own box first: most that the node's box lets through miss theirs */
+            for (uint32_t k = nd->first; k < nd->first + nd->count; k++) {
+                const double *box = L->leaf_box + 2 * dim * k;
+                if (slab(box, box + dim, ray, ray->tmin, lesser(ray->tmax, hit->t), &tn))
+                    bsi_ray_leaf(L, k, ray, scratch, hit);
+            }
             continue;
         }
         double tc[2];
         int in[2];
         for (int c = 0; c < 2; c++) {
             const double *box = L->box + 2 * dim * (nd->first + (uint32_t)c);
-            in[c] = slab(box, box + dim, ray, ray->tmin, fmin(ray->tmax, hit->t), &tc[c]);
+            in[c] = slab(box, box + dim, ray, ray->tmin, lesser(ray->tmax, hit->t), &tc[c]);
         }
         int near = in[1] && (!in[0] || tc[1] < tc[0]);
         for (int q = 0; q < 2; q++) { /* the farther child first, so the nearer is popped next */
@@ -126,10 +134,8 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, double len,
         id = leaf->patch;
         u = leaf->u0 + hit->s * side;
         v = leaf->v0 + hit->r * side;
-        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
-        bs_view pv[3] = {{&pos[0], 1, 0}, {&pos[1], 1, 0}, {&pos[2], 1, 0}};
-        bs_view nn[3] = {{&nv[0], 1, 0}, {&nv[1], 1, 0}, {&nv[2], 1, 0}};
-        (void)bs_patch_eval_normal(L->patches[id], 1, &cu, &cv, pv, nn, NULL);
+        /* bs_patch_eval_normal's bits, with the patch's normal scale made once */
+        bsi_eval_normal_one(L->patches[id], &L->nscale[id], u, v, pos, nv);
         double a[3] = {pos[0] - ray->o[0], pos[1] - ray->o[1], pos[2] - ray->o[2]};
         /* t of the point reported, kept within the range the hit was found in */
         tt = fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len;
