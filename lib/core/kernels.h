@@ -121,17 +121,6 @@ BSI_CUBIC_KERNELS(bsi_cubic_rows_f32, bsi_cubic_pos_normal_f32, float);
 
 /* ---- Normals (lib/core/normal.c) ---- */
 
-/* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
-typedef struct bsi_nscale {
-    double lu, lv;   /* m D, n D: scales of |S_u| and |S_v| (their bounds for a polynomial patch) */
-    double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
-    double rho;      /* wmax / wmin, 1 for polynomial patches */
-    double wmax;     /* largest weight, 1 for polynomial patches */
-    double fu, fv;   /* CLEAN times the rounding bound of S_u, S_v per unit of wmax / w(u,v) */
-    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero anywhere (with wmax / w = rho) */
-} bsi_nscale;
-
-void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
 unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          const double *su, const double *sv, double *nrm);
@@ -140,10 +129,6 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
 void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
                       size_t ustep, const double *v, const double *const *su,
                       const double *const *sv, double *const *nrm, unsigned char *kind);
-/* bs_patch_eval_normal at one finite point of a 3-D patch, with sc from bsi_normal_scale(p) made
- * once by the caller: the same position and normal bits. */
-void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                         double pos[3], double nrm[3]);
 /* ---- The regular normal rule at one point (lib/core/normal.c, lib/core/eval_grid.c) ----
  * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
  * when the point needs bsi_normal. Inline so that every vectorised caller does the same

@@ -6,7 +6,6 @@
 #ifndef BEZSURF_QUERY_LOCATOR_H
 #define BEZSURF_QUERY_LOCATOR_H
 
-#include "core/kernels.h"
 #include "query/internal.h"
 
 /* Every patch is cut into BSI_LOC_SPLIT x BSI_LOC_SPLIT sub-patches by halving its net twice in

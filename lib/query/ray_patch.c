@@ -27,6 +27,23 @@
 static inline double lesser(double a, double b) { return a < b ? a : b; }
 static inline double greater(double a, double b) { return a > b ? a : b; }
 
+/* hypot(x, y) by one square root where the squares are safe (within an ulp or so of hypot) */
+static inline double norm2(double x, double y)
+{
+    double q = x * x + y * y;
+    return q > 0x1p-1000 && q < 0x1p1000 ? sqrt(q) : hypot(x, y);
+}
+
+/* x / w, as the rational nets form it; a polynomial net's weights are exactly 1 (the halvings
+ * keep them so), so there it is x itself, the same bits without the division */
+#if defined(__GNUC__) /* inlined into each of the two cases of search (rational or not) */
+#define SPECIALISE static inline __attribute__((always_inline))
+#else
+#define SPECIALISE static inline
+#endif
+
+#define WDIV(rat, x, w) ((rat) ? (x) / (w) : (x))
+
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
     return (SLOTS + 3) * NC * max_ctrl;
@@ -43,6 +60,18 @@ typedef struct pending {
 static void bernstein(size_t deg, double x, double *b, double *db)
 {
     double y = 1.0 - x;
+    if (deg == 3) {
+        double xx = x * x, yy = y * y, xy = x * y;
+        b[0] = yy * y;
+        b[1] = 3.0 * xy * y;
+        b[2] = 3.0 * xy * x;
+        b[3] = xx * x;
+        db[0] = -3.0 * yy;
+        db[1] = 3.0 * (yy - 2.0 * xy);
+        db[2] = 3.0 * (2.0 * xy - xx);
+        db[3] = 3.0 * xx;
+        return;
+    }
     b[0] = 1.0;
     db[0] = 0.0;
     for (size_t r = 1; r <= deg; r++) {
@@ -56,54 +85,65 @@ static void bernstein(size_t deg, double x, double *b, double *db)
     }
 }
 
-/* The projected net (NC coordinates) and its partials at (s, r). */
-static void eval_net(const double *net, size_t m, size_t n, double s, double r, double f[NC],
-                     double fs[NC], double fr[NC])
+/* The projected net at (s, r): f = (X1, X2, T, W) (W = 1 for a polynomial net), and the partials
+ * of X1, X2 (all Newton needs: the zeros of X1, X2 are those of X1/W, X2/W). */
+SPECIALISE void eval_net(const double *net, size_t m, size_t n, int rat, double s, double r,
+                     double f[NC], double fs[2], double fr[2])
 {
     double bu[BS_MAX_DEGREE + 1], dbu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], dbv[BS_MAX_DEGREE + 1];
     bernstein(m, s, bu, dbu);
     bernstein(n, r, bv, dbv);
-    for (int c = 0; c < NC; c++)
-        f[c] = fs[c] = fr[c] = 0.0;
+    double acc[8] = {0}; /* X1, X2, T, W, X1_s, X2_s, X1_r, X2_r */
     for (size_t i = 0; i <= m; i++) {
-        double row[NC] = {0}, drow[NC] = {0};
-        for (size_t j = 0; j <= n; j++)
-            for (int c = 0; c < NC; c++) {
-                double x = net[(i * (n + 1) + j) * NC + (size_t)c];
-                row[c] += bv[j] * x;
-                drow[c] += dbv[j] * x;
-            }
-        for (int c = 0; c < NC; c++) {
-            f[c] += bu[i] * row[c];
-            fs[c] += dbu[i] * row[c];
-            fr[c] += bu[i] * drow[c];
+        double row[NC] = {0}, drow[2] = {0};
+        for (size_t j = 0; j <= n; j++) {
+            const double *x = net + (i * (n + 1) + j) * NC;
+            for (int c = 0; c < 3; c++)
+                row[c] += bv[j] * x[c];
+            row[3] += rat ? bv[j] * x[3] : 0.0;
+            drow[0] += dbv[j] * x[0];
+            drow[1] += dbv[j] * x[1];
         }
+        for (int c = 0; c < NC; c++)
+            acc[c] += bu[i] * row[c];
+        acc[4] += dbu[i] * row[0];
+        acc[5] += dbu[i] * row[1];
+        acc[6] += bu[i] * drow[0];
+        acc[7] += bu[i] * drow[1];
     }
+    for (int c = 0; c < NC; c++)
+        f[c] = acc[c];
+    f[3] = rat ? f[3] : 1.0;
+    fs[0] = acc[4];
+    fs[1] = acc[5];
+    fr[0] = acc[6];
+    fr[1] = acc[7];
 }
 
 /* Newton (damped) on (X1, X2) inside [s0, s0 + w] x [r0, r0 + w]: 1 when the point closest to
  * the ray found is within tol of it. Either way *s, *r, *t receive that point and g its (X1, X2). */
-static int newton(const double *net, size_t m, size_t n, const pending *e, double floor_dist,
-                  double tol, double *s_out, double *r_out, double *t_out, double g[2])
+SPECIALISE int newton(const double *net, size_t m, size_t n, int rat, const pending *e,
+                  double floor_dist, double tol, double *s_out, double *r_out, double *t_out,
+                  double g[2])
 {
     double pad = e->w * 0x1p-30;
-    double slo = fmax(0.0, e->s0 - pad), shi = fmin(1.0, e->s0 + e->w + pad);
-    double rlo = fmax(0.0, e->r0 - pad), rhi = fmin(1.0, e->r0 + e->w + pad);
+    double slo = greater(0.0, e->s0 - pad), shi = lesser(1.0, e->s0 + e->w + pad);
+    double rlo = greater(0.0, e->r0 - pad), rhi = lesser(1.0, e->r0 + e->w + pad);
     double s = e->s0 + 0.5 * e->w, r = e->r0 + 0.5 * e->w, best = INFINITY;
     int worse = 0; /* steps in a row that found nothing nearer */
     *s_out = s;
     *r_out = r;
     *t_out = INFINITY;
     for (int it = 0; it < 24; it++) {
-        double f[NC], fs[NC], fr[NC];
-        eval_net(net, m, n, s, r, f, fs, fr);
-        double dist = hypot(f[0], f[1]) / f[3];
+        double f[NC], fs[2], fr[2];
+        eval_net(net, m, n, rat, s, r, f, fs, fr);
+        double dist = WDIV(rat, norm2(f[0], f[1]), f[3]);
         if (dist < best) {
             worse = dist < 0.5 * best ? 0 : worse + 1;
             best = dist;
             *s_out = s;
             *r_out = r;
-            *t_out = f[2] / f[3];
+            *t_out = WDIV(rat, f[2], f[3]);
             g[0] = f[0];
             g[1] = f[1];
         }
@@ -122,7 +162,8 @@ static int newton(const double *net, size_t m, size_t n, const pending *e, doubl
         if (!(det > 0.0) || !isfinite(det))
             break;
         double ds = -(a22 * g1 - a12 * g2) / det, dr = -(a11 * g2 - a12 * g1) / det;
-        double s1 = fmin(shi, fmax(slo, s + ds)), r1 = fmin(rhi, fmax(rlo, r + dr));
+        /* as fmin(shi, fmax(slo, x)): a NaN step goes to slo */
+        double s1 = lesser(greater(s + ds, slo), shi), r1 = lesser(greater(r + dr, rlo), rhi);
         if (s1 == s && r1 == r)
             break;
         s = s1;
@@ -194,23 +235,23 @@ static int one_to_one(const double *net, size_t m, size_t n)
     return pos == 4 || neg == 4;
 }
 
-/* Box of the projected net: 1 if the origin lies within tol of it (X1, X2), and its t range;
- * *within receives the largest |X1|, |X2| over the box. */
-static int near_origin(const double *net, size_t np, double tol, double *tlo, double *thi,
-                       double *within)
+/* Box of the projected net (X / W; rat: the net is rational, else W = 1): 1 if the origin lies
+ * within tol of it (X1, X2), with lo, hi its corners (X1, X2, T). */
+SPECIALISE int near_origin(const double *net, size_t np, int rat, double tol, double lo[3],
+                           double hi[3])
 {
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int c = 0; c < 3; c++) {
+        lo[c] = INFINITY;
+        hi[c] = -INFINITY;
+    }
     for (size_t k = 0; k < np; k++) {
-        double inv = 1.0 / net[k * NC + 3];
+        double inv = rat ? 1.0 / net[k * NC + 3] : 1.0;
         for (int c = 0; c < 3; c++) {
-            double x = net[k * NC + (size_t)c] * inv;
+            double x = rat ? net[k * NC + (size_t)c] * inv : net[k * NC + (size_t)c];
             lo[c] = lesser(lo[c], x);
             hi[c] = greater(hi[c], x);
         }
     }
-    *tlo = lo[2] - tol;
-    *thi = hi[2] + tol;
-    *within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
     return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
 }
 
@@ -218,24 +259,29 @@ static int near_origin(const double *net, size_t np, double tol, double *tlo, do
  * net then has no zero). A few steps of the Frank-Wolfe (Gilbert) iteration for the point of the
  * hull nearest to the origin, started at g (the point nearest to the ray that Newton found):
  * the support point in the direction of the current point gives a separating line as soon as it
- * lies beyond tol. pts: scratch for np points. Boxes that only skim the ray are excluded long
- * before their axis-aligned box is. */
-static int separated(const double *net, size_t np, const double g[2], double tol, double *pts)
+ * lies beyond tol. pts: scratch for np points when rat (a polynomial net is read as it is).
+ * Boxes that only skim the ray are excluded long before their axis-aligned box is. */
+SPECIALISE int separated(const double *net, size_t np, int rat, const double g[2], double tol,
+                         double *pts)
 {
-    for (size_t k = 0; k < np; k++) {
-        double inv = 1.0 / net[k * NC + 3];
-        pts[2 * k] = net[k * NC] * inv;
-        pts[2 * k + 1] = net[k * NC + 1] * inv;
-    }
+    size_t st = rat ? 2 : NC;
+    if (rat) {
+        for (size_t k = 0; k < np; k++) {
+            double inv = 1.0 / net[k * NC + 3];
+            pts[2 * k] = net[k * NC] * inv;
+            pts[2 * k + 1] = net[k * NC + 1] * inv;
+        }
+    } else
+        pts = (double *)net;
     double x = g[0], y = g[1];
     for (int it = 0; it < 8; it++) {
-        double len = hypot(x, y);
+        double len = norm2(x, y);
         if (!(len > tol))
             return 0;
         size_t at = 0;
         double low = INFINITY;
         for (size_t k = 0; k < np; k++) {
-            double h = pts[2 * k] * x + pts[2 * k + 1] * y;
+            double h = pts[st * k] * x + pts[st * k + 1] * y;
             if (h < low) {
                 low = h;
                 at = k;
@@ -244,7 +290,7 @@ static int separated(const double *net, size_t np, const double g[2], double tol
         if (low > tol * len)
             return 1;
         /* the point of the segment from (x, y) to the support point nearest to the origin */
-        double dx = pts[2 * at] - x, dy = pts[2 * at + 1] - y, dd = dx * dx + dy * dy;
+        double dx = pts[st * at] - x, dy = pts[st * at + 1] - y, dd = dx * dx + dy * dy;
         double lam = dd > 0.0 ? -(x * dx + y * dy) / dd : 0.0;
         lam = lam < 0.0 ? 0.0 : lam > 1.0 ? 1.0 : lam;
         x += lam * dx;
@@ -255,13 +301,13 @@ static int separated(const double *net, size_t np, const double g[2], double tol
 
 /* Of the four corners of the projected net (points of the surface), the one nearest to the
  * origin, as (X1, X2) / W into g. */
-static void nearest_corner(const double *net, size_t m, size_t n, double g[2])
+SPECIALISE void nearest_corner(const double *net, size_t m, size_t n, int rat, double g[2])
 {
     const size_t corner[4] = {0, n, m * (n + 1), m * (n + 1) + n};
     double best = INFINITY;
     for (int k = 0; k < 4; k++) {
         const double *a = net + corner[k] * NC;
-        double x = a[0] / a[3], y = a[1] / a[3], d = x * x + y * y;
+        double x = WDIV(rat, a[0], a[3]), y = WDIV(rat, a[1], a[3]), d = x * x + y * y;
         if (d < best) {
             best = d;
             g[0] = x;
@@ -270,16 +316,17 @@ static void nearest_corner(const double *net, size_t m, size_t n, double g[2])
     }
 }
 
-/* The leaf's net in the ray's frame; returns the largest |P - o| coordinate. */
-static double project(const double *net, size_t np, const bsi_ray *ray, double *out)
+/* The leaf's net in the ray's frame; returns the largest |P - o| coordinate. (w times each
+ * product: for a polynomial net w = 1, and the product itself is the same bits.) */
+SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *ray, double *out)
 {
     double big = 0.0;
     for (size_t k = 0; k < np; k++) {
         const double *p = net + k * NC;
         double a[3] = {p[0] - ray->o[0], p[1] - ray->o[1], p[2] - ray->o[2]}, w = p[3];
-        out[k * NC + 0] = w * bsi_dot3(a, ray->e1);
-        out[k * NC + 1] = w * bsi_dot3(a, ray->e2);
-        out[k * NC + 2] = w * bsi_dot3(a, ray->d);
+        out[k * NC + 0] = rat ? w * bsi_dot3(a, ray->e1) : bsi_dot3(a, ray->e1);
+        out[k * NC + 1] = rat ? w * bsi_dot3(a, ray->e2) : bsi_dot3(a, ray->e2);
+        out[k * NC + 2] = rat ? w * bsi_dot3(a, ray->d) : bsi_dot3(a, ray->d);
         out[k * NC + 3] = w;
         big = greater(big, greater(fabs(a[0]), greater(fabs(a[1]), fabs(a[2]))));
     }
@@ -291,38 +338,39 @@ static int wanted(const bsi_ray *ray, double t, double best)
     return (ray->open ? t > ray->tmin : t >= ray->tmin) && t <= ray->tmax && t < best;
 }
 
-void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
-                  bsi_ray_hit *hit)
+/* bsi_ray_leaf for a rational net (rat) or a polynomial one, each compiled for its case */
+SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
+                       bsi_ray_hit *hit, int rat)
 {
     const bsi_loc_leaf *leaf = &L->leaves[k];
     const bs_patch *p = L->patches[leaf->patch];
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
-    double big = project(L->nets + leaf->net, np, ray, root);
+    double big = project(L->nets + leaf->net, np, rat, ray, root);
     /* rounding of the projection and of the halvings, and the distance accepted as a hit */
     double tol = 1e-13 * L->diag + 256 * DBL_EPSILON * big;
     double accept = 1e-11 * L->diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
-    int free_slot[SLOTS], nfree = SLOTS, top = 0;
+    /* slots: those freed, then those never used; the leaf's own net stays in root (slot -1) */
+    int free_slot[SLOTS], nfree = 0, unused = 0, top = 0;
     pending stack[SLOTS];
-    for (int q = 0; q < SLOTS; q++)
-        free_slot[q] = SLOTS - 1 - q;
-    stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, free_slot[--nfree]};
-    for (size_t q = 0; q < len; q++)
-        slot[(size_t)stack[0].slot * len + q] = root[q];
+    stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, -1};
     for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
-        double *net = slot + (size_t)e.slot * len, tlo, thi, within;
-        free_slot[nfree++] = e.slot;
-        if (e.tlo > fmin(hit->t, ray->tmax) || !near_origin(net, np, tol, &tlo, &thi, &within) ||
-            thi < ray->tmin || tlo > fmin(hit->t, ray->tmax))
+        double *net = e.slot < 0 ? root : slot + (size_t)e.slot * len, lo[3], hi[3];
+        double tmax = lesser(hit->t, ray->tmax);
+        if (e.slot >= 0)
+            free_slot[nfree++] = e.slot;
+        if (e.tlo > tmax || !near_origin(net, np, rat, tol, lo, hi) || hi[2] + tol < ray->tmin ||
+            lo[2] - tol > tmax)
             continue;
+        double within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
         /* most pieces the box test lets through hold no zero: shown first, without Newton,
          * from the corner of the net nearest to the ray */
         double s, r, t, g[2] = {0.0, 0.0};
-        nearest_corner(net, m, n, g);
-        if (separated(net, np, g, tol, half[1]))
+        nearest_corner(net, m, n, rat, g);
+        if (separated(net, np, rat, g, tol, half[1]))
             continue;
-        int found = newton(root, m, n, &e, floor_dist, accept, &s, &r, &t, g);
+        int found = newton(root, m, n, rat, &e, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
         if (found && wanted(ray, t, hit->t)) {
             hit->t = t;
@@ -332,7 +380,7 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         }
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
-        if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, g, tol, half[1])) ||
+        if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, rat, g, tol, half[1])) ||
             within <= accept || e.depth == MAX_DEPTH)
             continue;
         /* the four halves, nearest t first */
@@ -342,12 +390,12 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
             for (int b = 0; b < 2; b++) {
                 pending *c = &kids[2 * a + b];
                 *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, 0.0,
-                               e.depth + 1, free_slot[--nfree]};
+                               e.depth + 1, nfree > 0 ? free_slot[--nfree] : unused++};
                 double *cn = slot + (size_t)c->slot * len;
                 bsi_net_halve(half[a], m, n, NC, BS_DIR_V, b ? NULL : cn, b ? cn : NULL);
                 c->tlo = INFINITY;
                 for (size_t q = 0; q < np; q++)
-                    c->tlo = lesser(c->tlo, cn[q * NC + 2] / cn[q * NC + 3]);
+                    c->tlo = lesser(c->tlo, WDIV(rat, cn[q * NC + 2], cn[q * NC + 3]));
                 c->tlo -= tol;
             }
         for (int a = 1; a < 4; a++) /* insertion sort, farthest first onto the stack */
@@ -359,4 +407,13 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         for (int a = 0; a < 4; a++)
             stack[top++] = kids[a];
     }
+}
+
+void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
+                  bsi_ray_hit *hit)
+{
+    if (L->patches[L->leaves[k].patch]->rational)
+        search(L, k, ray, scratch, hit, 1);
+    else
+        search(L, k, ray, scratch, hit, 0);
 }
