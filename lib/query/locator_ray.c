@@ -51,25 +51,27 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
 static int slab(const double *lo, const double *hi, const bsi_ray *ray, double t0, double t1,
                 double *tnear)
 {
+    double a = -INFINITY, b = INFINITY;
     for (int c = 0; c < 3; c++) {
         if (ray->d[c] == 0.0) {
             if (ray->o[c] < lo[c] || ray->o[c] > hi[c])
                 return 0;
             continue;
         }
-        double inv = ray->inv[c], a = (lo[c] - ray->o[c]) * inv, b = (hi[c] - ray->o[c]) * inv;
-        if (a > b) {
-            double x = a;
-            a = b;
-            b = x;
-        }
-        /* widened by their rounding (a few ulp), so that no box is lost to it; a NaN (a
-         * subnormal direction meeting a box face) narrows nothing */
-        a -= 4 * DBL_EPSILON * fabs(a);
-        b += 4 * DBL_EPSILON * fabs(b);
-        t0 = a > t0 ? a : t0;
-        t1 = b < t1 ? b : t1;
+        /* the face the ray enters by and the one it leaves by, from the sign of d */
+        const double *near = ray->inv[c] > 0.0 ? lo : hi, *far = ray->inv[c] > 0.0 ? hi : lo;
+        double x = (near[c] - ray->o[c]) * ray->inv[c], y = (far[c] - ray->o[c]) * ray->inv[c];
+        /* a NaN (a subnormal direction meeting a box face) narrows nothing */
+        a = x > a ? x : a;
+        b = y < b ? y : b;
     }
+    /* widened by their rounding (a few ulp), so that no box is lost to it: the same as widening
+     * each axis's values before taking the largest and the smallest, since the widening is
+     * monotonic */
+    a -= 4 * DBL_EPSILON * fabs(a);
+    b += 4 * DBL_EPSILON * fabs(b);
+    t0 = a > t0 ? a : t0;
+    t1 = b < t1 ? b : t1;
     *tnear = t0;
     return t0 <= t1;
 }

@@ -93,31 +93,35 @@ SPECIALISE void eval_net(const double *net, size_t m, size_t n, int rat, double 
     double bu[BS_MAX_DEGREE + 1], dbu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], dbv[BS_MAX_DEGREE + 1];
     bernstein(m, s, bu, dbu);
     bernstein(n, r, bv, dbv);
-    double acc[8] = {0}; /* X1, X2, T, W, X1_s, X2_s, X1_r, X2_r */
+    double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0, s0 = 0.0, s1 = 0.0, r0 = 0.0, r1 = 0.0;
     for (size_t i = 0; i <= m; i++) {
-        double row[NC] = {0}, drow[2] = {0};
+        double x0 = 0.0, x1 = 0.0, x2 = 0.0, x3 = 0.0, d0 = 0.0, d1 = 0.0;
         for (size_t j = 0; j <= n; j++) {
             const double *x = net + (i * (n + 1) + j) * NC;
-            for (int c = 0; c < 3; c++)
-                row[c] += bv[j] * x[c];
-            row[3] += rat ? bv[j] * x[3] : 0.0;
-            drow[0] += dbv[j] * x[0];
-            drow[1] += dbv[j] * x[1];
+            x0 += bv[j] * x[0];
+            x1 += bv[j] * x[1];
+            x2 += bv[j] * x[2];
+            x3 += rat ? bv[j] * x[3] : 0.0;
+            d0 += dbv[j] * x[0];
+            d1 += dbv[j] * x[1];
         }
-        for (int c = 0; c < NC; c++)
-            acc[c] += bu[i] * row[c];
-        acc[4] += dbu[i] * row[0];
-        acc[5] += dbu[i] * row[1];
-        acc[6] += bu[i] * drow[0];
-        acc[7] += bu[i] * drow[1];
+        f0 += bu[i] * x0;
+        f1 += bu[i] * x1;
+        f2 += bu[i] * x2;
+        f3 += bu[i] * x3;
+        s0 += dbu[i] * x0;
+        s1 += dbu[i] * x1;
+        r0 += bu[i] * d0;
+        r1 += bu[i] * d1;
     }
-    for (int c = 0; c < NC; c++)
-        f[c] = acc[c];
-    f[3] = rat ? f[3] : 1.0;
-    fs[0] = acc[4];
-    fs[1] = acc[5];
-    fr[0] = acc[6];
-    fr[1] = acc[7];
+    f[0] = f0;
+    f[1] = f1;
+    f[2] = f2;
+    f[3] = rat ? f3 : 1.0;
+    fs[0] = s0;
+    fs[1] = s1;
+    fr[0] = r0;
+    fr[1] = r1;
 }
 
 /* Newton (damped) on (X1, X2) inside [s0, s0 + w] x [r0, r0 + w]: 1 when the point closest to
@@ -245,12 +249,15 @@ SPECIALISE int near_origin(const double *net, size_t np, int rat, double tol, do
         hi[c] = -INFINITY;
     }
     for (size_t k = 0; k < np; k++) {
-        double inv = rat ? 1.0 / net[k * NC + 3] : 1.0;
-        for (int c = 0; c < 3; c++) {
-            double x = rat ? net[k * NC + (size_t)c] * inv : net[k * NC + (size_t)c];
-            lo[c] = lesser(lo[c], x);
-            hi[c] = greater(hi[c], x);
-        }
+        const double *a = net + k * NC;
+        double inv = rat ? 1.0 / a[3] : 1.0;
+        double x = rat ? a[0] * inv : a[0], y = rat ? a[1] * inv : a[1], z = rat ? a[2] * inv : a[2];
+        lo[0] = lesser(lo[0], x);
+        hi[0] = greater(hi[0], x);
+        lo[1] = lesser(lo[1], y);
+        hi[1] = greater(hi[1], y);
+        lo[2] = lesser(lo[2], z);
+        hi[2] = greater(hi[2], z);
     }
     return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
 }
