@@ -51,6 +51,26 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
     size_t deg = dir == BS_DIR_U ? m : n, step = dir == BS_DIR_U ? (n + 1) * nc : nc;
     size_t ncurve = dir == BS_DIR_U ? n + 1 : m + 1, cstep = dir == BS_DIR_U ? nc : (n + 1) * nc;
     double b[(BS_MAX_DEGREE + 1) * (BS_MAX_DIM + 1)];
+    if (deg == 3 && lo && hi) { /* the loops below written out for cubics: the same midpoints */
+        for (size_t q = 0; q < ncurve; q++) {
+            const double *in = net + q * cstep;
+            double *l = lo + q * cstep, *h = hi + q * cstep;
+            for (size_t c = 0; c < nc; c++) {
+                double p0 = in[c], p1 = in[step + c], p2 = in[2 * step + c], p3 = in[3 * step + c];
+                double a = (p0 + p1) * 0.5, b1 = (p1 + p2) * 0.5, d = (p2 + p3) * 0.5;
+                double e = (a + b1) * 0.5, f = (b1 + d) * 0.5, g = (e + f) * 0.5;
+                l[c] = p0;
+                l[step + c] = a;
+                l[2 * step + c] = e;
+                l[3 * step + c] = g;
+                h[c] = g;
+                h[step + c] = f;
+                h[2 * step + c] = d;
+                h[3 * step + c] = p3;
+            }
+        }
+        return;
+    }
     for (size_t q = 0; q < ncurve; q++) {
         const double *in = net + q * cstep;
         size_t base = q * cstep;

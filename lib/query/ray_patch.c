@@ -393,18 +393,22 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         /* the four halves, nearest t first */
         bsi_net_halve(net, m, n, NC, BS_DIR_U, half[0], half[1]);
         pending kids[4];
-        for (int a = 0; a < 2; a++)
+        for (int a = 0; a < 2; a++) {
+            double *cn[2];
             for (int b = 0; b < 2; b++) {
                 pending *c = &kids[2 * a + b];
-                *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, 0.0,
+                *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, INFINITY,
                                e.depth + 1, nfree > 0 ? free_slot[--nfree] : unused++};
-                double *cn = slot + (size_t)c->slot * len;
-                bsi_net_halve(half[a], m, n, NC, BS_DIR_V, b ? NULL : cn, b ? cn : NULL);
-                c->tlo = INFINITY;
+                cn[b] = slot + (size_t)c->slot * len;
+            }
+            bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
+            for (int b = 0; b < 2; b++) {
+                pending *c = &kids[2 * a + b];
                 for (size_t q = 0; q < np; q++)
-                    c->tlo = lesser(c->tlo, WDIV(rat, cn[q * NC + 2], cn[q * NC + 3]));
+                    c->tlo = lesser(c->tlo, WDIV(rat, cn[b][q * NC + 2], cn[b][q * NC + 3]));
                 c->tlo -= tol;
             }
+        }
         for (int a = 1; a < 4; a++) /* insertion sort, farthest first onto the stack */
             for (int b = a; b > 0 && kids[b].tlo > kids[b - 1].tlo; b--) {
                 pending x = kids[b];
