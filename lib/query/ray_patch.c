@@ -262,12 +262,26 @@ SPECIALISE int near_origin(const double *net, size_t np, int rat, double tol, do
     return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
 }
 
+/* The point of segment a b nearest to the origin into x; 1 if it lies strictly between them. */
+static inline int segment_nearest(const double a[2], const double b[2], double x[2])
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], dd = dx * dx + dy * dy;
+    double lam = dd > 0.0 ? -(a[0] * dx + a[1] * dy) / dd : 0.0;
+    lam = lam < 0.0 ? 0.0 : lam > 1.0 ? 1.0 : lam;
+    x[0] = a[0] + lam * dx;
+    x[1] = a[1] + lam * dy;
+    return lam > 0.0 && lam < 1.0;
+}
+
 /* 1 if the origin lies more than tol outside the convex hull of the projected net's points (the
- * net then has no zero). A few steps of the Frank-Wolfe (Gilbert) iteration for the point of the
- * hull nearest to the origin, started at g (the point nearest to the ray that Newton found):
- * the support point in the direction of the current point gives a separating line as soon as it
- * lies beyond tol. pts: scratch for np points when rat (a polynomial net is read as it is).
- * Boxes that only skim the ray are excluded long before their axis-aligned box is. */
+ * net then has no zero); 0 if it lies within tol of it or inside; -1 if the steps ran out. The
+ * certificate is a direction x with p.x > tol |x| for every point p of the net. x is found by a
+ * few steps of Gilbert's iteration in the plane kept on a simplex (GJK): started at g, a point
+ * of the hull (a corner of the net, or the point nearest to the ray that Newton found), each step
+ * adds the support point opposite the current nearest point and moves to the nearest point of
+ * the simplex, an edge of the hull or a triangle holding the origin. pts: scratch for np points
+ * when rat (a polynomial net is read as it is). Boxes that only skim the ray are excluded long
+ * before their axis-aligned box is. */
 SPECIALISE int separated(const double *net, size_t np, int rat, const double g[2], double tol,
                          double *pts)
 {
@@ -280,15 +294,16 @@ SPECIALISE int separated(const double *net, size_t np, int rat, const double g[2
         }
     } else
         pts = (double *)net;
-    double x = g[0], y = g[1];
+    double x[2] = {g[0], g[1]}, sa[2] = {g[0], g[1]}, sb[2] = {0.0, 0.0};
+    int ns = 1; /* the simplex: sa, or the edge sa sb */
     for (int it = 0; it < 8; it++) {
-        double len = norm2(x, y);
+        double len = norm2(x[0], x[1]);
         if (!(len > tol))
             return 0;
         size_t at = 0;
         double low = INFINITY;
         for (size_t k = 0; k < np; k++) {
-            double h = pts[st * k] * x + pts[st * k + 1] * y;
+            double h = pts[st * k] * x[0] + pts[st * k + 1] * x[1];
             if (h < low) {
                 low = h;
                 at = k;
@@ -296,14 +311,39 @@ SPECIALISE int separated(const double *net, size_t np, int rat, const double g[2
         }
         if (low > tol * len)
             return 1;
-        /* the point of the segment from (x, y) to the support point nearest to the origin */
-        double dx = pts[st * at] - x, dy = pts[st * at + 1] - y, dd = dx * dx + dy * dy;
-        double lam = dd > 0.0 ? -(x * dx + y * dy) / dd : 0.0;
-        lam = lam < 0.0 ? 0.0 : lam > 1.0 ? 1.0 : lam;
-        x += lam * dx;
-        y += lam * dy;
+        double c[2] = {pts[st * at], pts[st * at + 1]};
+        if (ns == 1) {
+            ns = segment_nearest(sa, c, x) ? 2 : 1;
+            if (ns == 2) {
+                sb[0] = c[0];
+                sb[1] = c[1];
+            } else if (x[0] == c[0] && x[1] == c[1]) {
+                sa[0] = c[0];
+                sa[1] = c[1];
+            }
+            continue;
+        }
+        /* the triangle sa sb c: the origin inside it lies in the hull */
+        double d1 = (sb[0] - sa[0]) * -sa[1] - (sb[1] - sa[1]) * -sa[0];
+        double d2 = (c[0] - sb[0]) * -sb[1] - (c[1] - sb[1]) * -sb[0];
+        double d3 = (sa[0] - c[0]) * -c[1] - (sa[1] - c[1]) * -c[0];
+        if ((d1 >= 0.0 && d2 >= 0.0 && d3 >= 0.0) || (d1 <= 0.0 && d2 <= 0.0 && d3 <= 0.0))
+            return 0;
+        /* else the nearest point of its edges through c */
+        double xa[2], xb[2];
+        int ia = segment_nearest(sa, c, xa), ib = segment_nearest(sb, c, xb);
+        int use_a = xa[0] * xa[0] + xa[1] * xa[1] <= xb[0] * xb[0] + xb[1] * xb[1];
+        double *keep = use_a ? sa : sb, *xn = use_a ? xa : xb;
+        int inner = use_a ? ia : ib;
+        x[0] = xn[0];
+        x[1] = xn[1];
+        sa[0] = inner ? keep[0] : x[0];
+        sa[1] = inner ? keep[1] : x[1];
+        sb[0] = c[0];
+        sb[1] = c[1];
+        ns = inner ? 2 : 1;
     }
-    return 0;
+    return -1;
 }
 
 /* Of the four corners of the projected net (points of the surface), the one nearest to the
@@ -375,7 +415,8 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
          * from the corner of the net nearest to the ray */
         double s, r, t, g[2] = {0.0, 0.0};
         nearest_corner(net, m, n, rat, g);
-        if (separated(net, np, rat, g, tol, half[1]))
+        int sep = separated(net, np, rat, g, tol, half[1]);
+        if (sep > 0)
             continue;
         int found = newton(root, m, n, rat, &e, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
@@ -387,7 +428,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         }
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
-        if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, rat, g, tol, half[1])) ||
+        if ((found && one_to_one(net, m, n)) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
             within <= accept || e.depth == MAX_DEPTH)
             continue;
         /* the four halves, nearest t first */
