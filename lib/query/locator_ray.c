@@ -47,24 +47,45 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
     return 1;
 }
 
-/* Where the ray enters box (lo, hi) within [t0, t1]; 0 if it does not. */
-static int slab(const double *lo, const double *hi, const bsi_ray *ray, double t0, double t1,
-                double *tnear)
+/* What the slab tests read of a ray, kept in the walk's own variables: per axis the origin, 1 / d,
+ * and the offsets in a box (lower corner, then upper) of the faces the ray enters and leaves by. */
+typedef struct slab_ray {
+    double o[3], inv[3];
+    size_t in[3], out[3];
+    int zero[3], flat; /* components of d that are 0; some is */
+} slab_ray;
+
+static slab_ray slab_setup(const bsi_ray *ray)
 {
-    double a = -INFINITY, b = INFINITY;
+    slab_ray r;
     for (int c = 0; c < 3; c++) {
-        if (ray->d[c] == 0.0) {
-            if (ray->o[c] < lo[c] || ray->o[c] > hi[c])
-                return 0;
-            continue;
-        }
-        /* the face the ray enters by and the one it leaves by, from the sign of d */
-        const double *near = ray->inv[c] > 0.0 ? lo : hi, *far = ray->inv[c] > 0.0 ? hi : lo;
-        double x = (near[c] - ray->o[c]) * ray->inv[c], y = (far[c] - ray->o[c]) * ray->inv[c];
-        /* a NaN (a subnormal direction meeting a box face) narrows nothing */
-        a = x > a ? x : a;
-        b = y < b ? y : b;
+        r.o[c] = ray->o[c];
+        r.inv[c] = ray->inv[c];
+        r.in[c] = (size_t)c + (ray->inv[c] > 0.0 ? 0 : 3);
+        r.out[c] = (size_t)c + (ray->inv[c] > 0.0 ? 3 : 0);
+        r.zero[c] = ray->d[c] == 0.0;
     }
+    r.flat = r.zero[0] || r.zero[1] || r.zero[2];
+    return r;
+}
+
+/* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not. */
+static inline int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
+{
+    if (r->flat) /* along a zero component: the origin must lie between the faces */
+        for (int c = 0; c < 3; c++)
+            if (r->zero[c] && (r->o[c] < lo[c] || r->o[c] > lo[3 + c]))
+                return 0;
+    /* entry and exit per axis (where d is 0, -Inf and +Inf, or NaN); a NaN (0 * Inf: a zero or
+     * subnormal component meeting a box face) narrows nothing */
+    double x0 = (lo[r->in[0]] - r->o[0]) * r->inv[0], y0 = (lo[r->out[0]] - r->o[0]) * r->inv[0];
+    double x1 = (lo[r->in[1]] - r->o[1]) * r->inv[1], y1 = (lo[r->out[1]] - r->o[1]) * r->inv[1];
+    double x2 = (lo[r->in[2]] - r->o[2]) * r->inv[2], y2 = (lo[r->out[2]] - r->o[2]) * r->inv[2];
+    double a = x0 > -INFINITY ? x0 : -INFINITY, b = y0 < INFINITY ? y0 : INFINITY;
+    a = x1 > a ? x1 : a;
+    b = y1 < b ? y1 : b;
+    a = x2 > a ? x2 : a;
+    b = y2 < b ? y2 : b;
     /* widened by their rounding (a few ulp), so that no box is lost to it: the same as widening
      * each axis's values before taking the largest and the smallest, since the widening is
      * monotonic */
@@ -86,8 +107,9 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
     int top = 0;
     size_t dim = L->dim;
     double tn;
+    slab_ray sr = slab_setup(ray);
     hit->t = INFINITY;
-    if (L->nnode == 0 || !slab(L->box, L->box + dim, ray, ray->tmin, ray->tmax, &tn))
+    if (L->nnode == 0 || !slab(L->box, &sr, ray->tmin, ray->tmax, &tn))
         return;
     stack[top].node = 0;
     stack[top++].tnear = tn;
@@ -100,7 +122,7 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
             /* each sub-patch's own box first: most that the node's box lets through miss theirs */
             for (uint32_t k = nd->first; k < nd->first + nd->count; k++) {
                 const double *box = L->leaf_box + 2 * dim * k;
-                if (slab(box, box + dim, ray, ray->tmin, lesser(ray->tmax, hit->t), &tn))
+                if (slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tn))
                     bsi_ray_leaf(L, k, ray, scratch, hit);
             }
             continue;
@@ -109,7 +131,7 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
         int in[2];
         for (int c = 0; c < 2; c++) {
             const double *box = L->box + 2 * dim * (nd->first + (uint32_t)c);
-            in[c] = slab(box, box + dim, ray, ray->tmin, lesser(ray->tmax, hit->t), &tc[c]);
+            in[c] = slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tc[c]);
         }
         int near = in[1] && (!in[0] || tc[1] < tc[0]);
         for (int q = 0; q < 2; q++) { /* the farther child first, so the nearer is popped next */
