@@ -5,15 +5,17 @@
  * the common zeros of (X1, X2): a 2-D Bezier patch. A piece of it is discarded when its projected
  * net keeps the origin outside its box (enlarged by the rounding of the projection and the
  * halvings, which is what keeps shared sides watertight: both patches see the same bits there),
- * or its t range lies outside what is wanted. Otherwise Newton's method on (X1, X2), started at
- * the centre and kept inside the piece, looks for the zero, with damped (Levenberg-Marquardt)
- * steps that stay finite at poles, where X_s vanishes along a side. A zero found is the only one
+ * or its t range lies outside what is wanted, or a few GJK steps show the origin outside the
+ * convex hull of its points. Otherwise Newton's method on (X1, X2) (ray_piece.h), started where
+ * the bilinear patch of the piece's corners meets the ray and kept inside the piece, looks for
+ * the zero, with damped (Levenberg-Marquardt) steps that stay finite at poles, where X_s vanishes
+ * along a side. A zero found is the only one
  * of its piece when the hodographs of (X1, X2) along s and along r lie in two cones that do not
  * meet (the map is then one to one there); a piece without one is discarded when the origin is
  * shown to lie outside the convex hull of its projected net. Anything else is halved in both
  * directions, the nearest quarter searched first, down to a fixed depth.
  */
-#include "query/locator.h"
+#include "query/ray_piece.h"
 
 #include <float.h>
 #include <math.h>
@@ -21,159 +23,10 @@
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
 #define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
 #define SLOTS (3 * MAX_DEPTH + 4)
-#define NC 4 /* X1, X2, T, W */
-
-/* min and max without the NaN rules of fmin and fmax, which keep them out of line */
-static inline double lesser(double a, double b) { return a < b ? a : b; }
-static inline double greater(double a, double b) { return a > b ? a : b; }
-
-/* hypot(x, y) by one square root where the squares are safe (within an ulp or so of hypot) */
-static inline double norm2(double x, double y)
-{
-    double q = x * x + y * y;
-    return q > 0x1p-1000 && q < 0x1p1000 ? sqrt(q) : hypot(x, y);
-}
-
-/* x / w, as the rational nets form it; a polynomial net's weights are exactly 1 (the halvings
- * keep them so), so there it is x itself, the same bits without the division */
-#if defined(__GNUC__) /* inlined into each of the two cases of search (rational or not) */
-#define SPECIALISE static inline __attribute__((always_inline))
-#else
-#define SPECIALISE static inline
-#endif
-
-#define WDIV(rat, x, w) ((rat) ? (x) / (w) : (x))
 
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
     return (SLOTS + 3) * NC * max_ctrl;
-}
-
-/* A sub-patch waiting on the stack: its domain [s0, s0 + w] x [r0, r0 + w] in the leaf, its
- * level below the leaf, its nearest t, and the slot holding its net. */
-typedef struct pending {
-    double s0, r0, w, tlo;
-    int depth, slot;
-} pending;
-
-/* Bernstein polynomials of degree deg at x and their derivatives. */
-static void bernstein(size_t deg, double x, double *b, double *db)
-{
-    double y = 1.0 - x;
-    if (deg == 3) {
-        double xx = x * x, yy = y * y, xy = x * y;
-        b[0] = yy * y;
-        b[1] = 3.0 * xy * y;
-        b[2] = 3.0 * xy * x;
-        b[3] = xx * x;
-        db[0] = -3.0 * yy;
-        db[1] = 3.0 * (yy - 2.0 * xy);
-        db[2] = 3.0 * (2.0 * xy - xx);
-        db[3] = 3.0 * xx;
-        return;
-    }
-    b[0] = 1.0;
-    db[0] = 0.0;
-    for (size_t r = 1; r <= deg; r++) {
-        if (r == deg)
-            for (size_t k = 0; k <= deg; k++)
-                db[k] = (double)deg * ((k > 0 ? b[k - 1] : 0.0) - (k < deg ? b[k] : 0.0));
-        b[r] = x * b[r - 1];
-        for (size_t k = r - 1; k > 0; k--)
-            b[k] = y * b[k] + x * b[k - 1];
-        b[0] *= y;
-    }
-}
-
-/* The projected net at (s, r): f = (X1, X2, T, W) (W = 1 for a polynomial net), and the partials
- * of X1, X2 (all Newton needs: the zeros of X1, X2 are those of X1/W, X2/W). */
-SPECIALISE void eval_net(const double *net, size_t m, size_t n, int rat, double s, double r,
-                     double f[NC], double fs[2], double fr[2])
-{
-    double bu[BS_MAX_DEGREE + 1], dbu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], dbv[BS_MAX_DEGREE + 1];
-    bernstein(m, s, bu, dbu);
-    bernstein(n, r, bv, dbv);
-    double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0, s0 = 0.0, s1 = 0.0, r0 = 0.0, r1 = 0.0;
-    for (size_t i = 0; i <= m; i++) {
-        double x0 = 0.0, x1 = 0.0, x2 = 0.0, x3 = 0.0, d0 = 0.0, d1 = 0.0;
-        for (size_t j = 0; j <= n; j++) {
-            const double *x = net + (i * (n + 1) + j) * NC;
-            x0 += bv[j] * x[0];
-            x1 += bv[j] * x[1];
-            x2 += bv[j] * x[2];
-            x3 += rat ? bv[j] * x[3] : 0.0;
-            d0 += dbv[j] * x[0];
-            d1 += dbv[j] * x[1];
-        }
-        f0 += bu[i] * x0;
-        f1 += bu[i] * x1;
-        f2 += bu[i] * x2;
-        f3 += bu[i] * x3;
-        s0 += dbu[i] * x0;
-        s1 += dbu[i] * x1;
-        r0 += bu[i] * d0;
-        r1 += bu[i] * d1;
-    }
-    f[0] = f0;
-    f[1] = f1;
-    f[2] = f2;
-    f[3] = rat ? f3 : 1.0;
-    fs[0] = s0;
-    fs[1] = s1;
-    fr[0] = r0;
-    fr[1] = r1;
-}
-
-/* Newton (damped) on (X1, X2) inside [s0, s0 + w] x [r0, r0 + w]: 1 when the point closest to
- * the ray found is within tol of it. Either way *s, *r, *t receive that point and g its (X1, X2). */
-SPECIALISE int newton(const double *net, size_t m, size_t n, int rat, const pending *e,
-                  double floor_dist, double tol, double *s_out, double *r_out, double *t_out,
-                  double g[2])
-{
-    double pad = e->w * 0x1p-30;
-    double slo = greater(0.0, e->s0 - pad), shi = lesser(1.0, e->s0 + e->w + pad);
-    double rlo = greater(0.0, e->r0 - pad), rhi = lesser(1.0, e->r0 + e->w + pad);
-    double s = e->s0 + 0.5 * e->w, r = e->r0 + 0.5 * e->w, best = INFINITY;
-    int worse = 0; /* steps in a row that found nothing nearer */
-    *s_out = s;
-    *r_out = r;
-    *t_out = INFINITY;
-    for (int it = 0; it < 24; it++) {
-        double f[NC], fs[2], fr[2];
-        eval_net(net, m, n, rat, s, r, f, fs, fr);
-        double dist = WDIV(rat, norm2(f[0], f[1]), f[3]);
-        if (dist < best) {
-            worse = dist < 0.5 * best ? 0 : worse + 1;
-            best = dist;
-            *s_out = s;
-            *r_out = r;
-            *t_out = WDIV(rat, f[2], f[3]);
-            g[0] = f[0];
-            g[1] = f[1];
-        }
-        else
-            worse++;
-        if (!(dist > floor_dist) || worse >= 4) /* converged, or no longer converging */
-            break;
-        /* (J^T J + lambda I) step = -J^T f */
-        double a11 = fs[0] * fs[0] + fs[1] * fs[1], a12 = fs[0] * fr[0] + fs[1] * fr[1];
-        double a22 = fr[0] * fr[0] + fr[1] * fr[1];
-        double g1 = fs[0] * f[0] + fs[1] * f[1], g2 = fr[0] * f[0] + fr[1] * f[1];
-        double lambda = 1e-13 * (a11 + a22) + DBL_MIN;
-        a11 += lambda;
-        a22 += lambda;
-        double det = a11 * a22 - a12 * a12;
-        if (!(det > 0.0) || !isfinite(det))
-            break;
-        double ds = -(a22 * g1 - a12 * g2) / det, dr = -(a11 * g2 - a12 * g1) / det;
-        /* as fmin(shi, fmax(slo, x)): a NaN step goes to slo */
-        double s1 = lesser(greater(s + ds, slo), shi), r1 = lesser(greater(r + dr, rlo), rhi);
-        if (s1 == s && r1 == r)
-            break;
-        s = s1;
-        r = r1;
-    }
-    return best <= tol;
 }
 
 /* The cone of the differences of the projected net along dir: its two extreme vectors lo, hi
@@ -418,7 +271,8 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         int sep = separated(net, np, rat, g, tol, half[1]);
         if (sep > 0)
             continue;
-        int found = newton(root, m, n, rat, &e, floor_dist, accept, &s, &r, &t, g);
+        bilinear_start(net, m, n, rat, &e, &s, &r);
+        int found = newton(root, m, n, rat, &e, s, r, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
         if (found && wanted(ray, t, hit->t)) {
             hit->t = t;
