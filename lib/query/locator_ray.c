@@ -69,8 +69,14 @@ static slab_ray slab_setup(const bsi_ray *ray)
     return r;
 }
 
+#if defined(__GNUC__) /* in line in the walk, which calls it at three places */
+#define WALK_INLINE static inline __attribute__((always_inline))
+#else
+#define WALK_INLINE static inline
+#endif
+
 /* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not. */
-static inline int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
+WALK_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
 {
     if (r->flat) /* along a zero component: the origin must lie between the faces */
         for (int c = 0; c < 3; c++)
