@@ -92,6 +92,12 @@ static int one_to_one(const double *net, size_t m, size_t n)
     return pos == 4 || neg == 4;
 }
 
+/* 1 if the origin lies within tol of the box (lo, hi) in X1, X2 */
+static inline int box_near(const double lo[3], const double hi[3], double tol)
+{
+    return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
+}
+
 /* Box of the projected net (X / W; rat: the net is rational, else W = 1): 1 if the origin lies
  * within tol of it (X1, X2), with lo, hi its corners (X1, X2, T). */
 SPECIALISE int near_origin(const double *net, size_t np, int rat, double tol, double lo[3],
@@ -112,7 +118,7 @@ SPECIALISE int near_origin(const double *net, size_t np, int rat, double tol, do
         lo[2] = lesser(lo[2], z);
         hi[2] = greater(hi[2], z);
     }
-    return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
+    return box_near(lo, hi, tol);
 }
 
 /* The point of segment a b nearest to the origin into x; 1 if it lies strictly between them. */
@@ -216,20 +222,37 @@ SPECIALISE void nearest_corner(const double *net, size_t m, size_t n, int rat, d
     }
 }
 
-/* The leaf's net in the ray's frame; returns the largest |P - o| coordinate. (w times each
- * product: for a polynomial net w = 1, and the product itself is the same bits.) */
-SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *ray, double *out)
+/* The leaf's net in the ray's frame, and its box as near_origin makes it (rbox: lower corner,
+ * upper corner); returns the largest |P - o| coordinate. (w times each product: for a polynomial
+ * net w = 1, and the product itself is the same bits.) */
+SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *ray, double *out,
+                          double rbox[6])
 {
-    double big = 0.0;
+    double big = 0.0, lo0 = INFINITY, lo1 = INFINITY, lo2 = INFINITY;
+    double hi0 = -INFINITY, hi1 = -INFINITY, hi2 = -INFINITY;
     for (size_t k = 0; k < np; k++) {
         const double *p = net + k * NC;
         double a[3] = {p[0] - ray->o[0], p[1] - ray->o[1], p[2] - ray->o[2]}, w = p[3];
-        out[k * NC + 0] = rat ? w * bsi_dot3(a, ray->e1) : bsi_dot3(a, ray->e1);
-        out[k * NC + 1] = rat ? w * bsi_dot3(a, ray->e2) : bsi_dot3(a, ray->e2);
-        out[k * NC + 2] = rat ? w * bsi_dot3(a, ray->d) : bsi_dot3(a, ray->d);
-        out[k * NC + 3] = w;
+        double *q = out + k * NC, inv = rat ? 1.0 / w : 1.0;
+        q[0] = rat ? w * bsi_dot3(a, ray->e1) : bsi_dot3(a, ray->e1);
+        q[1] = rat ? w * bsi_dot3(a, ray->e2) : bsi_dot3(a, ray->e2);
+        q[2] = rat ? w * bsi_dot3(a, ray->d) : bsi_dot3(a, ray->d);
+        q[3] = w;
+        double x = rat ? q[0] * inv : q[0], y = rat ? q[1] * inv : q[1], z = rat ? q[2] * inv : q[2];
+        lo0 = lesser(lo0, x);
+        hi0 = greater(hi0, x);
+        lo1 = lesser(lo1, y);
+        hi1 = greater(hi1, y);
+        lo2 = lesser(lo2, z);
+        hi2 = greater(hi2, z);
         big = greater(big, greater(fabs(a[0]), greater(fabs(a[1]), fabs(a[2]))));
     }
+    rbox[0] = lo0;
+    rbox[1] = lo1;
+    rbox[2] = lo2;
+    rbox[3] = hi0;
+    rbox[4] = hi1;
+    rbox[5] = hi2;
     return big;
 }
 
@@ -246,7 +269,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     const bs_patch *p = L->patches[leaf->patch];
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
-    double big = project(L->nets + leaf->net, np, rat, ray, root);
+    double rbox[6], big = project(L->nets + leaf->net, np, rat, ray, root, rbox);
     /* rounding of the projection and of the halvings, and the distance accepted as a hit */
     double tol = 1e-13 * L->diag + 256 * DBL_EPSILON * big;
     double accept = 1e-11 * L->diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
@@ -260,8 +283,16 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         double tmax = lesser(hit->t, ray->tmax);
         if (e.slot >= 0)
             free_slot[nfree++] = e.slot;
-        if (e.tlo > tmax || !near_origin(net, np, rat, tol, lo, hi) || hi[2] + tol < ray->tmin ||
-            lo[2] - tol > tmax)
+        int near;
+        if (e.slot < 0) { /* the leaf's own box, made with its projection */
+            for (int c = 0; c < 3; c++) {
+                lo[c] = rbox[c];
+                hi[c] = rbox[3 + c];
+            }
+            near = box_near(lo, hi, tol);
+        } else
+            near = near_origin(net, np, rat, tol, lo, hi);
+        if (e.tlo > tmax || !near || hi[2] + tol < ray->tmin || lo[2] - tol > tmax)
             continue;
         double within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
         /* most pieces the box test lets through hold no zero: shown first, without Newton,
