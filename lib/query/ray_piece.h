@@ -74,34 +74,55 @@ static inline void bernstein(size_t deg, double x, double *b, double *db)
     }
 }
 
+/* Row i of the projected net (n + 1 points) summed along r: x = (X1, X2, T, W) with the weights
+ * bv (W only when rat), dx = (X1, X2) with dbv. Cubic rows written out: the same sums in the same
+ * order. */
+SPECIALISE void row_sums(const double *a, size_t n, int rat, const double *bv, const double *dbv,
+                         double x[4], double dx[2])
+{
+    if (n == 3) {
+        const double *b = a + NC, *c = b + NC, *d = c + NC;
+        x[0] = bv[0] * a[0] + bv[1] * b[0] + bv[2] * c[0] + bv[3] * d[0];
+        x[1] = bv[0] * a[1] + bv[1] * b[1] + bv[2] * c[1] + bv[3] * d[1];
+        x[2] = bv[0] * a[2] + bv[1] * b[2] + bv[2] * c[2] + bv[3] * d[2];
+        x[3] = rat ? bv[0] * a[3] + bv[1] * b[3] + bv[2] * c[3] + bv[3] * d[3] : 0.0;
+        dx[0] = dbv[0] * a[0] + dbv[1] * b[0] + dbv[2] * c[0] + dbv[3] * d[0];
+        dx[1] = dbv[0] * a[1] + dbv[1] * b[1] + dbv[2] * c[1] + dbv[3] * d[1];
+        return;
+    }
+    x[0] = x[1] = x[2] = x[3] = dx[0] = dx[1] = 0.0;
+    for (size_t j = 0; j <= n; j++) {
+        const double *p = a + j * NC;
+        x[0] += bv[j] * p[0];
+        x[1] += bv[j] * p[1];
+        x[2] += bv[j] * p[2];
+        x[3] += rat ? bv[j] * p[3] : 0.0;
+        dx[0] += dbv[j] * p[0];
+        dx[1] += dbv[j] * p[1];
+    }
+}
+
 /* The projected net at (s, r): f = (X1, X2, T, W) (W = 1 for a polynomial net), and the partials
  * of X1, X2 (all Newton needs: the zeros of X1, X2 are those of X1/W, X2/W). */
-SPECIALISE void eval_net(const double *net, size_t m, size_t n, int rat, double s, double r,
-                     double f[NC], double fs[2], double fr[2])
+SPECIALISE void eval_body(const double *net, size_t m, size_t n, int rat, double s, double r,
+                          double f[NC], double fs[2], double fr[2])
 {
     double bu[BS_MAX_DEGREE + 1], dbu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], dbv[BS_MAX_DEGREE + 1];
+    dbv[0] = dbv[1] = dbv[2] = dbv[3] = 0.0; /* all filled below; the compiler cannot tell */
     bernstein(m, s, bu, dbu);
     bernstein(n, r, bv, dbv);
     double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0, s0 = 0.0, s1 = 0.0, r0 = 0.0, r1 = 0.0;
     for (size_t i = 0; i <= m; i++) {
-        double x0 = 0.0, x1 = 0.0, x2 = 0.0, x3 = 0.0, d0 = 0.0, d1 = 0.0;
-        for (size_t j = 0; j <= n; j++) {
-            const double *x = net + (i * (n + 1) + j) * NC;
-            x0 += bv[j] * x[0];
-            x1 += bv[j] * x[1];
-            x2 += bv[j] * x[2];
-            x3 += rat ? bv[j] * x[3] : 0.0;
-            d0 += dbv[j] * x[0];
-            d1 += dbv[j] * x[1];
-        }
-        f0 += bu[i] * x0;
-        f1 += bu[i] * x1;
-        f2 += bu[i] * x2;
-        f3 += bu[i] * x3;
-        s0 += dbu[i] * x0;
-        s1 += dbu[i] * x1;
-        r0 += bu[i] * d0;
-        r1 += bu[i] * d1;
+        double x[4], dx[2];
+        row_sums(net + i * (n + 1) * NC, n, rat, bv, dbv, x, dx);
+        f0 += bu[i] * x[0];
+        f1 += bu[i] * x[1];
+        f2 += bu[i] * x[2];
+        f3 += bu[i] * x[3];
+        s0 += dbu[i] * x[0];
+        s1 += dbu[i] * x[1];
+        r0 += bu[i] * dx[0];
+        r1 += bu[i] * dx[1];
     }
     f[0] = f0;
     f[1] = f1;
@@ -111,6 +132,16 @@ SPECIALISE void eval_net(const double *net, size_t m, size_t n, int rat, double 
     fs[1] = s1;
     fr[0] = r0;
     fr[1] = r1;
+}
+
+/* eval_body, compiled apart for bicubic nets (every loop of a fixed length) */
+SPECIALISE void eval_net(const double *net, size_t m, size_t n, int rat, double s, double r,
+                         double f[NC], double fs[2], double fr[2])
+{
+    if (m == 3 && n == 3)
+        eval_body(net, 3, 3, rat, s, r, f, fs, fr);
+    else
+        eval_body(net, m, n, rat, s, r, f, fs, fr);
 }
 
 static inline double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
