@@ -33,53 +33,58 @@ size_t bsi_ray_leaf_scratch(size_t max_ctrl)
  * (the others lie between them). 0 if they do not all lie within 90 degrees of their sum, or
  * none is left. Differences below 1e-9 of the largest are left out: at a pole (a collapsed side)
  * they vanish but for the rounding and the differing weights of the pole's copies, and every zero
- * on that side is the same point. */
-static int cone(const double *net, size_t m, size_t n, int dir, double lo[2], double hi[2])
+ * on that side is the same point. work: scratch for 3 (m+1)(n+1) doubles (the differences, read
+ * twice). */
+static int cone(const double *net, size_t m, size_t n, int dir, double lo[2], double hi[2],
+                double *work)
 {
-    size_t ni = dir == BS_DIR_U ? m : m + 1, nj = dir == BS_DIR_U ? n + 1 : n;
+    size_t ni = dir == BS_DIR_U ? m : m + 1, nj = dir == BS_DIR_U ? n + 1 : n, nd = 0;
     size_t step = dir == BS_DIR_U ? (n + 1) * NC : NC;
-    double sx = 0.0, sy = 0.0, big = 0.0;
+    double sx = 0.0, sy = 0.0, big = 0.0, *dx = work, *dy = work + ni * nj, *dm = dy + ni * nj;
     for (size_t i = 0; i < ni; i++)
-        for (size_t j = 0; j < nj; j++) {
+        for (size_t j = 0; j < nj; j++, nd++) {
             const double *a = net + (i * (n + 1) + j) * NC;
             double x = a[step] - a[0], y = a[step + 1] - a[1];
+            dx[nd] = x;
+            dy[nd] = y;
+            dm[nd] = greater(fabs(x), fabs(y));
             sx += x;
             sy += y;
-            big = greater(big, greater(fabs(x), fabs(y)));
+            big = greater(big, dm[nd]);
         }
     double tlo = INFINITY, thi = -INFINITY; /* tangents of the angles to the sum */
-    for (size_t i = 0; i < ni; i++)
-        for (size_t j = 0; j < nj; j++) {
-            const double *a = net + (i * (n + 1) + j) * NC;
-            double x = a[step] - a[0], y = a[step + 1] - a[1];
-            if (!(greater(fabs(x), fabs(y)) > 1e-9 * big))
-                continue;
-            double along = sx * x + sy * y, across = sx * y - sy * x;
-            if (!(along > 0.0))
-                return 0;
-            double tn = across / along;
-            if (tn < tlo) {
-                tlo = tn;
-                lo[0] = x;
-                lo[1] = y;
-            }
-            if (tn > thi) {
-                thi = tn;
-                hi[0] = x;
-                hi[1] = y;
-            }
+    for (size_t k = 0; k < nd; k++) {
+        double x = dx[k], y = dy[k];
+        if (!(dm[k] > 1e-9 * big))
+            continue;
+        double along = sx * x + sy * y, across = sx * y - sy * x;
+        if (!(along > 0.0))
+            return 0;
+        double tn = across / along;
+        if (tn < tlo) {
+            tlo = tn;
+            lo[0] = x;
+            lo[1] = y;
         }
+        if (tn > thi) {
+            thi = tn;
+            hi[0] = x;
+            hi[1] = y;
+        }
+    }
     return tlo <= thi;
 }
 
 /* 1 if (X1, X2) is one to one on the sub-patch of this net: every difference along s crossed with
  * every difference along r has the same sign (checked on the cones' extremes, which span the
  * rest), so any two vectors of the cones the partials lie in are independent, and
- * N(q) - N(p) = ds A + dr B (A, B in those cones) vanishes only for ds = dr = 0. */
-static int one_to_one(const double *net, size_t m, size_t n)
+ * N(q) - N(p) = ds A + dr B (A, B in those cones) vanishes only for ds = dr = 0. work: scratch as
+ * for cone. */
+static int one_to_one(const double *net, size_t m, size_t n, double *work)
 {
     double s[2][2], r[2][2];
-    if (m == 0 || n == 0 || !cone(net, m, n, BS_DIR_U, s[0], s[1]) || !cone(net, m, n, BS_DIR_V, r[0], r[1]))
+    if (m == 0 || n == 0 || !cone(net, m, n, BS_DIR_U, s[0], s[1], work) ||
+        !cone(net, m, n, BS_DIR_V, r[0], r[1], work))
         return 0;
     int pos = 0, neg = 0;
     for (int a = 0; a < 2; a++)
@@ -313,7 +318,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         }
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
-        if ((found && one_to_one(net, m, n)) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
+        if ((found && one_to_one(net, m, n, half[1])) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
             within <= accept || e.depth == MAX_DEPTH)
             continue;
         /* the four halves, nearest t first */
