@@ -20,6 +20,9 @@ typedef struct bsi_loc_leaf {
     size_t net;
 } bsi_loc_leaf;
 
+/* Sub-patches per leaf node of the hierarchy at most (two: the walk orders them by entry). */
+#define BSI_LOC_LEAF_MAX 2
+
 /* A node of the hierarchy: an inner node (count 0) has its children at first and first + 1; a
  * leaf node holds leaves first .. first + count - 1 of the locator's leaf array. */
 typedef struct bsi_loc_node {

@@ -9,7 +9,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define LEAF_MAX 2
 
 typedef struct builder {
     bs_locator *L;
@@ -67,7 +66,7 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
             chi[c] = fmax(chi[c], cen[c]);
         }
     }
-    if (hi - lo <= LEAF_MAX) {
+    if (hi - lo <= BSI_LOC_LEAF_MAX) {
         L->nodes[ni].first = (uint32_t)lo;
         L->nodes[ni].count = (uint32_t)(hi - lo);
         return;
@@ -88,7 +87,7 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
 /* Nodes of the tree over n leaves: the median cut makes it a function of n alone. */
 static size_t node_count(size_t n)
 {
-    return n <= LEAF_MAX ? 1 : 1 + node_count(n / 2) + node_count(n - n / 2);
+    return n <= BSI_LOC_LEAF_MAX ? 1 : 1 + node_count(n / 2) + node_count(n - n / 2);
 }
 
 bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)

@@ -125,12 +125,21 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
             continue;
         const bsi_loc_node *nd = &L->nodes[stack[top].node];
         if (nd->count > 0) {
-            /* each sub-patch's own box first: most that the node's box lets through miss theirs */
-            for (uint32_t k = nd->first; k < nd->first + nd->count; k++) {
-                const double *box = L->leaf_box + 2 * dim * k;
-                if (slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tn))
-                    bsi_ray_leaf(L, k, ray, scratch, hit);
+            /* each sub-patch's own box first: most that the node's box lets through miss
+             * theirs; the nearer entered first, the other skipped if a hit comes before it */
+            double tl[BSI_LOC_LEAF_MAX];
+            int inl[BSI_LOC_LEAF_MAX], order[BSI_LOC_LEAF_MAX] = {0, 1};
+            for (uint32_t q = 0; q < nd->count; q++) {
+                const double *box = L->leaf_box + 2 * dim * (nd->first + q);
+                inl[q] = slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tl[q]);
             }
+            if (nd->count == 2 && inl[1] && (!inl[0] || tl[1] < tl[0])) {
+                order[0] = 1;
+                order[1] = 0;
+            }
+            for (uint32_t q = 0; q < nd->count; q++)
+                if (inl[order[q]] && tl[order[q]] <= hit->t)
+                    bsi_ray_leaf(L, nd->first + (uint32_t)order[q], ray, scratch, hit);
             continue;
         }
         double tc[2];
