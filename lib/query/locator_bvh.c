@@ -1,7 +1,7 @@
 /*
  * The locator's bounding-volume hierarchy: a binary tree over the sub-patches' boxes, built top
- * down by cutting each set at the median of the box centres along the axis where they spread
- * most, down to at most two sub-patches per leaf node. The median cut keeps the tree balanced
+ * down by cutting each set at the median of the box centres along the axis whose two halves'
+ * boxes have the least surface, down to at most two sub-patches per leaf node. The median cut keeps the tree balanced
  * (depth log2 of the sub-patches), so queries can walk it with a small fixed stack.
  */
 #include "query/locator.h"
@@ -47,6 +47,29 @@ static void select_rank(const builder *b, size_t axis, size_t lo0, size_t hi0, s
     }
 }
 
+/* Surface of the box of leaves perm[lo..hi): the sum over pairs of axes of the products of the
+ * box's extents (half the area of a 3-D box). */
+static double half_surface(const builder *b, size_t lo, size_t hi)
+{
+    size_t dim = b->L->dim;
+    double blo[BS_MAX_DIM], bhi[BS_MAX_DIM], s = 0.0;
+    for (size_t c = 0; c < dim; c++) {
+        blo[c] = INFINITY;
+        bhi[c] = -INFINITY;
+    }
+    for (size_t k = lo; k < hi; k++) {
+        const double *lb = b->leaf_box + 2 * dim * b->perm[k];
+        for (size_t c = 0; c < dim; c++) {
+            blo[c] = fmin(blo[c], lb[c]);
+            bhi[c] = fmax(bhi[c], lb[dim + c]);
+        }
+    }
+    for (size_t c = 0; c < dim; c++)
+        for (size_t e = c + 1; e < dim; e++)
+            s += (bhi[c] - blo[c]) * (bhi[e] - blo[e]);
+    return s;
+}
+
 /* Node ni over perm[lo..hi): its box, and its children or its leaves. */
 static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
 {
@@ -71,11 +94,20 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
         L->nodes[ni].count = (uint32_t)(hi - lo);
         return;
     }
-    size_t axis = 0;
-    for (size_t c = 1; c < dim; c++)
-        if (chi[c] - clo[c] > chi[axis] - clo[axis])
+    /* the median cut along the axis whose two halves' boxes have the least surface (area for
+     * 3-D boxes; the sum of their half-perimeters' products in general): fewer rays cross both */
+    size_t axis = 0, mid = lo + (hi - lo) / 2, child = b->next;
+    double best = INFINITY;
+    for (size_t c = 0; c < dim; c++) {
+        if (!(chi[c] > clo[c]))
+            continue;
+        select_rank(b, c, lo, hi, mid);
+        double cost = half_surface(b, lo, mid) + half_surface(b, mid, hi);
+        if (cost < best) {
+            best = cost;
             axis = c;
-    size_t mid = lo + (hi - lo) / 2, child = b->next;
+        }
+    }
     select_rank(b, axis, lo, hi, mid);
     b->next += 2;
     L->nodes[ni].first = (uint32_t)child;
