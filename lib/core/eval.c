@@ -131,6 +131,28 @@ BSI_HOT void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const d
                       hu + c * PB, hv + c * PB);
 }
 
+/* bsi_eval_first_block with first != 0 at one finite point: outputs [ncoord], the same bits
+ * (bicubic nets through bicubic_point, as the block and chunk paths; others through a block). */
+void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double *hu, double *hv)
+{
+    if (p->deg_u == 3 && p->deg_v == 3) {
+        double bu[4], bum[3], bv[4], bvm[3];
+        bsi_bernstein3_first(u, bu, bum);
+        bsi_bernstein3_first(v, bv, bvm);
+        for (size_t c = 0; c < p->ncoord; c++)
+            bicubic_point(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c, hu + c, hv + c);
+        return;
+    }
+    double ub[B] = {u}, vb[B] = {v}, hb[(BS_MAX_DIM + 1) * B], hub[(BS_MAX_DIM + 1) * B],
+           hvb[(BS_MAX_DIM + 1) * B];
+    bsi_eval_first_block(p, ub, vb, 1, hb, hub, hvb);
+    for (size_t c = 0; c < p->ncoord; c++) {
+        h[c] = hb[c * B];
+        hu[c] = hub[c * B];
+        hv[c] = hvb[c * B];
+    }
+}
+
 /* Element 0 of each of the k views when all are packed (stride 0 or 8), else 0. */
 static int packed_views(const bs_view *views, size_t k, double **data)
 {

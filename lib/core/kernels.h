@@ -88,6 +88,10 @@ void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, i
 void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const double *v, double *h,
                              double *hu, double *hv);
 
+/* bsi_eval_first_block with first != 0 at one finite point (u, v): h, hu, hv get ncoord values
+ * each, the same bits as the block and chunk paths give that point. */
+void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double *hu, double *hv);
+
 /* Cartesian S (and S_u, S_v when su != NULL) of one point from its homogeneous values; element c
  * of h, hu, hv is at index c*stride. */
 void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,

@@ -116,6 +116,11 @@ static bs_status build(bs_locator *L)
             cut_patch(L, i, &leaf, &net_at, work, work + 3 * max_len, leaf_box, 1e-12 * L->diag);
         st = bsi_loc_build_bvh(L, leaf_box);
     }
+    if (st == BS_OK && dim == 3) {
+        st = (L->nscale = malloc(L->npatch * sizeof *L->nscale)) ? BS_OK : BS_ERR_NO_MEMORY;
+        for (size_t i = 0; st == BS_OK && i < L->npatch; i++)
+            bsi_normal_scale(L->patches[i], &L->nscale[i]);
+    }
     free(work);
     free(leaf_box);
     return st;
@@ -162,6 +167,8 @@ void bs_locator_destroy(bs_locator *L)
     free(L->nets);
     free(L->nodes);
     free(L->box);
+    free(L->leaf_box);
+    free(L->nscale);
     free(L);
 }
 

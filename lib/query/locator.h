@@ -20,6 +20,9 @@ typedef struct bsi_loc_leaf {
     size_t net;
 } bsi_loc_leaf;
 
+/* Sub-patches per leaf node of the hierarchy at most (two: the walk orders them by entry). */
+#define BSI_LOC_LEAF_MAX 2
+
 /* A node of the hierarchy: an inner node (count 0) has its children at first and first + 1; a
  * leaf node holds leaves first .. first + count - 1 of the locator's leaf array. */
 typedef struct bsi_loc_node {
@@ -36,6 +39,8 @@ struct bs_locator {
     double *nets;        /* the leaves' nets */
     bsi_loc_node *nodes; /* nodes[0] is the root */
     double *box;         /* node k: lower corner box[2*k*dim ...], upper corner right after */
+    double *leaf_box;    /* leaf k's box, as node boxes: tested before its net is projected */
+    bsi_nscale *nscale;  /* per patch, for its normals (3-D locators): bsi_normal_scale's once */
 };
 
 /* Halve a net of (m+1) x (n+1) points of nc interleaved doubles at the parameter 1/2 along dir
@@ -49,6 +54,26 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
     size_t deg = dir == BS_DIR_U ? m : n, step = dir == BS_DIR_U ? (n + 1) * nc : nc;
     size_t ncurve = dir == BS_DIR_U ? n + 1 : m + 1, cstep = dir == BS_DIR_U ? nc : (n + 1) * nc;
     double b[(BS_MAX_DEGREE + 1) * (BS_MAX_DIM + 1)];
+    if (deg == 3 && lo && hi) { /* the loops below written out for cubics: the same midpoints */
+        for (size_t q = 0; q < ncurve; q++) {
+            const double *in = net + q * cstep;
+            double *l = lo + q * cstep, *h = hi + q * cstep;
+            for (size_t c = 0; c < nc; c++) {
+                double p0 = in[c], p1 = in[step + c], p2 = in[2 * step + c], p3 = in[3 * step + c];
+                double a = (p0 + p1) * 0.5, b1 = (p1 + p2) * 0.5, d = (p2 + p3) * 0.5;
+                double e = (a + b1) * 0.5, f = (b1 + d) * 0.5, g = (e + f) * 0.5;
+                l[c] = p0;
+                l[step + c] = a;
+                l[2 * step + c] = e;
+                l[3 * step + c] = g;
+                h[c] = g;
+                h[step + c] = f;
+                h[2 * step + c] = d;
+                h[3 * step + c] = p3;
+            }
+        }
+        return;
+    }
     for (size_t q = 0; q < ncurve; q++) {
         const double *in = net + q * cstep;
         size_t base = q * cstep;
@@ -76,13 +101,15 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
 }
 
 /* Build the hierarchy over L->nleaf leaves whose boxes are in leaf_box (2*dim doubles each, as
- * node boxes): fills L->nodes, L->nnode, L->box and reorders L->leaves. BS_ERR_NO_MEMORY. */
+ * node boxes): fills L->nodes, L->nnode, L->box, reorders L->leaves and puts their boxes, in the
+ * same order, in L->leaf_box. BS_ERR_NO_MEMORY. */
 bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box);
 
 /* A ray in the frame it is tested in: origin o, unit direction d, and e1, e2 completing an
- * orthonormal frame; t in units of |d| = 1, from tmin (exclusive when open) to tmax. */
+ * orthonormal frame (and 1 / d); t in units of |d| = 1, from tmin (exclusive when open) to tmax. */
 typedef struct bsi_ray {
     double o[3], d[3], e1[3], e2[3];
+    double inv[3]; /* 1 / d, for the slab tests */
     double tmin, tmax;
     int open;
 } bsi_ray;

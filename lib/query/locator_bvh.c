@@ -1,7 +1,7 @@
 /*
  * The locator's bounding-volume hierarchy: a binary tree over the sub-patches' boxes, built top
- * down by cutting each set at the median of the box centres along the axis where they spread
- * most, down to at most two sub-patches per leaf node. The median cut keeps the tree balanced
+ * down by cutting each set at the median of the box centres along the axis whose two halves'
+ * boxes have the least surface, down to at most two sub-patches per leaf node. The median cut keeps the tree balanced
  * (depth log2 of the sub-patches), so queries can walk it with a small fixed stack.
  */
 #include "query/locator.h"
@@ -9,7 +9,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define LEAF_MAX 2
 
 typedef struct builder {
     bs_locator *L;
@@ -48,6 +47,29 @@ static void select_rank(const builder *b, size_t axis, size_t lo0, size_t hi0, s
     }
 }
 
+/* Surface of the box of leaves perm[lo..hi): the sum over pairs of axes of the products of the
+ * box's extents (half the area of a 3-D box). */
+static double half_surface(const builder *b, size_t lo, size_t hi)
+{
+    size_t dim = b->L->dim;
+    double blo[BS_MAX_DIM], bhi[BS_MAX_DIM], s = 0.0;
+    for (size_t c = 0; c < dim; c++) {
+        blo[c] = INFINITY;
+        bhi[c] = -INFINITY;
+    }
+    for (size_t k = lo; k < hi; k++) {
+        const double *lb = b->leaf_box + 2 * dim * b->perm[k];
+        for (size_t c = 0; c < dim; c++) {
+            blo[c] = fmin(blo[c], lb[c]);
+            bhi[c] = fmax(bhi[c], lb[dim + c]);
+        }
+    }
+    for (size_t c = 0; c < dim; c++)
+        for (size_t e = c + 1; e < dim; e++)
+            s += (bhi[c] - blo[c]) * (bhi[e] - blo[e]);
+    return s;
+}
+
 /* Node ni over perm[lo..hi): its box, and its children or its leaves. */
 static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
 {
@@ -67,16 +89,25 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
             chi[c] = fmax(chi[c], cen[c]);
         }
     }
-    if (hi - lo <= LEAF_MAX) {
+    if (hi - lo <= BSI_LOC_LEAF_MAX) {
         L->nodes[ni].first = (uint32_t)lo;
         L->nodes[ni].count = (uint32_t)(hi - lo);
         return;
     }
-    size_t axis = 0;
-    for (size_t c = 1; c < dim; c++)
-        if (chi[c] - clo[c] > chi[axis] - clo[axis])
+    /* the median cut along the axis whose two halves' boxes have the least surface (area for
+     * 3-D boxes; the sum of their half-perimeters' products in general): fewer rays cross both */
+    size_t axis = 0, mid = lo + (hi - lo) / 2, child = b->next;
+    double best = INFINITY;
+    for (size_t c = 0; c < dim; c++) {
+        if (!(chi[c] > clo[c]))
+            continue;
+        select_rank(b, c, lo, hi, mid);
+        double cost = half_surface(b, lo, mid) + half_surface(b, mid, hi);
+        if (cost < best) {
+            best = cost;
             axis = c;
-    size_t mid = lo + (hi - lo) / 2, child = b->next;
+        }
+    }
     select_rank(b, axis, lo, hi, mid);
     b->next += 2;
     L->nodes[ni].first = (uint32_t)child;
@@ -88,7 +119,7 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
 /* Nodes of the tree over n leaves: the median cut makes it a function of n alone. */
 static size_t node_count(size_t n)
 {
-    return n <= LEAF_MAX ? 1 : 1 + node_count(n / 2) + node_count(n - n / 2);
+    return n <= BSI_LOC_LEAF_MAX ? 1 : 1 + node_count(n / 2) + node_count(n - n / 2);
 }
 
 bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
@@ -99,8 +130,9 @@ bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
     double *cen = malloc(n * dim * sizeof(double));
     uint32_t *perm = malloc(n * sizeof *perm);
     bsi_loc_leaf *sorted = malloc(n * sizeof *sorted);
+    L->leaf_box = malloc(n * 2 * dim * sizeof(double));
     bs_status st = BS_ERR_NO_MEMORY;
-    if (L->nodes && L->box && cen && perm && sorted) {
+    if (L->nodes && L->box && cen && perm && sorted && L->leaf_box) {
         for (size_t k = 0; k < n; k++) {
             perm[k] = (uint32_t)k;
             for (size_t c = 0; c < dim; c++)
@@ -109,8 +141,11 @@ bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
         builder b = {L, leaf_box, cen, perm, 1};
         build_node(&b, 0, 0, n);
         L->nnode = b.next;
-        for (size_t k = 0; k < n; k++)
+        for (size_t k = 0; k < n; k++) {
             sorted[k] = L->leaves[perm[k]];
+            for (size_t c = 0; c < 2 * dim; c++)
+                L->leaf_box[2 * dim * k + c] = leaf_box[2 * dim * perm[k] + c];
+        }
         bsi_loc_leaf *old = L->leaves;
         L->leaves = sorted;
         sorted = old;

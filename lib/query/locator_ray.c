@@ -1,15 +1,18 @@
 /*
  * Rays against a locator (bs_locator_intersect): each ray is put in its own orthonormal frame,
  * the hierarchy is walked nearest box first, boxes beyond the best hit so far are skipped, and
- * the sub-patches reached are tested by ray_patch.c. The answer's point and normal come from
- * bs_patch_eval_normal on the locator's copy of the patch (limit normals at poles), and t from
- * that point.
+ * the sub-patches reached are tested by ray_patch.c. The answer's point and normal are
+ * bs_patch_eval_normal's (the same bits) on the locator's copy of the patch (limit normals at
+ * poles), and t comes from that point.
  */
 #include "query/locator.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+
+/* min without the NaN rules of fmin, which keep it out of line */
+static inline double lesser(double a, double b) { return a < b ? a : b; }
 
 #define STACK 128 /* twice the depth of a median-split tree of up to 2^32 leaves, and more */
 
@@ -27,6 +30,7 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
     for (int c = 0; c < 3; c++) {
         ray->o[c] = o[c];
         ray->d[c] = dd[c] / l;
+        ray->inv[c] = 1.0 / ray->d[c];
     }
     /* e1, e2: the branch-free orthonormal basis of Duff et al. (2017) */
     double x = ray->d[0], y = ray->d[1], z = ray->d[2], sg = copysign(1.0, z);
@@ -43,29 +47,58 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
     return 1;
 }
 
-/* Where the ray enters box (lo, hi) within [t0, t1]; 0 if it does not. */
-static int slab(const double *lo, const double *hi, const bsi_ray *ray, double t0, double t1,
-                double *tnear)
+/* What the slab tests read of a ray, kept in the walk's own variables: per axis the origin, 1 / d,
+ * and the offsets in a box (lower corner, then upper) of the faces the ray enters and leaves by. */
+typedef struct slab_ray {
+    double o[3], inv[3];
+    size_t in[3], out[3];
+    int zero[3], flat; /* components of d that are 0; some is */
+} slab_ray;
+
+static slab_ray slab_setup(const bsi_ray *ray)
 {
+    slab_ray r;
     for (int c = 0; c < 3; c++) {
-        if (ray->d[c] == 0.0) {
-            if (ray->o[c] < lo[c] || ray->o[c] > hi[c])
-                return 0;
-            continue;
-        }
-        double inv = 1.0 / ray->d[c], a = (lo[c] - ray->o[c]) * inv, b = (hi[c] - ray->o[c]) * inv;
-        if (a > b) {
-            double x = a;
-            a = b;
-            b = x;
-        }
-        /* widened by their rounding (a few ulp), so that no box is lost to it; a NaN (a
-         * subnormal direction meeting a box face) narrows nothing */
-        a -= 4 * DBL_EPSILON * fabs(a);
-        b += 4 * DBL_EPSILON * fabs(b);
-        t0 = a > t0 ? a : t0;
-        t1 = b < t1 ? b : t1;
+        r.o[c] = ray->o[c];
+        r.inv[c] = ray->inv[c];
+        r.in[c] = (size_t)c + (ray->inv[c] > 0.0 ? 0 : 3);
+        r.out[c] = (size_t)c + (ray->inv[c] > 0.0 ? 3 : 0);
+        r.zero[c] = ray->d[c] == 0.0;
     }
+    r.flat = r.zero[0] || r.zero[1] || r.zero[2];
+    return r;
+}
+
+#if defined(__GNUC__) /* in line in the walk, which calls it at three places */
+#define WALK_INLINE static inline __attribute__((always_inline))
+#else
+#define WALK_INLINE static inline
+#endif
+
+/* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not. */
+WALK_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
+{
+    if (r->flat) /* along a zero component: the origin must lie between the faces */
+        for (int c = 0; c < 3; c++)
+            if (r->zero[c] && (r->o[c] < lo[c] || r->o[c] > lo[3 + c]))
+                return 0;
+    /* entry and exit per axis (where d is 0, -Inf and +Inf, or NaN); a NaN (0 * Inf: a zero or
+     * subnormal component meeting a box face) narrows nothing */
+    double x0 = (lo[r->in[0]] - r->o[0]) * r->inv[0], y0 = (lo[r->out[0]] - r->o[0]) * r->inv[0];
+    double x1 = (lo[r->in[1]] - r->o[1]) * r->inv[1], y1 = (lo[r->out[1]] - r->o[1]) * r->inv[1];
+    double x2 = (lo[r->in[2]] - r->o[2]) * r->inv[2], y2 = (lo[r->out[2]] - r->o[2]) * r->inv[2];
+    double a = x0 > -INFINITY ? x0 : -INFINITY, b = y0 < INFINITY ? y0 : INFINITY;
+    a = x1 > a ? x1 : a;
+    b = y1 < b ? y1 : b;
+    a = x2 > a ? x2 : a;
+    b = y2 < b ? y2 : b;
+    /* widened by their rounding (a few ulp), so that no box is lost to it: the same as widening
+     * each axis's values before taking the largest and the smallest, since the widening is
+     * monotonic */
+    a -= 4 * DBL_EPSILON * fabs(a);
+    b += 4 * DBL_EPSILON * fabs(b);
+    t0 = a > t0 ? a : t0;
+    t1 = b < t1 ? b : t1;
     *tnear = t0;
     return t0 <= t1;
 }
@@ -80,8 +113,9 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
     int top = 0;
     size_t dim = L->dim;
     double tn;
+    slab_ray sr = slab_setup(ray);
     hit->t = INFINITY;
-    if (L->nnode == 0 || !slab(L->box, L->box + dim, ray, ray->tmin, ray->tmax, &tn))
+    if (L->nnode == 0 || !slab(L->box, &sr, ray->tmin, ray->tmax, &tn))
         return;
     stack[top].node = 0;
     stack[top++].tnear = tn;
@@ -91,15 +125,28 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
             continue;
         const bsi_loc_node *nd = &L->nodes[stack[top].node];
         if (nd->count > 0) {
-            for (uint32_t k = nd->first; k < nd->first + nd->count; k++)
-                bsi_ray_leaf(L, k, ray, scratch, hit);
+            /* each sub-patch's own box first: most that the node's box lets through miss
+             * theirs; the nearer entered first, the other skipped if a hit comes before it */
+            double tl[BSI_LOC_LEAF_MAX];
+            int inl[BSI_LOC_LEAF_MAX], order[BSI_LOC_LEAF_MAX] = {0, 1};
+            for (uint32_t q = 0; q < nd->count; q++) {
+                const double *box = L->leaf_box + 2 * dim * (nd->first + q);
+                inl[q] = slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tl[q]);
+            }
+            if (nd->count == 2 && inl[1] && (!inl[0] || tl[1] < tl[0])) {
+                order[0] = 1;
+                order[1] = 0;
+            }
+            for (uint32_t q = 0; q < nd->count; q++)
+                if (inl[order[q]] && tl[order[q]] <= hit->t)
+                    bsi_ray_leaf(L, nd->first + (uint32_t)order[q], ray, scratch, hit);
             continue;
         }
         double tc[2];
         int in[2];
         for (int c = 0; c < 2; c++) {
             const double *box = L->box + 2 * dim * (nd->first + (uint32_t)c);
-            in[c] = slab(box, box + dim, ray, ray->tmin, fmin(ray->tmax, hit->t), &tc[c]);
+            in[c] = slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tc[c]);
         }
         int near = in[1] && (!in[0] || tc[1] < tc[0]);
         for (int q = 0; q < 2; q++) { /* the farther child first, so the nearer is popped next */
@@ -126,10 +173,8 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, double len,
         id = leaf->patch;
         u = leaf->u0 + hit->s * side;
         v = leaf->v0 + hit->r * side;
-        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
-        bs_view pv[3] = {{&pos[0], 1, 0}, {&pos[1], 1, 0}, {&pos[2], 1, 0}};
-        bs_view nn[3] = {{&nv[0], 1, 0}, {&nv[1], 1, 0}, {&nv[2], 1, 0}};
-        (void)bs_patch_eval_normal(L->patches[id], 1, &cu, &cv, pv, nn, NULL);
+        /* bs_patch_eval_normal's bits, with the patch's normal scale made once */
+        bsi_eval_normal_one(L->patches[id], &L->nscale[id], u, v, pos, nv);
         double a[3] = {pos[0] - ray->o[0], pos[1] - ray->o[1], pos[2] - ray->o[2]};
         /* t of the point reported, kept within the range the hit was found in */
         tt = fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len;

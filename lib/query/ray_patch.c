@@ -5,15 +5,17 @@
  * the common zeros of (X1, X2): a 2-D Bezier patch. A piece of it is discarded when its projected
  * net keeps the origin outside its box (enlarged by the rounding of the projection and the
  * halvings, which is what keeps shared sides watertight: both patches see the same bits there),
- * or its t range lies outside what is wanted. Otherwise Newton's method on (X1, X2), started at
- * the centre and kept inside the piece, looks for the zero, with damped (Levenberg-Marquardt)
- * steps that stay finite at poles, where X_s vanishes along a side. A zero found is the only one
+ * or its t range lies outside what is wanted, or a few GJK steps show the origin outside the
+ * convex hull of its points. Otherwise Newton's method on (X1, X2) (ray_piece.h), started where
+ * the bilinear patch of the piece's corners meets the ray and kept inside the piece, looks for
+ * the zero, with damped (Levenberg-Marquardt) steps that stay finite at poles, where X_s vanishes
+ * along a side. A zero found is the only one
  * of its piece when the hodographs of (X1, X2) along s and along r lie in two cones that do not
  * meet (the map is then one to one there); a piece without one is discarded when the origin is
  * shown to lie outside the convex hull of its projected net. Anything else is halved in both
  * directions, the nearest quarter searched first, down to a fixed depth.
  */
-#include "query/locator.h"
+#include "query/ray_piece.h"
 
 #include <float.h>
 #include <math.h>
@@ -21,167 +23,68 @@
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
 #define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
 #define SLOTS (3 * MAX_DEPTH + 4)
-#define NC 4 /* X1, X2, T, W */
-
-/* min and max without the NaN rules of fmin and fmax, which keep them out of line */
-static inline double lesser(double a, double b) { return a < b ? a : b; }
-static inline double greater(double a, double b) { return a > b ? a : b; }
 
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
     return (SLOTS + 3) * NC * max_ctrl;
 }
 
-/* A sub-patch waiting on the stack: its domain [s0, s0 + w] x [r0, r0 + w] in the leaf, its
- * level below the leaf, its nearest t, and the slot holding its net. */
-typedef struct pending {
-    double s0, r0, w, tlo;
-    int depth, slot;
-} pending;
-
-/* Bernstein polynomials of degree deg at x and their derivatives. */
-static void bernstein(size_t deg, double x, double *b, double *db)
-{
-    double y = 1.0 - x;
-    b[0] = 1.0;
-    db[0] = 0.0;
-    for (size_t r = 1; r <= deg; r++) {
-        if (r == deg)
-            for (size_t k = 0; k <= deg; k++)
-                db[k] = (double)deg * ((k > 0 ? b[k - 1] : 0.0) - (k < deg ? b[k] : 0.0));
-        b[r] = x * b[r - 1];
-        for (size_t k = r - 1; k > 0; k--)
-            b[k] = y * b[k] + x * b[k - 1];
-        b[0] *= y;
-    }
-}
-
-/* The projected net (NC coordinates) and its partials at (s, r). */
-static void eval_net(const double *net, size_t m, size_t n, double s, double r, double f[NC],
-                     double fs[NC], double fr[NC])
-{
-    double bu[BS_MAX_DEGREE + 1], dbu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], dbv[BS_MAX_DEGREE + 1];
-    bernstein(m, s, bu, dbu);
-    bernstein(n, r, bv, dbv);
-    for (int c = 0; c < NC; c++)
-        f[c] = fs[c] = fr[c] = 0.0;
-    for (size_t i = 0; i <= m; i++) {
-        double row[NC] = {0}, drow[NC] = {0};
-        for (size_t j = 0; j <= n; j++)
-            for (int c = 0; c < NC; c++) {
-                double x = net[(i * (n + 1) + j) * NC + (size_t)c];
-                row[c] += bv[j] * x;
-                drow[c] += dbv[j] * x;
-            }
-        for (int c = 0; c < NC; c++) {
-            f[c] += bu[i] * row[c];
-            fs[c] += dbu[i] * row[c];
-            fr[c] += bu[i] * drow[c];
-        }
-    }
-}
-
-/* Newton (damped) on (X1, X2) inside [s0, s0 + w] x [r0, r0 + w]: 1 when the point closest to
- * the ray found is within tol of it. Either way *s, *r, *t receive that point and g its (X1, X2). */
-static int newton(const double *net, size_t m, size_t n, const pending *e, double floor_dist,
-                  double tol, double *s_out, double *r_out, double *t_out, double g[2])
-{
-    double pad = e->w * 0x1p-30;
-    double slo = fmax(0.0, e->s0 - pad), shi = fmin(1.0, e->s0 + e->w + pad);
-    double rlo = fmax(0.0, e->r0 - pad), rhi = fmin(1.0, e->r0 + e->w + pad);
-    double s = e->s0 + 0.5 * e->w, r = e->r0 + 0.5 * e->w, best = INFINITY;
-    int worse = 0; /* steps in a row that found nothing nearer */
-    *s_out = s;
-    *r_out = r;
-    *t_out = INFINITY;
-    for (int it = 0; it < 24; it++) {
-        double f[NC], fs[NC], fr[NC];
-        eval_net(net, m, n, s, r, f, fs, fr);
-        double dist = hypot(f[0], f[1]) / f[3];
-        if (dist < best) {
-            worse = dist < 0.5 * best ? 0 : worse + 1;
-            best = dist;
-            *s_out = s;
-            *r_out = r;
-            *t_out = f[2] / f[3];
-            g[0] = f[0];
-            g[1] = f[1];
-        }
-        else
-            worse++;
-        if (!(dist > floor_dist) || worse >= 4) /* converged, or no longer converging */
-            break;
-        /* (J^T J + lambda I) step = -J^T f */
-        double a11 = fs[0] * fs[0] + fs[1] * fs[1], a12 = fs[0] * fr[0] + fs[1] * fr[1];
-        double a22 = fr[0] * fr[0] + fr[1] * fr[1];
-        double g1 = fs[0] * f[0] + fs[1] * f[1], g2 = fr[0] * f[0] + fr[1] * f[1];
-        double lambda = 1e-13 * (a11 + a22) + DBL_MIN;
-        a11 += lambda;
-        a22 += lambda;
-        double det = a11 * a22 - a12 * a12;
-        if (!(det > 0.0) || !isfinite(det))
-            break;
-        double ds = -(a22 * g1 - a12 * g2) / det, dr = -(a11 * g2 - a12 * g1) / det;
-        double s1 = fmin(shi, fmax(slo, s + ds)), r1 = fmin(rhi, fmax(rlo, r + dr));
-        if (s1 == s && r1 == r)
-            break;
-        s = s1;
-        r = r1;
-    }
-    return best <= tol;
-}
-
 /* The cone of the differences of the projected net along dir: its two extreme vectors lo, hi
  * (the others lie between them). 0 if they do not all lie within 90 degrees of their sum, or
  * none is left. Differences below 1e-9 of the largest are left out: at a pole (a collapsed side)
  * they vanish but for the rounding and the differing weights of the pole's copies, and every zero
- * on that side is the same point. */
-static int cone(const double *net, size_t m, size_t n, int dir, double lo[2], double hi[2])
+ * on that side is the same point. work: scratch for 3 (m+1)(n+1) doubles (the differences, read
+ * twice). */
+static int cone(const double *net, size_t m, size_t n, int dir, double lo[2], double hi[2],
+                double *work)
 {
-    size_t ni = dir == BS_DIR_U ? m : m + 1, nj = dir == BS_DIR_U ? n + 1 : n;
+    size_t ni = dir == BS_DIR_U ? m : m + 1, nj = dir == BS_DIR_U ? n + 1 : n, nd = 0;
     size_t step = dir == BS_DIR_U ? (n + 1) * NC : NC;
-    double sx = 0.0, sy = 0.0, big = 0.0;
+    double sx = 0.0, sy = 0.0, big = 0.0, *dx = work, *dy = work + ni * nj, *dm = dy + ni * nj;
     for (size_t i = 0; i < ni; i++)
-        for (size_t j = 0; j < nj; j++) {
+        for (size_t j = 0; j < nj; j++, nd++) {
             const double *a = net + (i * (n + 1) + j) * NC;
             double x = a[step] - a[0], y = a[step + 1] - a[1];
+            dx[nd] = x;
+            dy[nd] = y;
+            dm[nd] = greater(fabs(x), fabs(y));
             sx += x;
             sy += y;
-            big = greater(big, greater(fabs(x), fabs(y)));
+            big = greater(big, dm[nd]);
         }
     double tlo = INFINITY, thi = -INFINITY; /* tangents of the angles to the sum */
-    for (size_t i = 0; i < ni; i++)
-        for (size_t j = 0; j < nj; j++) {
-            const double *a = net + (i * (n + 1) + j) * NC;
-            double x = a[step] - a[0], y = a[step + 1] - a[1];
-            if (!(greater(fabs(x), fabs(y)) > 1e-9 * big))
-                continue;
-            double along = sx * x + sy * y, across = sx * y - sy * x;
-            if (!(along > 0.0))
-                return 0;
-            double tn = across / along;
-            if (tn < tlo) {
-                tlo = tn;
-                lo[0] = x;
-                lo[1] = y;
-            }
-            if (tn > thi) {
-                thi = tn;
-                hi[0] = x;
-                hi[1] = y;
-            }
+    for (size_t k = 0; k < nd; k++) {
+        double x = dx[k], y = dy[k];
+        if (!(dm[k] > 1e-9 * big))
+            continue;
+        double along = sx * x + sy * y, across = sx * y - sy * x;
+        if (!(along > 0.0))
+            return 0;
+        double tn = across / along;
+        if (tn < tlo) {
+            tlo = tn;
+            lo[0] = x;
+            lo[1] = y;
         }
+        if (tn > thi) {
+            thi = tn;
+            hi[0] = x;
+            hi[1] = y;
+        }
+    }
     return tlo <= thi;
 }
 
 /* 1 if (X1, X2) is one to one on the sub-patch of this net: every difference along s crossed with
  * every difference along r has the same sign (checked on the cones' extremes, which span the
  * rest), so any two vectors of the cones the partials lie in are independent, and
- * N(q) - N(p) = ds A + dr B (A, B in those cones) vanishes only for ds = dr = 0. */
-static int one_to_one(const double *net, size_t m, size_t n)
+ * N(q) - N(p) = ds A + dr B (A, B in those cones) vanishes only for ds = dr = 0. work: scratch as
+ * for cone. */
+static int one_to_one(const double *net, size_t m, size_t n, double *work)
 {
     double s[2][2], r[2][2];
-    if (m == 0 || n == 0 || !cone(net, m, n, BS_DIR_U, s[0], s[1]) || !cone(net, m, n, BS_DIR_V, r[0], r[1]))
+    if (m == 0 || n == 0 || !cone(net, m, n, BS_DIR_U, s[0], s[1], work) ||
+        !cone(net, m, n, BS_DIR_V, r[0], r[1], work))
         return 0;
     int pos = 0, neg = 0;
     for (int a = 0; a < 2; a++)
@@ -194,48 +97,77 @@ static int one_to_one(const double *net, size_t m, size_t n)
     return pos == 4 || neg == 4;
 }
 
-/* Box of the projected net: 1 if the origin lies within tol of it (X1, X2), and its t range;
- * *within receives the largest |X1|, |X2| over the box. */
-static int near_origin(const double *net, size_t np, double tol, double *tlo, double *thi,
-                       double *within)
+/* 1 if the origin lies within tol of the box (lo, hi) in X1, X2 */
+static inline int box_near(const double lo[3], const double hi[3], double tol)
 {
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t k = 0; k < np; k++) {
-        double inv = 1.0 / net[k * NC + 3];
-        for (int c = 0; c < 3; c++) {
-            double x = net[k * NC + (size_t)c] * inv;
-            lo[c] = lesser(lo[c], x);
-            hi[c] = greater(hi[c], x);
-        }
-    }
-    *tlo = lo[2] - tol;
-    *thi = hi[2] + tol;
-    *within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
     return lo[0] <= tol && hi[0] >= -tol && lo[1] <= tol && hi[1] >= -tol;
 }
 
-/* 1 if the origin lies more than tol outside the convex hull of the projected net's points (the
- * net then has no zero). A few steps of the Frank-Wolfe (Gilbert) iteration for the point of the
- * hull nearest to the origin, started at g (the point nearest to the ray that Newton found):
- * the support point in the direction of the current point gives a separating line as soon as it
- * lies beyond tol. pts: scratch for np points. Boxes that only skim the ray are excluded long
- * before their axis-aligned box is. */
-static int separated(const double *net, size_t np, const double g[2], double tol, double *pts)
+/* Box of the projected net (X / W; rat: the net is rational, else W = 1): 1 if the origin lies
+ * within tol of it (X1, X2), with lo, hi its corners (X1, X2, T). */
+SPECIALISE int near_origin(const double *net, size_t np, int rat, double tol, double lo[3],
+                           double hi[3])
 {
-    for (size_t k = 0; k < np; k++) {
-        double inv = 1.0 / net[k * NC + 3];
-        pts[2 * k] = net[k * NC] * inv;
-        pts[2 * k + 1] = net[k * NC + 1] * inv;
+    for (int c = 0; c < 3; c++) {
+        lo[c] = INFINITY;
+        hi[c] = -INFINITY;
     }
-    double x = g[0], y = g[1];
+    for (size_t k = 0; k < np; k++) {
+        const double *a = net + k * NC;
+        double inv = rat ? 1.0 / a[3] : 1.0;
+        double x = rat ? a[0] * inv : a[0], y = rat ? a[1] * inv : a[1], z = rat ? a[2] * inv : a[2];
+        lo[0] = lesser(lo[0], x);
+        hi[0] = greater(hi[0], x);
+        lo[1] = lesser(lo[1], y);
+        hi[1] = greater(hi[1], y);
+        lo[2] = lesser(lo[2], z);
+        hi[2] = greater(hi[2], z);
+    }
+    return box_near(lo, hi, tol);
+}
+
+/* The point of segment a b nearest to the origin into x; 1 if it lies strictly between them. */
+static inline int segment_nearest(const double a[2], const double b[2], double x[2])
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], dd = dx * dx + dy * dy;
+    double lam = dd > 0.0 ? -(a[0] * dx + a[1] * dy) / dd : 0.0;
+    lam = lam < 0.0 ? 0.0 : lam > 1.0 ? 1.0 : lam;
+    x[0] = a[0] + lam * dx;
+    x[1] = a[1] + lam * dy;
+    return lam > 0.0 && lam < 1.0;
+}
+
+/* 1 if the origin lies more than tol outside the convex hull of the projected net's points (the
+ * net then has no zero); 0 if it lies within tol of it or inside; -1 if the steps ran out. The
+ * certificate is a direction x with p.x > tol |x| for every point p of the net. x is found by a
+ * few steps of Gilbert's iteration in the plane kept on a simplex (GJK): started at g, a point
+ * of the hull (a corner of the net, or the point nearest to the ray that Newton found), each step
+ * adds the support point opposite the current nearest point and moves to the nearest point of
+ * the simplex, an edge of the hull or a triangle holding the origin. pts: scratch for np points
+ * when rat (a polynomial net is read as it is). Boxes that only skim the ray are excluded long
+ * before their axis-aligned box is. */
+SPECIALISE int separated(const double *net, size_t np, int rat, const double g[2], double tol,
+                         double *pts)
+{
+    size_t st = rat ? 2 : NC;
+    if (rat) {
+        for (size_t k = 0; k < np; k++) {
+            double inv = 1.0 / net[k * NC + 3];
+            pts[2 * k] = net[k * NC] * inv;
+            pts[2 * k + 1] = net[k * NC + 1] * inv;
+        }
+    } else
+        pts = (double *)net;
+    double x[2] = {g[0], g[1]}, sa[2] = {g[0], g[1]}, sb[2] = {0.0, 0.0};
+    int ns = 1; /* the simplex: sa, or the edge sa sb */
     for (int it = 0; it < 8; it++) {
-        double len = hypot(x, y);
+        double len = norm2(x[0], x[1]);
         if (!(len > tol))
             return 0;
         size_t at = 0;
         double low = INFINITY;
         for (size_t k = 0; k < np; k++) {
-            double h = pts[2 * k] * x + pts[2 * k + 1] * y;
+            double h = pts[st * k] * x[0] + pts[st * k + 1] * x[1];
             if (h < low) {
                 low = h;
                 at = k;
@@ -243,25 +175,50 @@ static int separated(const double *net, size_t np, const double g[2], double tol
         }
         if (low > tol * len)
             return 1;
-        /* the point of the segment from (x, y) to the support point nearest to the origin */
-        double dx = pts[2 * at] - x, dy = pts[2 * at + 1] - y, dd = dx * dx + dy * dy;
-        double lam = dd > 0.0 ? -(x * dx + y * dy) / dd : 0.0;
-        lam = lam < 0.0 ? 0.0 : lam > 1.0 ? 1.0 : lam;
-        x += lam * dx;
-        y += lam * dy;
+        double c[2] = {pts[st * at], pts[st * at + 1]};
+        if (ns == 1) {
+            ns = segment_nearest(sa, c, x) ? 2 : 1;
+            if (ns == 2) {
+                sb[0] = c[0];
+                sb[1] = c[1];
+            } else if (x[0] == c[0] && x[1] == c[1]) {
+                sa[0] = c[0];
+                sa[1] = c[1];
+            }
+            continue;
+        }
+        /* the triangle sa sb c: the origin inside it lies in the hull */
+        double d1 = (sb[0] - sa[0]) * -sa[1] - (sb[1] - sa[1]) * -sa[0];
+        double d2 = (c[0] - sb[0]) * -sb[1] - (c[1] - sb[1]) * -sb[0];
+        double d3 = (sa[0] - c[0]) * -c[1] - (sa[1] - c[1]) * -c[0];
+        if ((d1 >= 0.0 && d2 >= 0.0 && d3 >= 0.0) || (d1 <= 0.0 && d2 <= 0.0 && d3 <= 0.0))
+            return 0;
+        /* else the nearest point of its edges through c */
+        double xa[2], xb[2];
+        int ia = segment_nearest(sa, c, xa), ib = segment_nearest(sb, c, xb);
+        int use_a = xa[0] * xa[0] + xa[1] * xa[1] <= xb[0] * xb[0] + xb[1] * xb[1];
+        double *keep = use_a ? sa : sb, *xn = use_a ? xa : xb;
+        int inner = use_a ? ia : ib;
+        x[0] = xn[0];
+        x[1] = xn[1];
+        sa[0] = inner ? keep[0] : x[0];
+        sa[1] = inner ? keep[1] : x[1];
+        sb[0] = c[0];
+        sb[1] = c[1];
+        ns = inner ? 2 : 1;
     }
-    return 0;
+    return -1;
 }
 
 /* Of the four corners of the projected net (points of the surface), the one nearest to the
  * origin, as (X1, X2) / W into g. */
-static void nearest_corner(const double *net, size_t m, size_t n, double g[2])
+SPECIALISE void nearest_corner(const double *net, size_t m, size_t n, int rat, double g[2])
 {
     const size_t corner[4] = {0, n, m * (n + 1), m * (n + 1) + n};
     double best = INFINITY;
     for (int k = 0; k < 4; k++) {
         const double *a = net + corner[k] * NC;
-        double x = a[0] / a[3], y = a[1] / a[3], d = x * x + y * y;
+        double x = WDIV(rat, a[0], a[3]), y = WDIV(rat, a[1], a[3]), d = x * x + y * y;
         if (d < best) {
             best = d;
             g[0] = x;
@@ -270,19 +227,37 @@ static void nearest_corner(const double *net, size_t m, size_t n, double g[2])
     }
 }
 
-/* The leaf's net in the ray's frame; returns the largest |P - o| coordinate. */
-static double project(const double *net, size_t np, const bsi_ray *ray, double *out)
+/* The leaf's net in the ray's frame, and its box as near_origin makes it (rbox: lower corner,
+ * upper corner); returns the largest |P - o| coordinate. (w times each product: for a polynomial
+ * net w = 1, and the product itself is the same bits.) */
+SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *ray, double *out,
+                          double rbox[6])
 {
-    double big = 0.0;
+    double big = 0.0, lo0 = INFINITY, lo1 = INFINITY, lo2 = INFINITY;
+    double hi0 = -INFINITY, hi1 = -INFINITY, hi2 = -INFINITY;
     for (size_t k = 0; k < np; k++) {
         const double *p = net + k * NC;
         double a[3] = {p[0] - ray->o[0], p[1] - ray->o[1], p[2] - ray->o[2]}, w = p[3];
-        out[k * NC + 0] = w * bsi_dot3(a, ray->e1);
-        out[k * NC + 1] = w * bsi_dot3(a, ray->e2);
-        out[k * NC + 2] = w * bsi_dot3(a, ray->d);
-        out[k * NC + 3] = w;
+        double *q = out + k * NC, inv = rat ? 1.0 / w : 1.0;
+        q[0] = rat ? w * bsi_dot3(a, ray->e1) : bsi_dot3(a, ray->e1);
+        q[1] = rat ? w * bsi_dot3(a, ray->e2) : bsi_dot3(a, ray->e2);
+        q[2] = rat ? w * bsi_dot3(a, ray->d) : bsi_dot3(a, ray->d);
+        q[3] = w;
+        double x = rat ? q[0] * inv : q[0], y = rat ? q[1] * inv : q[1], z = rat ? q[2] * inv : q[2];
+        lo0 = lesser(lo0, x);
+        hi0 = greater(hi0, x);
+        lo1 = lesser(lo1, y);
+        hi1 = greater(hi1, y);
+        lo2 = lesser(lo2, z);
+        hi2 = greater(hi2, z);
         big = greater(big, greater(fabs(a[0]), greater(fabs(a[1]), fabs(a[2]))));
     }
+    rbox[0] = lo0;
+    rbox[1] = lo1;
+    rbox[2] = lo2;
+    rbox[3] = hi0;
+    rbox[4] = hi1;
+    rbox[5] = hi2;
     return big;
 }
 
@@ -291,38 +266,49 @@ static int wanted(const bsi_ray *ray, double t, double best)
     return (ray->open ? t > ray->tmin : t >= ray->tmin) && t <= ray->tmax && t < best;
 }
 
-void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
-                  bsi_ray_hit *hit)
+/* bsi_ray_leaf for a rational net (rat) or a polynomial one, each compiled for its case */
+SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
+                       bsi_ray_hit *hit, int rat)
 {
     const bsi_loc_leaf *leaf = &L->leaves[k];
     const bs_patch *p = L->patches[leaf->patch];
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
-    double big = project(L->nets + leaf->net, np, ray, root);
+    double rbox[6], big = project(L->nets + leaf->net, np, rat, ray, root, rbox);
     /* rounding of the projection and of the halvings, and the distance accepted as a hit */
     double tol = 1e-13 * L->diag + 256 * DBL_EPSILON * big;
     double accept = 1e-11 * L->diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
-    int free_slot[SLOTS], nfree = SLOTS, top = 0;
+    /* slots: those freed, then those never used; the leaf's own net stays in root (slot -1) */
+    int free_slot[SLOTS], nfree = 0, unused = 0, top = 0;
     pending stack[SLOTS];
-    for (int q = 0; q < SLOTS; q++)
-        free_slot[q] = SLOTS - 1 - q;
-    stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, free_slot[--nfree]};
-    for (size_t q = 0; q < len; q++)
-        slot[(size_t)stack[0].slot * len + q] = root[q];
+    stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, -1};
     for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
-        double *net = slot + (size_t)e.slot * len, tlo, thi, within;
-        free_slot[nfree++] = e.slot;
-        if (e.tlo > fmin(hit->t, ray->tmax) || !near_origin(net, np, tol, &tlo, &thi, &within) ||
-            thi < ray->tmin || tlo > fmin(hit->t, ray->tmax))
+        double *net = e.slot < 0 ? root : slot + (size_t)e.slot * len, lo[3], hi[3];
+        double tmax = lesser(hit->t, ray->tmax);
+        if (e.slot >= 0)
+            free_slot[nfree++] = e.slot;
+        int near;
+        if (e.slot < 0) { /* the leaf's own box, made with its projection */
+            for (int c = 0; c < 3; c++) {
+                lo[c] = rbox[c];
+                hi[c] = rbox[3 + c];
+            }
+            near = box_near(lo, hi, tol);
+        } else
+            near = near_origin(net, np, rat, tol, lo, hi);
+        if (e.tlo > tmax || !near || hi[2] + tol < ray->tmin || lo[2] - tol > tmax)
             continue;
+        double within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
         /* most pieces the box test lets through hold no zero: shown first, without Newton,
          * from the corner of the net nearest to the ray */
         double s, r, t, g[2] = {0.0, 0.0};
-        nearest_corner(net, m, n, g);
-        if (separated(net, np, g, tol, half[1]))
+        nearest_corner(net, m, n, rat, g);
+        int sep = separated(net, np, rat, g, tol, half[1]);
+        if (sep > 0)
             continue;
-        int found = newton(root, m, n, &e, floor_dist, accept, &s, &r, &t, g);
+        bilinear_start(net, m, n, rat, &e, &s, &r);
+        int found = newton(root, m, n, rat, &e, s, r, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
         if (found && wanted(ray, t, hit->t)) {
             hit->t = t;
@@ -332,24 +318,28 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         }
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
-        if ((found && one_to_one(net, m, n)) || (!found && separated(net, np, g, tol, half[1])) ||
+        if ((found && one_to_one(net, m, n, half[1])) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
             within <= accept || e.depth == MAX_DEPTH)
             continue;
         /* the four halves, nearest t first */
         bsi_net_halve(net, m, n, NC, BS_DIR_U, half[0], half[1]);
         pending kids[4];
-        for (int a = 0; a < 2; a++)
+        for (int a = 0; a < 2; a++) {
+            double *cn[2];
             for (int b = 0; b < 2; b++) {
                 pending *c = &kids[2 * a + b];
-                *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, 0.0,
-                               e.depth + 1, free_slot[--nfree]};
-                double *cn = slot + (size_t)c->slot * len;
-                bsi_net_halve(half[a], m, n, NC, BS_DIR_V, b ? NULL : cn, b ? cn : NULL);
-                c->tlo = INFINITY;
+                *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, INFINITY,
+                               e.depth + 1, nfree > 0 ? free_slot[--nfree] : unused++};
+                cn[b] = slot + (size_t)c->slot * len;
+            }
+            bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
+            for (int b = 0; b < 2; b++) {
+                pending *c = &kids[2 * a + b];
                 for (size_t q = 0; q < np; q++)
-                    c->tlo = lesser(c->tlo, cn[q * NC + 2] / cn[q * NC + 3]);
+                    c->tlo = lesser(c->tlo, WDIV(rat, cn[b][q * NC + 2], cn[b][q * NC + 3]));
                 c->tlo -= tol;
             }
+        }
         for (int a = 1; a < 4; a++) /* insertion sort, farthest first onto the stack */
             for (int b = a; b > 0 && kids[b].tlo > kids[b - 1].tlo; b--) {
                 pending x = kids[b];
@@ -359,4 +349,13 @@ void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scr
         for (int a = 0; a < 4; a++)
             stack[top++] = kids[a];
     }
+}
+
+void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
+                  bsi_ray_hit *hit)
+{
+    if (L->patches[L->leaves[k].patch]->rational)
+        search(L, k, ray, scratch, hit, 1);
+    else
+        search(L, k, ray, scratch, hit, 0);
 }
