@@ -182,17 +182,6 @@ bs_status bsi_parallel(size_t workers, size_t n, bsi_task fn, void *ctx);
 
 /* ---- Normals at single points for the layers above (lib/core/normal.c) ---- */
 
-/* Per-patch derivative scales for the zero tests of the normal rule (see docs/normals.md). */
-typedef struct bsi_nscale {
-    double lu, lv;   /* m D, n D: scales of |S_u| and |S_v| (their bounds for a polynomial patch) */
-    double noise;    /* 2 (m+n+1) eps max|P| rho: rounding scale of positions */
-    double rho;      /* wmax / wmin, 1 for polynomial patches */
-    double wmax;     /* largest weight, 1 for polynomial patches */
-    double fu, fv;   /* CLEAN times the rounding bound of S_u, S_v per unit of wmax / w(u,v) */
-    double zu, zv;   /* |S_u| <= zu, |S_v| <= zv count as zero anywhere (with wmax / w = rho) */
-} bsi_nscale;
-
-void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* bs_patch_eval_normal at one finite point of a 3-D patch, with sc from bsi_normal_scale(p) made
  * once by the caller: the same position and normal bits. */
 void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
