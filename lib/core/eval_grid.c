@@ -143,10 +143,10 @@ static void copy_out(const grid_call *gc, int o, size_t c, size_t idx0, const do
     const bs_fview *fviews = gc->fout[o];
     if (views != NULL)
         for (size_t b = 0; b < nb; b++)
-            *bsi_at(&views[c], idx0 + b) = src[b];
+            *bsi_at(&views[c], idx0 + b) = src[b]; // NOLINT(clang-analyzer-core.NullDereference): src is a row of scratch or of an output, never NULL
     if (fviews != NULL)
         for (size_t b = 0; b < nb; b++)
-            *bsi_fat(&fviews[c], idx0 + b) = (float)src[b];
+            *bsi_fat(&fviews[c], idx0 + b) = (float)src[b]; // NOLINT(clang-analyzer-core.NullDereference): as above
 }
 
 /* Doubles of coordinate c of output o to the caller (rounded to float for the float twin), when
@@ -260,7 +260,7 @@ static void fused_row(const grid_call *gc, grid_scratch *g, double t, const doub
 /* Coordinate c of output o (positions, S_u, S_v) of a cubic row, unrolled: per row the choice of
  * target and the copy-out then cost a few instructions each. */
 #define EACH_CUBIC_OUTPUT(o, c)                                                                    \
-    _Pragma("GCC unroll 3") for (int o = 0; o < 3; o++) _Pragma("GCC unroll 3") for (size_t c = 0; c < 3; c++)
+    _Pragma("GCC unroll 3") for (int o = 0; o < 3; o++) _Pragma("GCC unroll 3") for (size_t c = 0; c < 3; c++) // NOLINT(bugprone-macro-parentheses): o and c name the loop variables
 
 /* row_pass for cubic rows of polynomial 3-D patches asked for positions and/or first partials
  * (gc->cubic is off when a parameter is not finite). */
@@ -371,7 +371,7 @@ static void row_pass(const grid_call *gc, grid_scratch *g, double t, int badu, c
                 if (gc->wpos || rational || !first) /* then ps[c] was set above */
                     ps[c][b] = NAN; // NOLINT(clang-analyzer-core.NullDereference)
                 if (first)
-                    pu[c][b] = pv[c][b] = NAN;
+                    pu[c][b] = pv[c][b] = NAN; // NOLINT(clang-analyzer-core.NullDereference): set above when first
             }
             if (gc->normals) {
                 pn[0][b] = pn[1][b] = pn[2][b] = NAN;

@@ -60,7 +60,9 @@ BSI_HOT void bsi_contract_cubic(const bs_patch *p, const double *bu, const doubl
 #define VAL(x) (w0 * (x)[0] + w1 * (x)[1] + w2 * (x)[2] + w3 * (x)[3])
 #define DV(x) (3.0 * (v0 * (x)[0] + v1 * (x)[1] + v2 * (x)[2]))
 
-/* Both kernels for one output type T (double, or float: each double result converted once). */
+/* Both kernels for one output type T (double, or float: each double result converted once).
+ * ROWS and POS_NORMAL name the functions and T is a type: none can be in parentheses. */
+// NOLINTBEGIN(bugprone-macro-parentheses)
 #define CUBIC_KERNELS(ROWS, POS_NORMAL, T)                                                         \
     BSI_HOT void ROWS(size_t nb, const double *restrict vcol, const double *restrict q,           \
                       const double *restrict qu, const double *restrict qv, double m,              \
@@ -111,6 +113,7 @@ BSI_HOT void bsi_contract_cubic(const bs_patch *p, const double *bu, const doubl
         }                                                                                          \
         return nflag;                                                                              \
     }
+// NOLINTEND(bugprone-macro-parentheses)
 
 CUBIC_KERNELS(bsi_cubic_rows, bsi_cubic_pos_normal, double)
 CUBIC_KERNELS(bsi_cubic_rows_f32, bsi_cubic_pos_normal_f32, float)

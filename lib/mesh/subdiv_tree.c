@@ -277,7 +277,7 @@ bs_status bsi_subdiv_trees(subdiv *s)
         tr.nets = malloc((LEVEL_NETS * MAX_LEVELS + 3) * tr.netsz * sizeof(double));
         if (tr.nets == NULL)
             return BS_ERR_NO_MEMORY;
-        double *root = tr.nets + LEVEL_NETS * MAX_LEVELS * tr.netsz;
+        double *root = tr.nets + (size_t)LEVEL_NETS * MAX_LEVELS * tr.netsz;
         tr.pts = root + tr.netsz;
         tr.sq = tr.pts + tr.netsz;
         for (size_t k = 0; k < patch->nctrl; k++) {

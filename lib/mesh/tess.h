@@ -81,7 +81,7 @@ typedef struct tess {
 static inline size_t uf_find(size_t *parent, size_t x)
 {
     size_t r = x;
-    while (parent[r] != r)
+    while (parent[r] != r) // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): the callers start every set as itself
         r = parent[r];
     while (parent[x] != r) {
         size_t nx = parent[x];

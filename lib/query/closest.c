@@ -104,7 +104,7 @@ static double separable_bound(const search *s, const double x[4], const double g
 {
     double A = abc[0], B = abc[1], C = abc[2], lo[2], hi[2], g0[2], g1[2];
     double up = 1.0 + 4.0 * DBL_EPSILON, down = 1.0 - 4.0 * DBL_EPSILON;
-    for (int i = 0; i < 2; i++) {
+    for (size_t i = 0; i < 2; i++) {
         /* the ranges of d and of the gradient, widened by their rounding (an end at x* exact) */
         double width = x[2 * i + 1] - x[2 * i], at = (s->uv[i] - x[2 * i]) / width;
         lo[i] = s->uv[i] == x[2 * i] ? 0.0 : -(at + 8.0 * DBL_EPSILON);

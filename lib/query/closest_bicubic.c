@@ -92,7 +92,7 @@ BSI_HOT void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b)
             w->fco[k * 7 + l] = ratio;
             if (ratio < best) {
                 best = ratio;
-                arg = (size_t)(k * 7 + l);
+                arg = (size_t)k * 7 + (size_t)l;
             }
         }
     /* min (N_kl - err) is the smallest ratio minus err: the rounding of a difference is monotone */

@@ -118,7 +118,7 @@ void bsi_curv_partials(const bs_patch *p, const bsi_nscale *sc, size_t n, const 
         bsi_deriv_table(p, u[k], v[k], 2, 2, scratch, table);
         for (size_t j = 0; j < 5; j++)
             for (size_t c = 0; c < 3; c++)
-                d[(3 * j + c) * L + k] = table[(ab[j][0] * 3 + ab[j][1]) * 3 + c];
+                d[(3 * j + c) * L + k] = table[((size_t)ab[j][0] * 3 + ab[j][1]) * 3 + c];
     }
     /* The normal and its kind as bs_patch_eval_normal gives them (the sign convention). Every
      * view was made here from valid memory: the call cannot fail. */

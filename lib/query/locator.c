@@ -99,16 +99,17 @@ static bs_status build(bs_locator *L)
     size_t dim = L->dim, nets = 0, max_len = 0;
     for (size_t i = 0; i < L->npatch; i++) {
         size_t len = L->patches[i]->nctrl * (dim + 1);
-        nets += BSI_LOC_SPLIT * BSI_LOC_SPLIT * len;
+        nets += (size_t)BSI_LOC_SPLIT * BSI_LOC_SPLIT * len;
         max_len = len > max_len ? len : max_len;
         L->max_ctrl = L->patches[i]->nctrl > L->max_ctrl ? L->patches[i]->nctrl : L->max_ctrl;
     }
     L->nleaf = L->npatch * BSI_LOC_SPLIT * BSI_LOC_SPLIT;
     L->diag = surface_diagonal(L->patches, L->npatch, dim);
     L->leaves = malloc(L->nleaf * sizeof *L->leaves);
-    L->nets = malloc(nets * sizeof(double));
+    /* build() runs only for a surface with patches, each of one control point at least */
+    L->nets = malloc(nets * sizeof(double)); // NOLINT(clang-analyzer-optin.portability.UnixAPI): nets > 0
     double *leaf_box = malloc(L->nleaf * 2 * dim * sizeof(double));
-    double *work = malloc(4 * max_len * sizeof(double));
+    double *work = malloc(4 * max_len * sizeof(double)); // NOLINT(clang-analyzer-optin.portability.UnixAPI): max_len > 0
     bs_status st = BS_ERR_NO_MEMORY;
     if (L->leaves && L->nets && leaf_box && work) {
         size_t leaf = 0, net_at = 0;
@@ -139,7 +140,7 @@ bs_status bs_locator_create(const bs_surface *s, bs_locator **out)
     if (L == NULL)
         return BS_ERR_NO_MEMORY;
     L->dim = bs_surface_dim(s);
-    if (np > 0 && (L->patches = calloc(np, sizeof *L->patches)) == NULL) {
+    if (np > 0 && (L->patches = calloc(np, sizeof *L->patches)) == NULL) { // NOLINT(bugprone-sizeof-expression): an array of patch pointers
         free(L);
         return BS_ERR_NO_MEMORY;
     }

@@ -79,7 +79,7 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
         size_t base = q * cstep;
         for (size_t k = 0; k <= deg; k++)
             for (size_t c = 0; c < nc; c++)
-                b[k * nc + c] = in[k * step + c];
+                b[k * nc + c] = in[k * step + c]; // NOLINT(clang-analyzer-core.uninitialized.Assign): the caller's net is whole
         for (size_t c = 0; c < nc; c++) {
             if (lo)
                 lo[base + c] = b[c];

@@ -138,7 +138,7 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
                 order[1] = 0;
             }
             for (uint32_t q = 0; q < nd->count; q++)
-                if (inl[order[q]] && tl[order[q]] <= hit->t)
+                if (inl[order[q]] && tl[order[q]] <= hit->t) // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult,clang-analyzer-core.uninitialized.ArraySubscript): q < count <= BSI_LOC_LEAF_MAX, each set above
                     bsi_ray_leaf(L, nd->first + (uint32_t)order[q], ray, scratch, hit);
             continue;
         }

@@ -26,7 +26,7 @@
 
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
-    return (SLOTS + 3) * NC * max_ctrl;
+    return (size_t)(SLOTS + 3) * NC * max_ctrl;
 }
 
 /* The cone of the differences of the projected net along dir: its two extreme vectors lo, hi
@@ -82,7 +82,7 @@ static int cone(const double *net, size_t m, size_t n, int dir, double lo[2], do
  * for cone. */
 static int one_to_one(const double *net, size_t m, size_t n, double *work)
 {
-    double s[2][2], r[2][2];
+    double s[2][2] = {{0.0, 0.0}, {0.0, 0.0}}, r[2][2] = {{0.0, 0.0}, {0.0, 0.0}}; /* set by cone() */
     if (m == 0 || n == 0 || !cone(net, m, n, BS_DIR_U, s[0], s[1], work) ||
         !cone(net, m, n, BS_DIR_V, r[0], r[1], work))
         return 0;
