@@ -11,9 +11,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* min without the NaN rules of fmin, which keep it out of line */
-static inline double lesser(double a, double b) { return a < b ? a : b; }
-
 #define STACK 128 /* twice the depth of a median-split tree of up to 2^32 leaves, and more */
 
 /* The ray o + t d for t in range, in its frame; 0 (a NaN miss) if something is not finite or
@@ -69,14 +66,9 @@ static slab_ray slab_setup(const bsi_ray *ray)
     return r;
 }
 
-#if defined(__GNUC__) /* in line in the walk, which calls it at three places */
-#define WALK_INLINE static inline __attribute__((always_inline))
-#else
-#define WALK_INLINE static inline
-#endif
-
-/* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not. */
-WALK_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
+/* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not. In line in the
+ * walk, which calls it at three places. */
+BSI_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
 {
     if (r->flat) /* along a zero component: the origin must lie between the faces */
         for (int c = 0; c < 3; c++)

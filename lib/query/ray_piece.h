@@ -15,10 +15,6 @@
 
 #define NC 4 /* X1, X2, T, W */
 
-/* min and max without the NaN rules of fmin and fmax, which keep them out of line */
-static inline double lesser(double a, double b) { return a < b ? a : b; }
-static inline double greater(double a, double b) { return a > b ? a : b; }
-
 /* hypot(x, y) by one square root where the squares are safe (within an ulp or so of hypot) */
 static inline double norm2(double x, double y)
 {
@@ -28,11 +24,7 @@ static inline double norm2(double x, double y)
 
 /* Inlined into each of the two cases of the search, rational or not (rat), so that every test
  * on rat is settled when compiling. */
-#if defined(__GNUC__)
-#define SPECIALISE static inline __attribute__((always_inline))
-#else
-#define SPECIALISE static inline
-#endif
+#define SPECIALISE BSI_INLINE
 
 /* x / w, as the rational nets form it; a polynomial net's weights are exactly 1 (the halvings
  * keep them so), so there it is x itself, the same bits without the division */
