@@ -25,5 +25,6 @@
 #include "bezsurf/mesh.h"
 #include "bezsurf/bspline.h"
 #include "bezsurf/query.h"
+#include "bezsurf/model.h"
 
 #endif

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The layers of lib/ (docs/architecture.md), checked from the sources:
 
-  core <- ops <- surface <- bspline, continuity, mesh, query <- io
+  core <- ops <- surface <- bspline, continuity, mesh, query <- model <- io
 
 - every .c and .h of lib/ is in a layer's folder;
 - a quoted include names a header of the file's own folder, a lower layer's header
@@ -16,7 +16,7 @@ import re
 import sys
 
 RANK = {"core": 0, "ops": 1, "surface": 2, "bspline": 3, "continuity": 3, "mesh": 3, "query": 3,
-        "io": 4}
+        "model": 4, "io": 5}
 MAX_LINES = 500
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 

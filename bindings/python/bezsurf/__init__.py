@@ -31,7 +31,7 @@ from .query import NO_PATCH, ClosestPoints, Locator, RayHits
 from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
                       Surface, builtin_names)
 
-__version__ = "1.1.0"
+__version__ = "1.2.0"
 
 #: Largest degree per direction and largest dimension (BS_MAX_DEGREE, BS_MAX_DIM).
 MAX_DEGREE = 64

@@ -1,0 +1,310 @@
+/**
+ * @file
+ * libbezsurf models: the trimmed B-rep parts CAD files hold. Include <bezsurf.h> rather than this
+ * file.
+ *
+ * A model is a set of **faces**, each a piece of a surface bounded by **trim loops** (an outer loop
+ * first, then any number of inner loops: holes), joined along **edges** into **shells** (a closed
+ * shell bounds a solid). Every face's surface is stored as exact rational Bezier patches in one
+ * bs_surface (bs_model_surface()), so everything the library does for patches works on models.
+ * Planes, cylinders, cones, spheres, tori, surfaces of revolution and of linear extrusion are
+ * converted with no approximation (quadratic rational arcs of at most 90 degrees along angular
+ * directions); B-spline surfaces become their Bezier spans.
+ *
+ * A face keeps its **native parameters**, those of the file's surface (angles in radians along
+ * angular directions, lengths along rulings and plane axes, knot values for B-splines), so that the
+ * file's trim curves apply unchanged; bs_model_face_to_patch() maps them in closed form to a patch
+ * and its local (s,t). docs/models.md gives each surface's parametrisation.
+ *
+ * Models are immutable once made: any number of threads may use the same `const bs_model *`.
+ * The common rules of core.h apply: views, NULL meaning "not wanted", n = 0 a no-op, nothing
+ * written on failure.
+ */
+#ifndef BEZSURF_MODEL_H
+#define BEZSURF_MODEL_H
+
+#include "core.h"
+#include "surface.h"
+#include "io.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A trimmed B-rep model (opaque, immutable once made). @since 1.2 */
+typedef struct bs_model bs_model;
+
+/** @name Surface kinds of a face (bs_face_info.kind)
+ * @{ */
+#define BS_FACE_BEZIER     0 /**< Bezier patches of the library (bs_model_from_surface, OBJ bezier) */
+#define BS_FACE_BSPLINE    1 /**< B-spline or NURBS surface */
+#define BS_FACE_PLANE      2 /**< plane: o + u x + v y */
+#define BS_FACE_CYLINDER   3 /**< cylinder: o + r (cos u x + sin u y) + v z */
+#define BS_FACE_CONE       4 /**< cone: o + (r + v tan a)(cos u x + sin u y) + v z */
+#define BS_FACE_SPHERE     5 /**< sphere: o + r cos v (cos u x + sin u y) + r sin v z */
+#define BS_FACE_TORUS      6 /**< torus: o + (R + r cos v)(cos u x + sin u y) + r sin v z */
+#define BS_FACE_REVOLUTION 7 /**< a curve revolved about an axis */
+#define BS_FACE_EXTRUSION  8 /**< a curve swept along a vector */
+/** @} */
+
+/** @name Where a point lies with respect to a trimmed face (bs_model_classify)
+ * @{ */
+#define BS_TRIM_OUTSIDE 0 /**< outside the face (or outside its surface's domain) */
+#define BS_TRIM_INSIDE  1 /**< inside the face, farther than tol from its boundary */
+#define BS_TRIM_ON      2 /**< within tol (3-D distance) of the face's boundary */
+/** @} */
+
+/**
+ * What bs_model_face_info() tells about one face. The caller sets `size` to sizeof(bs_face_info)
+ * before the call: fields may be appended in later versions, and only the first `size` bytes are
+ * written. @since 1.2
+ */
+typedef struct bs_face_info {
+    size_t size;           /**< sizeof(bs_face_info), set by the caller */
+    int kind;              /**< BS_FACE_* */
+    int reversed;          /**< 1: the outward normal is opposite the surface normal S_u x S_v */
+    size_t shell;          /**< the face's shell, 0 .. bs_model_shell_count() - 1 */
+    size_t instance;       /**< assembly placement id (0 without assemblies) */
+    size_t first_patch;    /**< its patches in bs_model_surface(): first_patch .. +patch_count-1 */
+    size_t patch_count;    /**< number of those patches */
+    size_t loop_count;     /**< trim loops, the outer first; 0 = untrimmed */
+    double u0;             /**< native parameter box of the trimmed face: u from u0 ... */
+    double u1;             /**< ... to u1 */
+    double v0;             /**< v from v0 ... */
+    double v1;             /**< ... to v1 */
+} bs_face_info;
+
+/**
+ * @brief Read a STEP file (ISO 10303-21, AP203/AP214/AP242 geometry) held in memory.
+ * Reads the B-rep solids and shells of the file (docs/models.md lists the entities read and those
+ * refused). Lengths stay in the file's length unit; angles are converted to radians.
+ * @param[in]  text  the bytes; NULL only when len is 0 (a parse error: no data section).
+ * @param[in]  len   number of bytes, at most 256 MiB.
+ * @param[out] err   NULL, or receives the line, column and reason of the first error.
+ * @param[out] out   receives the new model (NULL on failure).
+ * @return BS_OK; BS_ERR_INVALID_ARG if out is NULL or text is NULL with len > 0; BS_ERR_PARSE for
+ *         malformed text or a file with no face (err says what was found); BS_ERR_UNSUPPORTED for
+ *         an entity the geometry needs that is not read (err names it and its line);
+ *         BS_ERR_SIZE past the documented caps; BS_ERR_NO_MEMORY.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_read_step(const char *text, size_t len, bs_parse_error *err, bs_model **out);
+
+/**
+ * @brief Read a STEP file (as bs_model_read_step() on the file's bytes; the file rules of
+ * bs_surface_read_bpt_file()).
+ * @param[in]  path  file name.
+ * @param[out] err   NULL, or receives the error position and reason.
+ * @param[out] out   receives the new model (NULL on failure).
+ * @return the statuses of bs_model_read_step(); BS_ERR_INVALID_ARG if path is NULL; BS_ERR_IO.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_read_step_file(const char *path, bs_parse_error *err, bs_model **out);
+
+/**
+ * @brief Read an IGES 5.3 file held in memory as a model: trimmed surfaces (144, 143), B-rep
+ * solids (186) and untrimmed B-spline surfaces (128), with the curves and surfaces
+ * docs/models.md lists.
+ * @param[in]  text  the bytes; NULL only when len is 0.
+ * @param[in]  len   number of bytes, at most 256 MiB.
+ * @param[out] err   NULL, or receives the line, column and reason of the first error.
+ * @param[out] out   receives the new model (NULL on failure).
+ * @return the statuses of bs_model_read_step().
+ * @since 1.2
+ */
+BS_API bs_status bs_model_read_iges(const char *text, size_t len, bs_parse_error *err, bs_model **out);
+
+/**
+ * @brief Read an IGES file as a model (as bs_model_read_iges() on the file's bytes).
+ * @param[in]  path  file name.
+ * @param[out] err   NULL, or receives the error position and reason.
+ * @param[out] out   receives the new model (NULL on failure).
+ * @return the statuses of bs_model_read_step_file().
+ * @since 1.2
+ */
+BS_API bs_status bs_model_read_iges_file(const char *path, bs_parse_error *err, bs_model **out);
+
+/**
+ * @brief Read OBJ free-form text held in memory as a model: each `surf` a face, trimmed by its
+ * `trim` and `hole` loops of `curv2` curves.
+ * @param[in]  text  the bytes; NULL only when len is 0.
+ * @param[in]  len   number of bytes, at most 256 MiB.
+ * @param[out] err   NULL, or receives the line, column and reason of the first error.
+ * @param[out] out   receives the new model (NULL on failure).
+ * @return the statuses of bs_model_read_step().
+ * @since 1.2
+ */
+BS_API bs_status bs_model_read_obj(const char *text, size_t len, bs_parse_error *err, bs_model **out);
+
+/**
+ * @brief Read an OBJ file as a model (as bs_model_read_obj() on the file's bytes).
+ * @param[in]  path  file name.
+ * @param[out] err   NULL, or receives the error position and reason.
+ * @param[out] out   receives the new model (NULL on failure).
+ * @return the statuses of bs_model_read_step_file().
+ * @since 1.2
+ */
+BS_API bs_status bs_model_read_obj_file(const char *path, bs_parse_error *err, bs_model **out);
+
+/**
+ * @brief A model of a surface's patches: each patch an untrimmed face of kind BS_FACE_BEZIER on
+ * native parameters (0,1)^2, shared sides joined as edges, one shell per connected set of patches
+ * (closed when no side is left open).
+ * @param[in]  s    a surface of 3-D patches (a copy is kept: s may be destroyed afterwards).
+ * @param[out] out  receives the new model (NULL on failure).
+ * @return BS_OK; BS_ERR_INVALID_ARG if s or out is NULL; BS_ERR_DIMENSION if the patches are not
+ *         3-D; BS_ERR_SIZE if s is empty; BS_ERR_NO_MEMORY.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_from_surface(const bs_surface *s, bs_model **out);
+
+/**
+ * @brief Release a model. NULL does nothing. The surface of bs_model_surface() goes with it.
+ * @param[in] m  the model, or NULL.
+ * @since 1.2
+ */
+BS_API void bs_model_destroy(bs_model *m);
+
+/**
+ * @brief Write a model as OBJ free-form text: a `surf` per patch of each face, its trim and hole
+ * loops as `curv2` curves, exact (shortest round-trip numbers) so that bs_model_read_obj() reads
+ * the same model back.
+ * @param[in]  m     the model.
+ * @param[out] buf   NULL (size query) or room for cap bytes; the text is NUL-terminated.
+ * @param[in]  cap   bytes of buf.
+ * @param[out] size  receives the bytes needed, the final NUL not counted.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or size is NULL; BS_ERR_SIZE if buf is not NULL and cap
+ *         is below *size + 1 (*size is still set, nothing written); BS_ERR_NO_MEMORY.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_write_obj(const bs_model *m, char *buf, size_t cap, size_t *size);
+
+/**
+ * @brief Write a model as an OBJ file (as bs_model_write_obj(); the file is replaced atomically).
+ * @param[in] m     the model.
+ * @param[in] path  file name.
+ * @return the statuses of bs_model_write_obj(); BS_ERR_INVALID_ARG if path is NULL; BS_ERR_IO.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_write_obj_file(const bs_model *m, const char *path);
+
+/**
+ * @brief Number of faces (0 for NULL).
+ * @param[in] m  the model.
+ * @return the count.
+ * @since 1.2
+ */
+BS_API size_t bs_model_face_count(const bs_model *m);
+
+/**
+ * @brief Number of edges: 3-D edges shared by faces, each counted once (0 for NULL).
+ * @param[in] m  the model.
+ * @return the count.
+ * @since 1.2
+ */
+BS_API size_t bs_model_edge_count(const bs_model *m);
+
+/**
+ * @brief Number of shells (0 for NULL).
+ * @param[in] m  the model.
+ * @return the count.
+ * @since 1.2
+ */
+BS_API size_t bs_model_shell_count(const bs_model *m);
+
+/**
+ * @brief Whether a shell is closed: every edge of its faces used by exactly two faces of the
+ * shell, so that it bounds a solid.
+ * @param[in] m      the model.
+ * @param[in] shell  shell id.
+ * @return 1 closed, 0 open, -1 for NULL or a shell id out of range.
+ * @since 1.2
+ */
+BS_API int bs_model_shell_closed(const bs_model *m, size_t shell);
+
+/**
+ * @brief Describe one face.
+ * @param[in]     m     the model.
+ * @param[in]     face  face id, below bs_model_face_count().
+ * @param[in,out] info  info->size set by the caller; the first info->size bytes are written.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or info is NULL or info->size is below the size of the
+ *         1.2 struct; BS_ERR_DOMAIN if face is out of range.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_face_info(const bs_model *m, size_t face, bs_face_info *info);
+
+/**
+ * @brief Every face's patches, as one surface owned by the model (valid until
+ * bs_model_destroy()). Face f's patches are given by bs_model_face_info().
+ * @param[in] m  the model.
+ * @return the surface, or NULL for NULL.
+ * @since 1.2
+ */
+BS_API const bs_surface *bs_model_surface(const bs_model *m);
+
+/**
+ * @brief Evaluate faces at native parameters: positions and outward unit normals (the face's
+ * `reversed` applied).
+ * A parameter outside the face's patches' domain (outside its parameter box, widened for periodic
+ * directions by whole periods) gives NaN in that point; NaN parameters give NaN.
+ * @param[in]  m      the model.
+ * @param[in]  n      number of points.
+ * @param[in]  faces  n face ids.
+ * @param[in]  u      n native u parameters.
+ * @param[in]  v      n native v parameters.
+ * @param[out] pos    NULL or 3 views of n: positions.
+ * @param[out] nrm    NULL or 3 views of n: outward unit normals (limit normals at poles).
+ * @param[out] kind   NULL or n bytes: BS_NORMAL_* of each normal.
+ * @return BS_OK; BS_ERR_INVALID_ARG for a NULL m, a NULL faces, u or v when n > 0, a misaligned
+ *         view or a face id out of range; BS_ERR_SIZE for a view shorter than n.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_face_eval(const bs_model *m, size_t n, const uint32_t *faces,
+                                    const bs_cview *u, const bs_cview *v, const bs_view *pos,
+                                    const bs_view *nrm, unsigned char *kind);
+
+/**
+ * @brief Map native face parameters to the patch holding them and the local (s,t) there, in
+ * closed form (linear along straight directions and knot spans, the tangent-half-angle map of the
+ * quadratic rational arc along angular ones).
+ * Parameters outside a face's patches give patch UINT32_MAX and (s,t) NaN.
+ * @param[in]  m      the model.
+ * @param[in]  n      number of points.
+ * @param[in]  faces  n face ids.
+ * @param[in]  u      n native u parameters.
+ * @param[in]  v      n native v parameters.
+ * @param[out] patch  NULL or n patch ids of bs_model_surface().
+ * @param[out] st     NULL or 2 views of n: local (s,t) on that patch.
+ * @return the statuses of bs_model_face_eval().
+ * @since 1.2
+ */
+BS_API bs_status bs_model_face_to_patch(const bs_model *m, size_t n, const uint32_t *faces,
+                                        const bs_cview *u, const bs_cview *v, uint32_t *patch,
+                                        const bs_view *st);
+
+/**
+ * @brief Classify native face parameters against the face's trim loops: inside, outside, or on
+ * the boundary within tol.
+ * Exact for points farther than tol (3-D distance) from the boundary: a winding number over the
+ * exact trim curves, not over a polygon of them. Points of periodic directions are taken modulo
+ * the period; points outside the face's surface domain are OUTSIDE; NaN parameters are OUTSIDE.
+ * @param[in]  m      the model.
+ * @param[in]  n      number of points.
+ * @param[in]  faces  n face ids.
+ * @param[in]  u      n native u parameters.
+ * @param[in]  v      n native v parameters.
+ * @param[in]  tol    3-D distance, finite and >= 0.
+ * @param[out] where  n bytes: BS_TRIM_*.
+ * @return the statuses of bs_model_face_eval(); BS_ERR_INVALID_ARG if where is NULL (n > 0);
+ *         BS_ERR_DOMAIN if tol is negative or not finite.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *faces,
+                                   const bs_cview *u, const bs_cview *v, double tol,
+                                   unsigned char *where);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,151 @@
+/*
+ * Native face parameters -> (patch, s, t) in closed form, and what is evaluated through that map:
+ * bs_model_face_to_patch, bs_model_face_eval (outward normals) and bs_model_classify.
+ */
+#include "model/internal.h"
+
+#include <math.h>
+#include <string.h>
+
+double bsi_wrap(double u, double lo, double period)
+{
+    if (!(period > 0.0) || !isfinite(u))
+        return u;
+    double k = floor((u - lo) / period);
+    double w = u - k * period;
+    return w < lo ? lo : w;
+}
+
+/* x brought into [lo, hi] by whole periods when it lies outside and a shift lands inside. */
+static double into_box(double x, double lo, double hi, double period)
+{
+    if (!(period > 0.0) || (x >= lo && x <= hi) || !isfinite(x))
+        return x;
+    double k = round((0.5 * (lo + hi) - x) / period);
+    double shifted = x + k * period;
+    return shifted >= lo && shifted <= hi ? shifted : x;
+}
+
+int bsi_face_locate(const bs_model *m, size_t f, double u, double v, uint32_t *patch, double *st)
+{
+    const bsi_face *face = &m->faces[f];
+    u = into_box(u, face->box[0], face->box[1], face->period[0]);
+    v = into_box(v, face->box[2], face->box[3], face->period[1]);
+    if (face->swap) {
+        double t = u;
+        u = v;
+        v = t;
+    }
+    size_t i, j;
+    double s, t;
+    if (!bsi_axis_locate(&face->au, u, &i, &s) || !bsi_axis_locate(&face->av, v, &j, &t))
+        return 0;
+    *patch = (uint32_t)(face->first_patch + i * face->av.n + j);
+    st[0] = s;
+    st[1] = t;
+    return 1;
+}
+
+int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p)
+{
+    uint32_t patch;
+    double st[2];
+    if (!bsi_face_locate(m, f, u, v, &patch, st))
+        return 0;
+    bs_cview cu = {&st[0], 1, 0}, cv = {&st[1], 1, 0};
+    bs_view pos[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
+    return bs_patch_eval(bs_surface_get(m->surface, patch), 1, &cu, &cv, pos, NULL, NULL) == BS_OK;
+}
+
+/* The argument rules shared by the entry points; on success every face id is valid. */
+static bs_status check_args(const bs_model *m, size_t n, const uint32_t *faces, const bs_cview *u,
+                            const bs_cview *v, const bs_view *a, size_t ka, const bs_view *b, size_t kb)
+{
+    if (n == 0)
+        return m == NULL ? BS_ERR_INVALID_ARG : BS_OK;
+    if (m == NULL || faces == NULL || u == NULL || v == NULL)
+        return BS_ERR_INVALID_ARG;
+    bs_status st;
+    if ((st = bsi_check_cview(u, n)) != BS_OK || (st = bsi_check_cview(v, n)) != BS_OK)
+        return st;
+    if ((a && (st = bsi_check_views(a, ka, n)) != BS_OK) || (b && (st = bsi_check_views(b, kb, n)) != BS_OK))
+        return st;
+    for (size_t k = 0; k < n; k++)
+        if (faces[k] >= m->nface)
+            return BS_ERR_INVALID_ARG;
+    return BS_OK;
+}
+
+bs_status bs_model_face_to_patch(const bs_model *m, size_t n, const uint32_t *faces,
+                                 const bs_cview *u, const bs_cview *v, uint32_t *patch,
+                                 const bs_view *st)
+{
+    bs_status status = check_args(m, n, faces, u, v, st, 2, NULL, 0);
+    if (status != BS_OK)
+        return status;
+    for (size_t k = 0; k < n; k++) {
+        uint32_t id = UINT32_MAX;
+        double local[2] = {NAN, NAN};
+        if (!bsi_face_locate(m, faces[k], bsi_cget(u, k), bsi_cget(v, k), &id, local)) {
+            id = UINT32_MAX;
+            local[0] = local[1] = NAN;
+        }
+        if (patch != NULL)
+            patch[k] = id;
+        if (st != NULL) {
+            *bsi_at(&st[0], k) = local[0];
+            *bsi_at(&st[1], k) = local[1];
+        }
+    }
+    return BS_OK;
+}
+
+bs_status bs_model_face_eval(const bs_model *m, size_t n, const uint32_t *faces, const bs_cview *u,
+                             const bs_cview *v, const bs_view *pos, const bs_view *nrm,
+                             unsigned char *kind)
+{
+    bs_status status = check_args(m, n, faces, u, v, pos, 3, nrm, 3);
+    if (status != BS_OK)
+        return status;
+    for (size_t k = 0; k < n; k++) {
+        uint32_t id;
+        double st[2], p[3] = {NAN, NAN, NAN}, q[3] = {NAN, NAN, NAN};
+        unsigned char nk = BS_NORMAL_UNDEFINED;
+        if (bsi_face_locate(m, faces[k], bsi_cget(u, k), bsi_cget(v, k), &id, st)) {
+            bs_cview cu = {&st[0], 1, 0}, cv = {&st[1], 1, 0};
+            bs_view pv[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
+            bs_view nv[3] = {{&q[0], 1, 0}, {&q[1], 1, 0}, {&q[2], 1, 0}};
+            (void)bs_patch_eval_normal(bs_surface_get(m->surface, id), 1, &cu, &cv, pv, nv, &nk);
+            if (m->faces[faces[k]].reversed != m->faces[faces[k]].swap)
+                for (int c = 0; c < 3; c++)
+                    q[c] = -q[c];
+        }
+        for (int c = 0; c < 3; c++) {
+            if (pos != NULL)
+                *bsi_at(&pos[c], k) = p[c];
+            if (nrm != NULL)
+                *bsi_at(&nrm[c], k) = q[c] == 0.0 ? 0.0 : q[c];
+        }
+        if (kind != NULL)
+            kind[k] = nk;
+    }
+    return BS_OK;
+}
+
+bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *faces, const bs_cview *u,
+                            const bs_cview *v, double tol, unsigned char *where)
+{
+    bs_status status = check_args(m, n, faces, u, v, NULL, 0, NULL, 0);
+    if (status != BS_OK)
+        return status;
+    if (n > 0 && where == NULL)
+        return BS_ERR_INVALID_ARG;
+    if (!(isfinite(tol) && tol >= 0.0))
+        return BS_ERR_DOMAIN;
+    for (size_t k = 0; k < n; k++) {
+        double uk = bsi_cget(u, k), vk = bsi_cget(v, k);
+        where[k] = (unsigned char)(isnan(uk) || isnan(vk) ? BS_TRIM_OUTSIDE
+                                                          : bsi_face_classify(m, faces[k], uk, vk, tol));
+    }
+    return BS_OK;
+}
