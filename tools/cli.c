@@ -58,9 +58,9 @@ int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, in
     }
     if (strcmp(a, "--from") == 0) {
         if (*i + 1 >= argc)
-            return cli_usage_error(cmd, "--from needs a format (bpt, obj, iges)", NULL);
+            return cli_usage_error(cmd, "--from needs a format (bpt, obj, iges, step)", NULL);
         if (cli_format_named(argv[*i + 1]) == NULL)
-            return cli_usage_error(cmd, "unknown input format (bpt, obj, iges)", argv[*i + 1]);
+            return cli_usage_error(cmd, "unknown input format (bpt, obj, iges, step)", argv[*i + 1]);
         in->format = argv[++*i];
         return CLI_NEXT;
     }

@@ -1,14 +1,48 @@
-/* bezsurf info: what a surface is made of. */
+/* bezsurf info: what a surface is made of, and for a model (STEP, IGES, OBJ) its faces, edges and
+ * shells. */
 #include "cmds.h"
 
 #include <stdio.h>
 #include <string.h>
 
 static const char usage[] =
-    "usage: bezsurf info [--builtin NAME] [--tol T] [FILE]\n"
+    "usage: bezsurf info [--builtin NAME] [--from FORMAT] [--tol T] [FILE]\n"
     "Print the number of patches, their degrees, the bounds of the control points (which\n"
     "contain the surface) and the numbers of shared and open edges (sides matched when their\n"
-    "control points agree within T per coordinate, default 1e-9).\n";
+    "control points agree within T per coordinate, default 1e-9). For a model (a STEP, IGES or\n"
+    "OBJ file), also its faces by surface kind, its edges and its shells, open or closed.\n";
+
+static const char *const kind_names[] = {"bezier", "bspline", "plane", "cylinder", "cone",
+                                         "sphere", "torus", "revolution", "extrusion"};
+
+/* The model lines: faces by kind, trimmed faces, edges, shells open and closed, instances. */
+static void print_model(const bs_model *m)
+{
+    size_t by_kind[sizeof kind_names / sizeof kind_names[0]] = {0}, trimmed = 0, instances = 0;
+    size_t nf = bs_model_face_count(m), ns = bs_model_shell_count(m), closed = 0;
+    for (size_t f = 0; f < nf; f++) {
+        bs_face_info fi;
+        fi.size = sizeof fi;
+        if (bs_model_face_info(m, f, &fi) != BS_OK)
+            continue;
+        if (fi.kind >= 0 && (size_t)fi.kind < sizeof by_kind / sizeof by_kind[0])
+            by_kind[fi.kind]++;
+        trimmed += fi.loop_count > 0;
+        instances = fi.instance + 1 > instances ? fi.instance + 1 : instances;
+    }
+    printf("faces: %zu (", nf);
+    const char *sep = "";
+    for (size_t k = 0; k < sizeof by_kind / sizeof by_kind[0]; k++)
+        if (by_kind[k]) {
+            printf("%s%s %zu", sep, kind_names[k], by_kind[k]);
+            sep = ", ";
+        }
+    printf("), %zu trimmed\n", trimmed);
+    for (size_t sh = 0; sh < ns; sh++)
+        closed += bs_model_shell_closed(m, sh) == 1;
+    printf("model edges: %zu\nshells: %zu (%zu closed, %zu open)\ninstances: %zu\n",
+           bs_model_edge_count(m), ns, closed, ns - closed, instances);
+}
 
 int cmd_info(int argc, char **argv)
 {
@@ -29,9 +63,17 @@ int cmd_info(int argc, char **argv)
         }
     }
     bs_surface *s;
-    int rc = cli_load(cmd, &in, &s);
+    bs_model *model = NULL;
+    const cli_format *fmt = NULL;
+    if (in.path != NULL && strcmp(in.path, "-") != 0)
+        fmt = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
+    int rc = fmt && fmt->read_model_file ? cli_load_model(cmd, &in, &model) : cli_load(cmd, &in, &s);
     if (rc != CLI_OK)
         return rc;
+    if (model != NULL && bs_surface_clone(bs_model_surface(model), &s) != BS_OK) {
+        bs_model_destroy(model);
+        return cli_fail(cmd, CLI_INTERNAL, "out of memory");
+    }
     size_t np = bs_surface_count(s), dim = bs_surface_dim(s), nrat = 0;
     static size_t hist[BS_MAX_DEGREE + 1][BS_MAX_DEGREE + 1];
     memset(hist, 0, sizeof hist);
@@ -73,6 +115,9 @@ int cmd_info(int argc, char **argv)
     bs_status st = bs_surface_continuity(s, tol, 1, NULL, 0, &ne, NULL, 0, &no);
     if (st == BS_OK)
         printf("shared edges: %zu\nopen edges: %zu\n", ne, no);
+    if (model != NULL)
+        print_model(model);
+    bs_model_destroy(model);
     bs_surface_destroy(s);
     if (st != BS_OK)
         return cli_fail(cmd, CLI_INTERNAL, "edges: %s", bs_status_string(st));

@@ -31,12 +31,16 @@ int cmd_closest(int argc, char **argv);
 
 /* ---- surface file formats (tools/formats.c) ---- */
 typedef struct cli_format {
-    const char *name; /* bpt, obj, iges */
+    const char *name; /* bpt, obj, iges, step */
     const char *exts; /* the file extensions that select it, space-separated */
     bs_status (*read)(const char *text, size_t len, bs_parse_error *err, bs_surface **out);
     bs_status (*read_file)(const char *path, bs_parse_error *err, bs_surface **out);
     bs_status (*write_file)(const bs_surface *s, const char *path); /* NULL: read only */
+    /* the model readers (NULL for .bpt: its models are made by bs_model_from_surface) */
+    bs_status (*read_model)(const char *text, size_t len, bs_parse_error *err, bs_model **out);
+    bs_status (*read_model_file)(const char *path, bs_parse_error *err, bs_model **out);
 } cli_format;
+
 /* The format of this name (igs is iges); NULL if none. */
 const cli_format *cli_format_named(const char *name);
 /* The format a file's extension selects (case ignored); NULL if none. */
@@ -69,8 +73,11 @@ int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, in
 /* Default output name: the input file's name without directory and extension, or the built-in's
  * name ("surface" for standard input), followed by ext. */
 void cli_default_output(const cli_input *in, const char *ext, char *out, size_t cap);
-/* Load the input; on failure print one line to stderr and return CLI_INPUT or CLI_INTERNAL. */
+/* Load the input; on failure print one line to stderr and return CLI_INPUT or CLI_INTERNAL. A
+ * STEP or IGES file is read as a model and its faces' patches are the surface (untrimmed). */
 int cli_load(const char *cmd, const cli_input *in, bs_surface **out);
+/* Load the input as a model (a .bpt file or built-in: bs_model_from_surface); as cli_load. */
+int cli_load_model(const char *cmd, const cli_input *in, bs_model **out);
 /* Human-readable name of the input, for reports. */
 const char *cli_input_name(const cli_input *in);
 /* Parse a finite number / a non-negative integer; 1 on success. */

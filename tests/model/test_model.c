@@ -1,0 +1,197 @@
+/* Models of surfaces (bs_model_from_surface): faces, edges and shells from the surface's
+ * topology; face evaluation and the native map against the patch evaluators; the argument rules
+ * of the model accessors and evaluators. */
+#include "harness.h"
+
+#include <bezsurf.h>
+#include <math.h>
+#include <string.h>
+
+/* A unit cube of six bilinear patches, each with its normal S_u x S_v pointing out; `skip` leaves
+ * one face out (6: none). */
+static bs_surface *cube(int skip)
+{
+    static const double corners[6][4][3] = {
+        {{0, 0, 0}, {0, 1, 0}, {1, 0, 0}, {1, 1, 0}}, /* z = 0, normal -z */
+        {{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}}, /* z = 1, +z */
+        {{0, 0, 0}, {1, 0, 0}, {0, 0, 1}, {1, 0, 1}}, /* y = 0, -y */
+        {{0, 1, 0}, {0, 1, 1}, {1, 1, 0}, {1, 1, 1}}, /* y = 1, +y */
+        {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {0, 1, 1}}, /* x = 0, -x */
+        {{1, 0, 0}, {1, 1, 0}, {1, 0, 1}, {1, 1, 1}}, /* x = 1, +x */
+    };
+    bs_surface *s = NULL;
+    if (bs_surface_create(&s) != BS_OK)
+        return NULL;
+    for (int f = 0; f < 6; f++) {
+        if (f == skip)
+            continue;
+        bs_patch *p = NULL;
+        if (bs_patch_create(1, 1, 3, &corners[f][0][0], NULL, &p) != BS_OK ||
+            bs_surface_add(s, p, NULL) != BS_OK) {
+            bs_patch_destroy(p);
+            bs_surface_destroy(s);
+            return NULL;
+        }
+        bs_patch_destroy(p);
+    }
+    return s;
+}
+
+static void test_cube(void)
+{
+    bs_surface *s = cube(6);
+    bs_model *m = NULL;
+    CHECK_STATUS(bs_model_from_surface(s, &m), BS_OK);
+    bs_surface_destroy(s); /* the model keeps its own copy */
+    CHECK(bs_model_face_count(m) == 6);
+    CHECK(bs_model_edge_count(m) == 12);
+    CHECK(bs_model_shell_count(m) == 1);
+    CHECK(bs_model_shell_closed(m, 0) == 1);
+    CHECK(bs_model_shell_closed(m, 1) == -1);
+    CHECK(bs_surface_count(bs_model_surface(m)) == 6);
+    bs_face_info fi;
+    fi.size = sizeof fi;
+    CHECK_STATUS(bs_model_face_info(m, 5, &fi), BS_OK);
+    CHECK(fi.kind == BS_FACE_BEZIER && fi.reversed == 0 && fi.shell == 0 && fi.instance == 0);
+    CHECK(fi.first_patch == 5 && fi.patch_count == 1 && fi.loop_count == 1);
+    CHECK(fi.u0 == 0.0 && fi.u1 == 1.0 && fi.v0 == 0.0 && fi.v1 == 1.0);
+    bs_model_destroy(m);
+
+    /* one face missing: the four edges around the hole are used once, the shell is open */
+    s = cube(2);
+    CHECK_STATUS(bs_model_from_surface(s, &m), BS_OK);
+    bs_surface_destroy(s);
+    CHECK(bs_model_face_count(m) == 5 && bs_model_edge_count(m) == 12);
+    CHECK(bs_model_shell_count(m) == 1 && bs_model_shell_closed(m, 0) == 0);
+    bs_model_destroy(m);
+}
+
+/* The tea set's lids and bottoms have collapsed sides (poles): no edge there, and the teapot's
+ * body, lid, spout and handle are separate sets of patches. */
+static void test_teapot(void)
+{
+    bs_surface *s = NULL;
+    bs_model *m = NULL;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    CHECK_STATUS(bs_model_from_surface(s, &m), BS_OK);
+    CHECK(bs_model_face_count(m) == bs_surface_count(s));
+    size_t ns = bs_model_shell_count(m);
+    CHECKF(ns >= 4 && ns <= 6, "%zu shells", ns);
+    CHECK(bs_model_edge_count(m) > 0 && bs_model_edge_count(m) < 4 * bs_surface_count(s));
+
+    /* face evaluation through the native map is the patch's evaluation, bit for bit */
+    double u[5] = {0.0, 0.25, 0.5, 0.875, 1.0}, v[5] = {0.5, 0.0, 0.3, 1.0, 0.75};
+    uint32_t faces[5] = {0, 7, 12, 20, 31};
+    double px[5], py[5], pz[5], nx[5], ny[5], nz[5];
+    bs_view pos[3] = {{px, 5, 0}, {py, 5, 0}, {pz, 5, 0}}, nrm[3] = {{nx, 5, 0}, {ny, 5, 0}, {nz, 5, 0}};
+    bs_cview cu = {u, 5, 0}, cv = {v, 5, 0};
+    unsigned char kind[5];
+    CHECK_STATUS(bs_model_face_eval(m, 5, faces, &cu, &cv, pos, nrm, kind), BS_OK);
+    for (int k = 0; k < 5; k++) {
+        double q[3], n[3];
+        unsigned char nk;
+        bs_cview one_u = {&u[k], 1, 0}, one_v = {&v[k], 1, 0};
+        bs_view qv[3] = {{&q[0], 1, 0}, {&q[1], 1, 0}, {&q[2], 1, 0}}, nv[3] = {{&n[0], 1, 0}, {&n[1], 1, 0}, {&n[2], 1, 0}};
+        CHECK_STATUS(bs_patch_eval_normal(bs_surface_get(s, faces[k]), 1, &one_u, &one_v, qv, nv, &nk), BS_OK);
+        CHECK(q[0] == px[k] && q[1] == py[k] && q[2] == pz[k]);
+        CHECK(n[0] == nx[k] && n[1] == ny[k] && n[2] == nz[k] && nk == kind[k]);
+    }
+    uint32_t patch[5];
+    double s_[5], t_[5];
+    bs_view st[2] = {{s_, 5, 0}, {t_, 5, 0}};
+    CHECK_STATUS(bs_model_face_to_patch(m, 5, faces, &cu, &cv, patch, st), BS_OK);
+    for (int k = 0; k < 5; k++)
+        CHECK(patch[k] == faces[k] && s_[k] == u[k] && t_[k] == v[k]);
+
+    /* outside the face's (0,1)^2 and NaN: no patch, NaN */
+    double bad_u[2] = {1.5, NAN}, bad_v[2] = {0.5, 0.5};
+    bs_cview bu = {bad_u, 2, 0}, bv = {bad_v, 2, 0};
+    CHECK_STATUS(bs_model_face_to_patch(m, 2, faces, &bu, &bv, patch, st), BS_OK);
+    CHECK(patch[0] == UINT32_MAX && patch[1] == UINT32_MAX && isnan(s_[0]) && isnan(t_[1]));
+    CHECK_STATUS(bs_model_face_eval(m, 2, faces, &bu, &bv, pos, nrm, kind), BS_OK);
+    CHECK(isnan(px[0]) && isnan(nz[1]) && kind[0] == BS_NORMAL_UNDEFINED);
+    bs_model_destroy(m);
+    bs_surface_destroy(s);
+}
+
+static void test_errors(void)
+{
+    bs_model *m = (bs_model *)&m;
+    CHECK_STATUS(bs_model_from_surface(NULL, &m), BS_ERR_INVALID_ARG);
+    CHECK(m == NULL);
+    bs_surface *s = NULL;
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
+    CHECK_STATUS(bs_model_from_surface(s, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_from_surface(s, &m), BS_ERR_SIZE);
+    double net2[8] = {0, 0, 0, 1, 1, 0, 1, 1};
+    bs_patch *p2 = NULL;
+    CHECK_STATUS(bs_patch_create(1, 1, 2, net2, NULL, &p2), BS_OK);
+    CHECK_STATUS(bs_surface_add(s, p2, NULL), BS_OK);
+    CHECK_STATUS(bs_model_from_surface(s, &m), BS_ERR_DIMENSION);
+    CHECK(m == NULL);
+    bs_patch_destroy(p2);
+    bs_surface_destroy(s);
+
+    bs_model_destroy(NULL);
+    CHECK(bs_model_face_count(NULL) == 0 && bs_model_edge_count(NULL) == 0);
+    CHECK(bs_model_shell_count(NULL) == 0 && bs_model_shell_closed(NULL, 0) == -1);
+    CHECK(bs_model_surface(NULL) == NULL);
+
+    s = cube(6);
+    CHECK_STATUS(bs_model_from_surface(s, &m), BS_OK);
+    bs_surface_destroy(s);
+    bs_face_info fi;
+    fi.size = sizeof fi;
+    CHECK_STATUS(bs_model_face_info(NULL, 0, &fi), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_info(m, 0, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_info(m, 6, &fi), BS_ERR_DOMAIN);
+    fi.size = sizeof fi - 1;
+    CHECK_STATUS(bs_model_face_info(m, 0, &fi), BS_ERR_INVALID_ARG);
+    /* a caller built against a later, longer struct: only the 1.2 fields are written */
+    unsigned char longer[sizeof(bs_face_info) + 16];
+    memset(longer, 0xAB, sizeof longer);
+    bs_face_info *li = (bs_face_info *)(void *)longer;
+    li->size = sizeof longer;
+    CHECK_STATUS(bs_model_face_info(m, 0, li), BS_OK);
+    CHECK(longer[sizeof(bs_face_info)] == 0xAB && longer[sizeof longer - 1] == 0xAB);
+
+    double u = 0.5, v = 0.5, out[3];
+    uint32_t face = 0, bad = 6;
+    unsigned char where;
+    bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0}, short_v = {&v, 0, 0};
+    bs_view pos[3] = {{&out[0], 1, 0}, {&out[1], 1, 0}, {&out[2], 1, 0}};
+    bs_view short_pos[3] = {{&out[0], 1, 0}, {&out[1], 0, 0}, {&out[2], 1, 0}};
+    bs_view odd[3] = {{&out[0], 1, 3}, {&out[1], 1, 0}, {&out[2], 1, 0}};
+    CHECK_STATUS(bs_model_face_eval(NULL, 1, &face, &cu, &cv, pos, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_eval(m, 1, NULL, &cu, &cv, pos, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &face, NULL, &cv, pos, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, NULL, pos, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &bad, &cu, &cv, pos, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, &short_v, pos, NULL, NULL), BS_ERR_SIZE);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, &cv, short_pos, NULL, NULL), BS_ERR_SIZE);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, &cv, NULL, short_pos, NULL), BS_ERR_SIZE);
+    CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, &cv, odd, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_eval(m, 0, NULL, NULL, NULL, NULL, NULL, NULL), BS_OK);
+    CHECK_STATUS(bs_model_face_eval(NULL, 0, NULL, NULL, NULL, NULL, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_to_patch(m, 1, &bad, &cu, &cv, NULL, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_face_to_patch(m, 1, &face, &cu, &cv, NULL, short_pos), BS_ERR_SIZE);
+    CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, 1e-9, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, -1.0, &where), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, NAN, &where), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, INFINITY, &where), BS_ERR_DOMAIN);
+    CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, 1e-9, &where), BS_OK);
+    CHECK(where == BS_TRIM_INSIDE);
+    double nan_u = NAN;
+    bs_cview cn = {&nan_u, 1, 0};
+    CHECK_STATUS(bs_model_classify(m, 1, &face, &cn, &cv, 1e-9, &where), BS_OK);
+    CHECK(where == BS_TRIM_OUTSIDE);
+    bs_model_destroy(m);
+}
+
+int main(void)
+{
+    test_cube();
+    test_teapot();
+    test_errors();
+    return bs_test_exit("test_model");
+}
