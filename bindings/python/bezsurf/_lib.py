@@ -97,6 +97,15 @@ class _Status:
 
 STATUS = _Status()
 
+class CFaceInfo(ctypes.Structure):
+    """``bs_face_info``: one face of a model (since 1.2); ``size`` is set before the call."""
+
+    _fields_ = [("size", c_size_t), ("kind", c_int), ("reversed", c_int), ("shell", c_size_t),
+                ("instance", c_size_t), ("first_patch", c_size_t), ("patch_count", c_size_t),
+                ("loop_count", c_size_t), ("u0", c_double), ("u1", c_double), ("v0", c_double),
+                ("v1", c_double)]
+
+
 # Handles are opaque pointers; wrapper objects pass themselves through ``_as_parameter_``.
 HANDLE = c_void_p
 HANDLE_OUT = POINTER(c_void_p)
@@ -218,6 +227,26 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_surface_read_iges_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
     ("bs_surface_create_builtin", (c_char_p, HANDLE_OUT), STATUS),
     ("bs_builtin_name", (c_size_t,), c_char_p),
+    # model.h: trimmed models (since 1.2)
+    ("bs_model_read_step", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_model_read_step_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_model_read_iges", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_model_read_iges_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_model_read_obj", (c_char_p, c_size_t, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_model_read_obj_file", (c_char_p, PARSE_ERROR, HANDLE_OUT), STATUS),
+    ("bs_model_from_surface", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_model_destroy", (HANDLE,), None),
+    ("bs_model_write_obj", (HANDLE, c_void_p, c_size_t, SIZE_OUT), STATUS),
+    ("bs_model_write_obj_file", (HANDLE, c_char_p), STATUS),
+    ("bs_model_face_count", (HANDLE,), c_size_t),
+    ("bs_model_edge_count", (HANDLE,), c_size_t),
+    ("bs_model_shell_count", (HANDLE,), c_size_t),
+    ("bs_model_shell_closed", (HANDLE, c_size_t), c_int),
+    ("bs_model_face_info", (HANDLE, c_size_t, POINTER(CFaceInfo)), STATUS),
+    ("bs_model_surface", (HANDLE,), c_void_p),
+    ("bs_model_face_eval", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
+    ("bs_model_face_to_patch", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, IDS, VIEWS), STATUS),
+    ("bs_model_classify", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, c_double, BYTES), STATUS),
 )
 
 #: C functions of the library deliberately left without a binding, with the reason.
@@ -344,5 +373,5 @@ def load() -> Library:
 
 LIB = load()
 
-__all__ = ["ABI_MAJOR", "SONAME", "View", "FView", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "CTessOptions", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
+__all__ = ["ABI_MAJOR", "SONAME", "View", "FView", "CView", "CCurve", "CParseError", "CEdgeContinuity", "COpenEdge", "CTessOptions", "CFaceInfo", "FUNCTIONS", "NOT_BOUND", "Library", "LIB",
            "error_for", "c_double", "c_ubyte", "c_uint32"]
