@@ -421,6 +421,19 @@ static bs_status op_locator_closest(void)
     return bs_locator_closest_point(LOC, 4, q, NULL, uv, &dist, NULL);
 }
 
+/* Models: the teapot's model (faces, trims, edges, shells), and the CAD readers on small parts. */
+static bs_status op_model_from_surface(void)
+{
+    bs_model *m = (bs_model *)(void *)HSENT;
+    bs_status st = bs_model_from_surface(TEAPOT, &m);
+    if (st != BS_OK)
+        CHECK(m == NULL);
+    else
+        CHECK(bs_model_face_count(m) == 32);
+    bs_model_destroy(m == (bs_model *)(void *)HSENT ? NULL : m);
+    return st;
+}
+
 typedef struct op {
     const char *name;
     op_fn fn;
@@ -461,6 +474,7 @@ static const op ops[] = {
     {"bs_locator_create", op_locator_create, 0},
     {"bs_locator_intersect", op_locator_intersect, 1},
     {"bs_locator_closest_point", op_locator_closest, 1},
+    {"bs_model_from_surface", op_model_from_surface, 0},
 };
 
 int main(void)
