@@ -83,7 +83,7 @@ static int handles_ok(void)
 }
 
 /* The matrix: distinct functions and classes seen, and cases run. */
-static const char *fn_seen[128], *cls_seen[128];
+static const char *fn_seen[256], *cls_seen[256];
 static int n_fn, n_cls, n_cases;
 
 static void note(const char **seen, int *count, const char *name)
@@ -91,7 +91,7 @@ static void note(const char **seen, int *count, const char *name)
     for (int k = 0; k < *count; k++)
         if (strcmp(seen[k], name) == 0)
             return;
-    if (*count < 128)
+    if (*count < 256)
         seen[(*count)++] = name;
 }
 
@@ -826,6 +826,80 @@ static void test_hostile_free_form(void)
                 good);
 }
 
+/* Models: the readers' argument rules, and the evaluators of a model against every bad view. */
+typedef bs_status (*model_text_reader)(const char *, size_t, bs_parse_error *, bs_model **);
+typedef bs_status (*model_file_reader)(const char *, bs_parse_error *, bs_model **);
+
+static void model_reader_rows(const char *name, model_text_reader r, const char *file_name, model_file_reader rf)
+{
+    bs_model *m = (bs_model *)(void *)HSENT;
+    BAD(name, "NULL handle", BS_ERR_INVALID_ARG, r("x", 1, NULL, NULL));
+    BAD(name, "NULL views", BS_ERR_INVALID_ARG, r(NULL, 5, NULL, &m));
+    NULLED(m);
+    m = (bs_model *)(void *)HSENT;
+    BAD(name, "empty text", BS_ERR_PARSE, r("", 0, &perr, &m));
+    NULLED(m);
+    m = (bs_model *)(void *)HSENT;
+    BAD(file_name, "NULL views", BS_ERR_INVALID_ARG, rf(NULL, NULL, &m));
+    NULLED(m);
+    BAD(file_name, "NULL handle", BS_ERR_INVALID_ARG, rf("x", NULL, NULL));
+    m = (bs_model *)(void *)HSENT;
+    BAD(file_name, "I/O failure", BS_ERR_IO, rf("/nonexistent-directory/x", &perr, &m));
+    NULLED(m);
+    CHECK(perr.line == 0 && perr.column == 0);
+    m = (bs_model *)(void *)HSENT;
+    BAD(file_name, "I/O failure", BS_ERR_IO, rf("/", &perr, &m));
+    NULLED(m);
+}
+
+static void test_models(void)
+{
+    model_reader_rows("bs_model_read_step", bs_model_read_step, "bs_model_read_step_file", bs_model_read_step_file);
+    model_reader_rows("bs_model_read_iges", bs_model_read_iges, "bs_model_read_iges_file", bs_model_read_iges_file);
+    model_reader_rows("bs_model_read_obj", bs_model_read_obj, "bs_model_read_obj_file", bs_model_read_obj_file);
+    bs_model *m = (bs_model *)(void *)HSENT;
+    BAD("bs_model_from_surface", "NULL handle", BS_ERR_INVALID_ARG, bs_model_from_surface(NULL, &m));
+    NULLED(m);
+    BAD("bs_model_from_surface", "dimension out of range", BS_ERR_DIMENSION, bs_model_from_surface(S2, &m));
+    NULLED(m);
+    CHECK_STATUS(bs_model_from_surface(S3, &m), BS_OK);
+    uint32_t faces[N] = {0, 1, 0, 1}, bad_faces[N] = {0, 1, 2, 0};
+    bs_cview u = {ugood, N, 0}, v = {vgood, N, 0};
+    size_t size = 0;
+    BAD("bs_model_face_eval", "NULL handle", BS_ERR_INVALID_ARG, bs_model_face_eval(NULL, N, faces, &u, &v, ov[0], ov[1], kbuf + SLACK));
+    BAD("bs_model_face_eval", "id out of range", BS_ERR_INVALID_ARG, bs_model_face_eval(m, N, bad_faces, &u, &v, ov[0], ov[1], kbuf + SLACK));
+    BAD("bs_model_face_eval", "NULL views", BS_ERR_INVALID_ARG, bs_model_face_eval(m, N, NULL, &u, &v, ov[0], ov[1], kbuf + SLACK));
+    BAD("bs_model_face_to_patch", "id out of range", BS_ERR_INVALID_ARG, bs_model_face_to_patch(m, N, bad_faces, &u, &v, NULL, ov[0]));
+    BAD("bs_model_classify", "NULL views", BS_ERR_INVALID_ARG, bs_model_classify(m, N, faces, &u, &v, 0.0, NULL));
+    BAD("bs_model_classify", "NaN tolerance", BS_ERR_DOMAIN, bs_model_classify(m, N, faces, &u, &v, NAN, kbuf + SLACK));
+    BAD("bs_model_classify", "negative tolerance", BS_ERR_DOMAIN, bs_model_classify(m, N, faces, &u, &v, -1.0, kbuf + SLACK));
+    for (int b = 0; b < N_BAD_IN; b++) {
+        BAD("bs_model_face_eval", bad_in[b].cls, bad_in[b].st, bs_model_face_eval(m, N, faces, &bad_in[b].v, &v, ov[0], ov[1], kbuf + SLACK));
+        BAD("bs_model_face_eval", bad_in[b].cls, bad_in[b].st, bs_model_face_eval(m, N, faces, &u, &bad_in[b].v, ov[0], ov[1], kbuf + SLACK));
+        BAD("bs_model_face_to_patch", bad_in[b].cls, bad_in[b].st, bs_model_face_to_patch(m, N, faces, &bad_in[b].v, &v, NULL, ov[0]));
+        BAD("bs_model_classify", bad_in[b].cls, bad_in[b].st, bs_model_classify(m, N, faces, &u, &bad_in[b].v, 0.0, kbuf + SLACK));
+    }
+    for (int how = 0; how < N_SPOIL; how++)
+        for (int c = 0; c < 3; c++) {
+            BAD_SPOILED("bs_model_face_eval", how, spoil_st[how], bs_model_face_eval(m, N, faces, &u, &v, sp(0, c, how), ov[1], kbuf + SLACK));
+            BAD_SPOILED("bs_model_face_eval", how, spoil_st[how], bs_model_face_eval(m, N, faces, &u, &v, ov[0], sp(1, c, how), kbuf + SLACK));
+            if (c < 2)
+                BAD_SPOILED("bs_model_face_to_patch", how, spoil_st[how], bs_model_face_to_patch(m, N, faces, &u, &v, NULL, sp(0, c, how)));
+        }
+    BAD("bs_model_write_obj", "NULL handle", BS_ERR_INVALID_ARG, bs_model_write_obj(NULL, tbuf, sizeof tbuf, &size));
+    BAD("bs_model_write_obj", "NULL views", BS_ERR_INVALID_ARG, bs_model_write_obj(m, tbuf, sizeof tbuf, NULL));
+    BAD("bs_model_write_obj", "count too small", BS_ERR_SIZE, bs_model_write_obj(m, tbuf, 8, &size));
+    BAD("bs_model_write_obj_file", "NULL handle", BS_ERR_INVALID_ARG, bs_model_write_obj_file(NULL, "x.obj"));
+    BAD("bs_model_write_obj_file", "NULL views", BS_ERR_INVALID_ARG, bs_model_write_obj_file(m, NULL));
+    BAD("bs_model_write_obj_file", "I/O failure", BS_ERR_IO, bs_model_write_obj_file(m, "/nonexistent-directory/x.obj"));
+    bs_face_info fi;
+    fi.size = 4;
+    BAD("bs_model_face_info", "struct size too small", BS_ERR_INVALID_ARG, bs_model_face_info(m, 0, &fi));
+    fi.size = sizeof fi;
+    BAD("bs_model_face_info", "id out of range", BS_ERR_DOMAIN, bs_model_face_info(m, 2, &fi));
+    bs_model_destroy(m);
+}
+
 int main(void)
 {
     setup();
@@ -839,6 +913,7 @@ int main(void)
     test_hostile_bpt();
     test_hostile_free_form();
     test_meshes();
+    test_models();
     bs_patch_destroy(P3);
     bs_patch_destroy(R3);
     bs_patch_destroy(P2);
