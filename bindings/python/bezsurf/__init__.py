@@ -8,7 +8,8 @@ Main classes: :class:`Patch` (one patch: evaluation, subdivision, elevation, hod
 :class:`Surface` (an ordered set of patches: evaluation, .bpt files, the built-in tea set,
 continuity, tessellation), :class:`Mesh` (a triangle mesh: read-back, OBJ/PLY/STL export) and
 :class:`BSpline` (a B-spline or NURBS surface, cut into Bezier patches by
-:meth:`Surface.add_bspline`) and :class:`Locator` (closest points and rays on a surface).
+:meth:`Surface.add_bspline`), :class:`Locator` (closest points and rays on a surface) and
+:class:`Model` (trimmed B-rep models read from STEP, IGES and OBJ files; since 1.2).
 Errors are :class:`BezsurfError` subclasses; wrong argument types raise TypeError and bad
 values ValueError, naming the argument. numpy is optional: whenever it is importable, results
 are numpy arrays written in place by the library (float arrays in Fortran order, the library's
@@ -28,6 +29,8 @@ from .patch import (DIR_U, DIR_V, NORMAL_LIMIT, NORMAL_REGULAR, NORMAL_UNDEFINED
 from .mesh import Mesh
 from .bspline import BSpline
 from .query import NO_PATCH, ClosestPoints, Locator, RayHits
+from .model import (FACE_KINDS, TRIM_INSIDE, TRIM_ON, TRIM_OUTSIDE, Face, FaceEvaluation,
+                    Model)
 from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
                       Surface, builtin_names)
 
@@ -74,5 +77,6 @@ __all__ = [
     "BezsurfNotADirectoryError", "IncompatibleError", "UnsupportedError",
     "DIR_U", "DIR_V", "NORMAL_REGULAR", "NORMAL_LIMIT", "NORMAL_UNDEFINED", "MAX_DEGREE",
     "MAX_DIM", "builtin_names", "version", "version_number", "status_string", "library_path",
-    "have_numpy",
+    "have_numpy", "Model", "Face", "FaceEvaluation", "FACE_KINDS", "TRIM_OUTSIDE",
+    "TRIM_INSIDE", "TRIM_ON",
 ]

@@ -1,0 +1,297 @@
+"""Trimmed B-rep models of 1.2: faces over exact patches, trim loops, edges and shells, read from
+STEP, IGES and OBJ files (docs/models.md)."""
+
+import ctypes
+import os
+from typing import Any, Dict, List, NamedTuple, Optional, Tuple, Union
+
+from . import _args as A
+from . import _buffers as B
+from ._errors import BezsurfError, BezsurfIOError, io_error
+from ._handle import Handle
+from ._lib import BS_ERR_IO, LIB, CFaceInfo, CParseError
+from .patch import _Call
+from .surface import Surface, _located, _with_file
+
+#: Surface kinds of faces (``Face.kind``), in the order of the C constants BS_FACE_*.
+FACE_KINDS = ("bezier", "bspline", "plane", "cylinder", "cone", "sphere", "torus", "revolution",
+              "extrusion")
+
+#: Where a point lies with respect to a trimmed face (:meth:`Model.classify`).
+TRIM_OUTSIDE = 0
+TRIM_INSIDE = 1
+TRIM_ON = 2
+
+LIB_IO_TEXT = "input/output error"
+
+#: File formats :meth:`Model.read` knows, by extension.
+_FORMATS = {".step": "step", ".stp": "step", ".igs": "iges", ".iges": "iges", ".obj": "obj",
+            ".bpt": "bpt"}
+_TEXT_READERS = {"step": LIB.bs_model_read_step, "iges": LIB.bs_model_read_iges,
+                 "obj": LIB.bs_model_read_obj}
+
+
+class Face(NamedTuple):
+    """One face of a model: its surface kind (one of :data:`FACE_KINDS`), whether its outward side
+    is opposite its surface normal, its shell and assembly instance, its patches in
+    :attr:`Model.surface` (``first_patch`` .. ``first_patch + patch_count - 1``), its number of
+    trim loops (0: untrimmed) and its native parameter box (u0, u1, v0, v1)."""
+
+    kind: str
+    reversed: bool
+    shell: int
+    instance: int
+    first_patch: int
+    patch_count: int
+    loop_count: int
+    box: Tuple[float, float, float, float]
+
+
+class FaceEvaluation(NamedTuple):
+    """Positions (n, 3) (``position``, as :class:`Evaluation`), outward unit normals (n, 3) and normal kinds (n,) of
+    :meth:`Model.face_eval`; for one point the leading n axis is dropped."""
+
+    position: Any
+    normal: Any
+    kind: Any
+
+
+def _text_bytes(text: Union[str, bytes]) -> bytes:
+    if isinstance(text, str):
+        return text.encode("utf-8")
+    if isinstance(text, (bytes, bytearray, memoryview)):
+        return bytes(text)
+    raise TypeError(f"text must be a str or bytes, not {type(text).__name__}")
+
+
+class Model(Handle):
+    """A trimmed B-rep model: faces (pieces of surfaces bounded by trim loops) joined along edges
+    into shells. Immutable; any number of threads may use it at once.
+
+    ``Model(surface)`` makes the model of a surface (each patch an untrimmed face, shared sides
+    joined as edges); :meth:`read` and :meth:`read_step`, :meth:`read_iges`, :meth:`read_obj`
+    read CAD files. A model is a context manager, and can be copied and pickled (a model read
+    from a file keeps the file's bytes for that).
+    """
+
+    _destroy = LIB.bs_model_destroy
+
+    def __init__(self, surface: Surface) -> None:
+        A.instance(surface, Surface, "surface")
+        out = ctypes.c_void_p()
+        LIB.bs_model_from_surface(surface._ptr, ctypes.byref(out))
+        self._adopt(out.value)  # type: ignore[arg-type]
+        self._source: Tuple[str, Any] = ("surface", surface.clone())
+
+    @classmethod
+    def _wrap(cls, handle: Optional[int], source: Tuple[str, Any]) -> "Model":
+        m = cls.__new__(cls)
+        m._adopt(handle)  # type: ignore[arg-type]
+        m._source = source
+        return m
+
+    @classmethod
+    def _read_text(cls, fmt: str, data: bytes, filename: Optional[str] = None) -> "Model":
+        err = CParseError()
+        out = ctypes.c_void_p()
+        try:
+            _TEXT_READERS[fmt](data, len(data), ctypes.byref(err), ctypes.byref(out))
+        except BezsurfError as exc:
+            raise _located(exc, err, filename) from None
+        return cls._wrap(out.value, (fmt, data))
+
+    @classmethod
+    def read_step(cls, text: Union[str, bytes]) -> "Model":
+        """Parse STEP text (ISO 10303-21; AP203, AP214, AP242 geometry). Raises ParseError with
+        ``line`` and ``column``, UnsupportedError naming an entity the geometry needs that is not
+        read."""
+        return cls._read_text("step", _text_bytes(text))
+
+    @classmethod
+    def read_iges(cls, text: Union[str, bytes]) -> "Model":
+        """Parse IGES 5.3 text: trimmed surfaces (144, 143), B-rep solids (186), B-spline
+        surfaces (128). Errors as :meth:`read_step`."""
+        return cls._read_text("iges", _text_bytes(text))
+
+    @classmethod
+    def read_obj(cls, text: Union[str, bytes]) -> "Model":
+        """Parse OBJ free-form text: each ``surf`` a face trimmed by its ``trim`` and ``hole``
+        loops. Errors as :meth:`read_step`."""
+        return cls._read_text("obj", _text_bytes(text))
+
+    @classmethod
+    def read(cls, path: A.PathArg, format: Optional[str] = None) -> "Model":
+        """Read a model file; the format is ``format`` ("step", "iges", "obj" or "bpt") or else
+        the file's extension (.step/.stp, .igs/.iges, .obj, .bpt). A .bpt file gives the model of
+        its surface. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``) when the
+        file cannot be read, ParseError with ``line``, ``column`` and ``filename`` when it is
+        malformed, ValueError for an unknown format."""
+        name = A.path(path)
+        if format is None:
+            ext = os.path.splitext(os.fsdecode(name))[1].lower()
+            if ext not in _FORMATS:
+                raise ValueError(f"cannot tell the format of {os.fsdecode(name)!r} from its "
+                                 f"extension: pass format= (step, iges, obj, bpt)")
+            format = _FORMATS[ext]
+        if format not in ("step", "iges", "obj", "bpt"):
+            raise ValueError(f"format must be one of step, iges, obj, bpt, not {format!r}")
+        if format == "bpt":
+            return cls(Surface.load(path))
+        try:
+            with open(name, "rb") as f:
+                data = f.read()
+        except OSError as exc:
+            raise io_error(BS_ERR_IO, LIB_IO_TEXT, "open", exc.strerror, exc.errno or 0,
+                           os.fsdecode(name)) from None
+        return cls._read_text(format, data, os.fsdecode(name))
+
+    def __len__(self) -> int:
+        """Number of faces."""
+        return int(LIB.bs_model_face_count(self._ptr))
+
+    @property
+    def edge_count(self) -> int:
+        """Number of model edges (3-D edges shared by faces, each counted once)."""
+        return int(LIB.bs_model_edge_count(self._ptr))
+
+    @property
+    def shells(self) -> List[bool]:
+        """For each shell, whether it is closed (bounds a solid)."""
+        n = int(LIB.bs_model_shell_count(self._ptr))
+        return [LIB.bs_model_shell_closed(self._ptr, k) == 1 for k in range(n)]
+
+    def face(self, index: int) -> Face:
+        """The description of face ``index`` (IndexError when out of range)."""
+        n = len(self)
+        index = A.integer(index, "index", -n, n - 1) if n else A.integer(index, "index", 0, -1)
+        if index < 0:
+            index += n
+        info = CFaceInfo()
+        info.size = ctypes.sizeof(CFaceInfo)
+        LIB.bs_model_face_info(self._ptr, index, ctypes.byref(info))
+        kind = FACE_KINDS[info.kind] if 0 <= info.kind < len(FACE_KINDS) else str(info.kind)
+        return Face(kind, bool(info.reversed), int(info.shell), int(info.instance),
+                    int(info.first_patch), int(info.patch_count), int(info.loop_count),
+                    (info.u0, info.u1, info.v0, info.v1))
+
+    @property
+    def faces(self) -> List[Face]:
+        """Every face's description, in face order."""
+        return [self.face(k) for k in range(len(self))]
+
+    @property
+    def surface(self) -> Surface:
+        """Every face's patches as one surface, borrowed from the model (it keeps the model
+        alive; ``clone()`` it for an independent copy)."""
+        handle = LIB.bs_model_surface(self._ptr)
+        s = Surface.__new__(Surface)
+        s._adopt(handle, self)
+        return s
+
+    def _face_ids(self, faces: Any, call: _Call) -> Tuple[Any, int]:
+        if isinstance(faces, int) and not isinstance(faces, bool) and not call.scalar:
+            faces = [faces] * call.n
+        keep, addr, n = B.uint32s(faces, "faces")
+        if n != call.n:
+            raise ValueError(f"faces and u must have the same length ({n} != {call.n})")
+        count = len(self)
+        ids = keep if B.is_ndarray(keep) else list(keep)
+        if n and max(ids) >= count:
+            raise IndexError(f"a face id is out of range: the model has {count} faces")
+        return keep, addr
+
+    def face_eval(self, faces: Any, u: Any, v: Any) -> FaceEvaluation:
+        """Positions and outward unit normals of faces at native parameters (u, v): point k on
+        face ``faces[k]`` (one id for all points). Points outside a face's patches give NaN."""
+        call = _Call(u, v, inputs=[("faces", faces)])
+        keep, addr = self._face_ids(faces, call)
+        pos = call.output(3, None, "pos")
+        nrm = call.output(3, None, "normal")
+        kinds = call.kinds(None)
+        LIB.bs_model_face_eval(self._ptr, call.n, addr, call.u, call.v, pos.views, nrm.views,
+                               kinds.address)
+        del keep
+        kind = kinds.result()
+        return FaceEvaluation(call.finish(pos.result()), call.finish(nrm.result()),
+                              kind[0] if call.scalar else kind)
+
+    def face_to_patch(self, faces: Any, u: Any, v: Any) -> Tuple[Any, Any]:
+        """The patch of :attr:`surface` holding each native (u, v) and the local (s, t) there:
+        (patch ids, st of shape (n, 2)); outside a face: patch 4294967295 and NaN."""
+        call = _Call(u, v, inputs=[("faces", faces)])
+        keep, addr = self._face_ids(faces, call)
+        st = call.output(2, None, "st")
+        ids = B.UInt32Output(call.n, (call.n,))
+        LIB.bs_model_face_to_patch(self._ptr, call.n, addr, call.u, call.v, ids.address,
+                                   st.views)
+        del keep
+        patch = ids.result()
+        return (patch[0] if call.scalar else patch), call.finish(st.result())
+
+    def classify(self, faces: Any, u: Any, v: Any, tol: float = 0.0) -> Any:
+        """Where native (u, v) lies on each face: TRIM_INSIDE, TRIM_OUTSIDE, or TRIM_ON within
+        ``tol`` (a 3-D distance >= 0) of the face's boundary. A uint8 array (a list without
+        numpy), or one int for one point."""
+        tol = A.real(tol, "tol")
+        if not (tol >= 0.0) or tol == float("inf"):
+            raise ValueError(f"tol must be finite and >= 0, not {tol}")
+        call = _Call(u, v, inputs=[("faces", faces)])
+        keep, addr = self._face_ids(faces, call)
+        where = (ctypes.c_ubyte * max(call.n, 1))()
+        LIB.bs_model_classify(self._ptr, call.n, addr, call.u, call.v, tol, where)
+        del keep
+        values = [int(x) for x in where[: call.n]]
+        if call.scalar:
+            return values[0]
+        if B.have_numpy():
+            np = B.need_numpy()
+            return np.array(values, dtype=np.uint8)
+        return values
+
+    def to_obj(self) -> str:
+        """The model as OBJ free-form text (surfaces with trim and hole loops), read back
+        exactly by :meth:`read_obj`."""
+        size = ctypes.c_size_t()
+        LIB.bs_model_write_obj(self._ptr, None, 0, ctypes.byref(size))
+        buf = ctypes.create_string_buffer(size.value + 1)
+        LIB.bs_model_write_obj(self._ptr, buf, size.value + 1, ctypes.byref(size))
+        return buf.value.decode("ascii")
+
+    def save_obj(self, path: A.PathArg) -> None:
+        """Write the model as an OBJ file (replaced only once written completely)."""
+        name = A.path(path)
+        ctypes.set_errno(0)
+        try:
+            LIB.bs_model_write_obj_file(self._ptr, name)
+        except BezsurfIOError as exc:
+            raise _with_file(exc, os.fsdecode(name)) from None
+
+    def clone(self) -> "Model":
+        """An independent copy (read again from the same source)."""
+        return _rebuild(*self._source)
+
+    __copy__ = clone
+
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "Model":
+        return self.clone()
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        return (_rebuild, self._source)
+
+    def __repr__(self) -> str:
+        if self.closed:
+            return "<bezsurf.Model (closed)>"
+        closed = sum(self.shells)
+        return (f"<bezsurf.Model: {len(self)} faces, {self.edge_count} edges, "
+                f"{len(self.shells)} shells ({closed} closed)>")
+
+
+def _rebuild(fmt: str, source: Any) -> Model:
+    """A model made again from what it was made of (pickling, copies)."""
+    if fmt == "surface":
+        return Model(source)
+    return Model._read_text(fmt, source)
+
+
+__all__ = ["Model", "Face", "FaceEvaluation", "FACE_KINDS", "TRIM_OUTSIDE", "TRIM_INSIDE",
+           "TRIM_ON"]

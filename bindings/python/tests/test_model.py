@@ -1,0 +1,118 @@
+"""Models through the binding: the model of a surface (faces, edges, shells), face evaluation
+against the surface's own evaluation, the CAD parts of data/cad/ read from STEP and IGES with
+the face counts their .ref files give, pickling, and the argument rules."""
+
+import copy
+import math
+import pickle
+import unittest
+
+import bezsurf
+
+from .support import DATA_DIR, PlainTestCase, plain, requires
+
+CAD_DIR = DATA_DIR / "cad"
+PARTS = ("bottle", "block", "sphere", "torus", "cone", "wedge", "bell", "duct")
+
+
+def ref_faces(part):
+    for line in (CAD_DIR / f"{part}.ref").read_text().splitlines():
+        if line.startswith("faces "):
+            return int(line.split()[1])
+    raise AssertionError(f"{part}.ref has no face count")
+
+
+def cube():
+    """A unit cube of six bilinear patches."""
+    c = [[[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0]], [[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]],
+         [[0, 0, 0], [1, 0, 0], [0, 0, 1], [1, 0, 1]], [[0, 1, 0], [0, 1, 1], [1, 1, 0], [1, 1, 1]],
+         [[0, 0, 0], [0, 0, 1], [0, 1, 0], [0, 1, 1]], [[1, 0, 0], [1, 1, 0], [1, 0, 1], [1, 1, 1]]]
+    return bezsurf.Surface([bezsurf.Patch([f[0:2], f[2:4]]) for f in c])
+
+
+@requires("bs_model_from_surface")
+class ModelOfSurfaceTest(PlainTestCase):
+    def test_cube_is_one_closed_shell(self):
+        m = bezsurf.Model(cube())
+        self.assertEqual(len(m), 6)
+        self.assertEqual(m.edge_count, 12)
+        self.assertEqual(m.shells, [True])
+        f = m.face(5)
+        self.assertEqual(f.kind, "bezier")
+        self.assertEqual((f.first_patch, f.patch_count, f.loop_count), (5, 1, 1))
+        self.assertEqual(f.box, (0.0, 1.0, 0.0, 1.0))
+        self.assertEqual(m.face(-1), f)
+        with self.assertRaises((IndexError, ValueError)):
+            m.face(6)
+
+    def test_face_eval_is_the_patch_evaluation(self):
+        s = bezsurf.Surface.builtin("teapot")
+        m = bezsurf.Model(s)
+        faces, u, v = [0, 9, 20], [0.25, 0.5, 1.0], [0.75, 0.0, 0.5]
+        ev = m.face_eval(faces, u, v)
+        ref = s.eval(faces, u, v, normals=True)
+        self.assertEqual(plain(ev.position), plain(ref.position))
+        self.assertEqual(plain(ev.normal), plain(ref.normal))
+        patch, st = m.face_to_patch(faces, u, v)
+        self.assertEqual(list(plain(patch)), faces)
+        self.assertEqual([tuple(x) for x in plain(st)], list(zip(u, v)))
+        one = m.face_eval(3, 0.5, 0.5)
+        self.assertEqual(len(plain(one.position)), 3)
+        self.assertEqual(len(m.surface), 32)
+
+    def test_copy_and_pickle(self):
+        m = bezsurf.Model(cube())
+        for other in (copy.copy(m), copy.deepcopy(m), pickle.loads(pickle.dumps(m))):
+            self.assertEqual(other.faces, m.faces)
+            self.assertEqual(other.edge_count, 12)
+
+    def test_arguments(self):
+        m = bezsurf.Model(cube())
+        with self.assertRaises(IndexError):
+            m.face_eval([6], [0.5], [0.5])
+        with self.assertRaises(ValueError):
+            m.face_eval([0, 1], [0.5], [0.5])
+        with self.assertRaises(ValueError):
+            m.classify([0], [0.5], [0.5], tol=-1.0)
+        with self.assertRaises(TypeError):
+            bezsurf.Model("teapot")
+        with self.assertRaises(ValueError):
+            bezsurf.Model.read(str(CAD_DIR / "README.md"))
+        with self.assertRaises(bezsurf.BezsurfIOError) as cm:
+            bezsurf.Model.read("/nonexistent-directory/part.step")
+        self.assertEqual(cm.exception.filename, "/nonexistent-directory/part.step")
+        with self.assertRaises(bezsurf.ParseError):
+            bezsurf.Model.read_step("ISO-10303-21;\nHEADER;\nENDSEC;\n")
+        m.close()
+        with self.assertRaises(ValueError):
+            len(m)
+
+
+@requires("bs_model_read_step")
+class CadPartsTest(PlainTestCase):
+    def test_parts_read_from_step_and_iges(self):
+        for part in PARTS:
+            for name in (f"{part}.step", f"{part}.igs", f"{part}-brep.igs"):
+                with self.subTest(file=name):
+                    m = bezsurf.Model.read(CAD_DIR / name)
+                    self.assertEqual(len(m), ref_faces(part))
+                    if not name.endswith(".igs") or "brep" in name:
+                        self.assertTrue(all(m.shells), m.shells)
+
+    def test_points_of_a_sphere(self):
+        m = bezsurf.Model.read(CAD_DIR / "sphere.step")
+        f = m.face(0)
+        self.assertEqual(f.kind, "sphere")
+        u0, u1, v0, v1 = f.box
+        us = [u0 + (u1 - u0) * k / 7 for k in range(8)]
+        vs = [v0 + (v1 - v0) * (k + 0.5) / 8 for k in range(8)]
+        ev = m.face_eval(0, us, vs)
+        # the sphere of data/cad/sphere.ref's box: centre (1, 2, 3), radius 5
+        for p in plain(ev.position):
+            self.assertAlmostEqual(math.dist(p, (1.0, 2.0, 3.0)), 5.0, delta=1e-12 * 5.0)
+        where = m.classify(0, us, vs, 1e-9)
+        self.assertTrue(all(w == bezsurf.TRIM_INSIDE for w in plain(where)))
+
+
+if __name__ == "__main__":
+    unittest.main()
