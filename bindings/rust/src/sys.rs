@@ -254,6 +254,49 @@ pub struct bs_locator {
     _opaque: [u8; 0],
 }
 
+/// Opaque model handle (`bs_model`, model.h, since 1.2); only ever used behind a pointer.
+#[repr(C)]
+pub struct bs_model {
+    _opaque: [u8; 0],
+}
+
+/// One face of a model (`bs_face_info`, since 1.2); `size` is set by the caller.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct bs_face_info {
+    /// `size_of::<bs_face_info>()`, set before the call.
+    pub size: usize,
+    /// `BS_FACE_*`.
+    pub kind: i32,
+    /// 1: the outward normal is opposite the surface normal.
+    pub reversed: i32,
+    /// Shell id.
+    pub shell: usize,
+    /// Assembly placement id.
+    pub instance: usize,
+    /// First patch of the face in `bs_model_surface`.
+    pub first_patch: usize,
+    /// Number of its patches.
+    pub patch_count: usize,
+    /// Trim loops (0: untrimmed).
+    pub loop_count: usize,
+    /// Native parameter box: u from `u0` ...
+    pub u0: f64,
+    /// ... to `u1`.
+    pub u1: f64,
+    /// v from `v0` ...
+    pub v0: f64,
+    /// ... to `v1`.
+    pub v1: f64,
+}
+
+/// Point outside the trimmed face (`BS_TRIM_OUTSIDE`).
+pub const BS_TRIM_OUTSIDE: u8 = 0;
+/// Point inside the trimmed face (`BS_TRIM_INSIDE`).
+pub const BS_TRIM_INSIDE: u8 = 1;
+/// Point within the tolerance of the face's boundary (`BS_TRIM_ON`).
+pub const BS_TRIM_ON: u8 = 2;
+
 /// Opaque mesh handle (`bs_mesh`, mesh.h); only ever used behind a pointer.
 #[repr(C)]
 pub struct bs_mesh {
@@ -749,5 +792,102 @@ extern "C" {
         t: *const bs_view,
         nrm: *const bs_view,
         threads: usize,
+    ) -> bs_status;
+
+    // model.h (since 1.2)
+    /// `bs_model_read_step` (model.h, since 1.2).
+    pub fn bs_model_read_step(
+        text: *const c_char,
+        len: usize,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_model,
+    ) -> bs_status;
+    /// `bs_model_read_step_file` (model.h, since 1.2).
+    pub fn bs_model_read_step_file(
+        path: *const c_char,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_model,
+    ) -> bs_status;
+    /// `bs_model_read_iges` (model.h, since 1.2).
+    pub fn bs_model_read_iges(
+        text: *const c_char,
+        len: usize,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_model,
+    ) -> bs_status;
+    /// `bs_model_read_iges_file` (model.h, since 1.2).
+    pub fn bs_model_read_iges_file(
+        path: *const c_char,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_model,
+    ) -> bs_status;
+    /// `bs_model_read_obj` (model.h, since 1.2).
+    pub fn bs_model_read_obj(
+        text: *const c_char,
+        len: usize,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_model,
+    ) -> bs_status;
+    /// `bs_model_read_obj_file` (model.h, since 1.2).
+    pub fn bs_model_read_obj_file(
+        path: *const c_char,
+        err: *mut bs_parse_error,
+        out: *mut *mut bs_model,
+    ) -> bs_status;
+    /// `bs_model_from_surface` (model.h, since 1.2).
+    pub fn bs_model_from_surface(s: *const bs_surface, out: *mut *mut bs_model) -> bs_status;
+    /// `bs_model_destroy` (model.h, since 1.2).
+    pub fn bs_model_destroy(m: *mut bs_model);
+    /// `bs_model_write_obj` (model.h, since 1.2).
+    pub fn bs_model_write_obj(
+        m: *const bs_model,
+        buf: *mut c_char,
+        cap: usize,
+        size: *mut usize,
+    ) -> bs_status;
+    /// `bs_model_write_obj_file` (model.h, since 1.2).
+    pub fn bs_model_write_obj_file(m: *const bs_model, path: *const c_char) -> bs_status;
+    /// `bs_model_face_count` (model.h, since 1.2).
+    pub fn bs_model_face_count(m: *const bs_model) -> usize;
+    /// `bs_model_edge_count` (model.h, since 1.2).
+    pub fn bs_model_edge_count(m: *const bs_model) -> usize;
+    /// `bs_model_shell_count` (model.h, since 1.2).
+    pub fn bs_model_shell_count(m: *const bs_model) -> usize;
+    /// `bs_model_shell_closed` (model.h, since 1.2).
+    pub fn bs_model_shell_closed(m: *const bs_model, shell: usize) -> c_int;
+    /// `bs_model_face_info` (model.h, since 1.2).
+    pub fn bs_model_face_info(m: *const bs_model, face: usize, info: *mut bs_face_info) -> bs_status;
+    /// `bs_model_surface` (model.h, since 1.2).
+    pub fn bs_model_surface(m: *const bs_model) -> *const bs_surface;
+    /// `bs_model_face_eval` (model.h, since 1.2).
+    pub fn bs_model_face_eval(
+        m: *const bs_model,
+        n: usize,
+        faces: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut u8,
+    ) -> bs_status;
+    /// `bs_model_face_to_patch` (model.h, since 1.2).
+    pub fn bs_model_face_to_patch(
+        m: *const bs_model,
+        n: usize,
+        faces: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        patch: *mut u32,
+        st: *const bs_view,
+    ) -> bs_status;
+    /// `bs_model_classify` (model.h, since 1.2).
+    pub fn bs_model_classify(
+        m: *const bs_model,
+        n: usize,
+        faces: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        tol: f64,
+        where_: *mut u8,
     ) -> bs_status;
 }

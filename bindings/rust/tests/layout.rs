@@ -20,6 +20,7 @@ const PROBE: &str = r#"
 #include "bezsurf/mesh.h"
 #include "bezsurf/bspline.h"
 #include "bezsurf/query.h"
+#include "bezsurf/model.h"
 
 #define ALIGNOF(T) offsetof(struct { char c; T t; }, t)
 #define SIZE(T) printf("size " #T " %zu\n", sizeof(T)); printf("align " #T " %zu\n", ALIGNOF(T))
@@ -60,6 +61,11 @@ int main(void)
     OFF(bs_tess_options, tolerance); OFF(bs_tess_options, max_vertices);
     OFF(bs_tess_options, max_triangles); OFF(bs_tess_options, threads);
     CONST(BS_MESH_OBJ); CONST(BS_MESH_PLY); CONST(BS_MESH_PLY_ASCII); CONST(BS_MESH_STL);
+    SIZE(bs_face_info); OFF(bs_face_info, size); OFF(bs_face_info, kind); OFF(bs_face_info, reversed);
+    OFF(bs_face_info, shell); OFF(bs_face_info, instance); OFF(bs_face_info, first_patch);
+    OFF(bs_face_info, patch_count); OFF(bs_face_info, loop_count); OFF(bs_face_info, u0);
+    OFF(bs_face_info, u1); OFF(bs_face_info, v0); OFF(bs_face_info, v1);
+    CONST(BS_TRIM_OUTSIDE); CONST(BS_TRIM_INSIDE); CONST(BS_TRIM_ON);
     return 0;
 }
 "#;
@@ -176,6 +182,23 @@ fn sys_matches_the_c_header() {
         ("offset bs_tess_options.max_vertices", offset_of!(sys::bs_tess_options, max_vertices) as i64),
         ("offset bs_tess_options.max_triangles", offset_of!(sys::bs_tess_options, max_triangles) as i64),
         ("offset bs_tess_options.threads", offset_of!(sys::bs_tess_options, threads) as i64),
+        ("size bs_face_info", size_of::<sys::bs_face_info>() as i64),
+        ("align bs_face_info", align_of::<sys::bs_face_info>() as i64),
+        ("offset bs_face_info.size", offset_of!(sys::bs_face_info, size) as i64),
+        ("offset bs_face_info.kind", offset_of!(sys::bs_face_info, kind) as i64),
+        ("offset bs_face_info.reversed", offset_of!(sys::bs_face_info, reversed) as i64),
+        ("offset bs_face_info.shell", offset_of!(sys::bs_face_info, shell) as i64),
+        ("offset bs_face_info.instance", offset_of!(sys::bs_face_info, instance) as i64),
+        ("offset bs_face_info.first_patch", offset_of!(sys::bs_face_info, first_patch) as i64),
+        ("offset bs_face_info.patch_count", offset_of!(sys::bs_face_info, patch_count) as i64),
+        ("offset bs_face_info.loop_count", offset_of!(sys::bs_face_info, loop_count) as i64),
+        ("offset bs_face_info.u0", offset_of!(sys::bs_face_info, u0) as i64),
+        ("offset bs_face_info.u1", offset_of!(sys::bs_face_info, u1) as i64),
+        ("offset bs_face_info.v0", offset_of!(sys::bs_face_info, v0) as i64),
+        ("offset bs_face_info.v1", offset_of!(sys::bs_face_info, v1) as i64),
+        ("const BS_TRIM_OUTSIDE", sys::BS_TRIM_OUTSIDE as i64),
+        ("const BS_TRIM_INSIDE", sys::BS_TRIM_INSIDE as i64),
+        ("const BS_TRIM_ON", sys::BS_TRIM_ON as i64),
     ];
     let consts: [(&str, i64); 36] = [
         ("BS_OK", sys::BS_OK as i64),

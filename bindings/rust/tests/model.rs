@@ -1,0 +1,69 @@
+//! Models through the Rust binding: the model of a surface, face evaluation against the
+//! surface's own evaluation, the CAD parts of data/cad/ with the face counts of their .ref files.
+
+use std::path::PathBuf;
+
+use bezsurf::{ErrorKind, FaceKind, Model, NormalKind, Outputs, Surface, Trim};
+
+fn cad_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/cad")
+}
+
+fn ref_faces(part: &str) -> usize {
+    let text = std::fs::read_to_string(cad_dir().join(format!("{part}.ref"))).unwrap();
+    let line = text.lines().find(|l| l.starts_with("faces ")).unwrap();
+    line[6..].trim().parse().unwrap()
+}
+
+#[test]
+fn teapot_model_evaluates_as_its_patches() {
+    let pot = Surface::builtin("teapot").unwrap();
+    let m = Model::from_surface(&pot).unwrap();
+    assert_eq!(m.face_count(), 32);
+    assert!(m.shell_count() >= 4);
+    assert_eq!(m.shell_closed(m.shell_count()), None);
+    let f = m.face(3).unwrap();
+    assert_eq!((f.kind, f.first_patch, f.patch_count, f.loop_count), (FaceKind::Bezier, 3, 1, 1));
+    assert_eq!(m.face(32).unwrap_err().kind(), ErrorKind::Domain);
+
+    let (ids, u, v) = ([0u32, 9, 20], [0.25, 0.5, 1.0], [0.75, 0.0, 0.5]);
+    let ev = m.face_eval(&ids, &u, &v).unwrap();
+    let mut pos = [0.0; 9];
+    let mut nrm = [0.0; 9];
+    let mut kind = [0u8; 3];
+    pot.eval_normal(&ids, &u[..], &v[..], Outputs::new().pos(&mut pos).normal(&mut nrm).kind(&mut kind))
+        .unwrap();
+    for k in 0..3 {
+        assert_eq!(ev.pos[k], [pos[3 * k], pos[3 * k + 1], pos[3 * k + 2]]);
+        assert_eq!(ev.normal[k], [nrm[3 * k], nrm[3 * k + 1], nrm[3 * k + 2]]);
+        assert_eq!(ev.kind[k], NormalKind::from_byte(kind[k]).unwrap());
+    }
+    let (patch, st) = m.face_to_patch(&ids, &u, &v).unwrap();
+    assert_eq!(patch, vec![Some(0), Some(9), Some(20)]);
+    assert_eq!(st[1], [0.5, 0.0]);
+    let (outside, _) = m.face_to_patch(&[0], &[1.5], &[0.5]).unwrap();
+    assert_eq!(outside, vec![None]);
+    assert_eq!(m.classify(&[0], &[0.5], &[0.5], 1e-9).unwrap(), vec![Trim::Inside]);
+    assert_eq!(m.classify(&[0], &[0.5], &[0.5], -1.0).unwrap_err().kind(), ErrorKind::Domain);
+    assert_eq!(m.face_eval(&[0, 1], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::Size);
+    assert_eq!(m.face_eval(&[32], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::InvalidArg);
+    assert_eq!(m.surface().unwrap().len(), 32);
+}
+
+#[test]
+fn cad_parts_read_with_their_face_counts() {
+    for part in ["bottle", "block", "sphere", "torus", "cone", "wedge", "bell", "duct"] {
+        for file in [format!("{part}.step"), format!("{part}.igs"), format!("{part}-brep.igs")] {
+            let m = Model::read_file(cad_dir().join(&file)).unwrap_or_else(|e| panic!("{file}: {e}"));
+            assert_eq!(m.face_count(), ref_faces(part), "{file}");
+        }
+    }
+}
+
+#[test]
+fn unknown_extension_and_missing_file() {
+    let e = Model::read_file("part.xyz").unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::InvalidArg);
+    let e = Model::read_file("/nonexistent-directory/part.step").unwrap_err();
+    assert_eq!(e.kind(), ErrorKind::Io);
+}
