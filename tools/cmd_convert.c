@@ -1,4 +1,4 @@
-/* bezsurf convert: a surface from one file format to another. */
+/* bezsurf convert: a surface or a model from one file format to another. */
 #include "cmds.h"
 
 #include <stdio.h>
@@ -8,13 +8,34 @@ static const char usage[] =
     "usage: bezsurf convert [--from FORMAT] [--to FORMAT] IN OUT\n"
     "       bezsurf convert --builtin NAME [--to FORMAT] OUT\n"
     "Read the surface in IN ('-': standard input) and write it to OUT. Formats: bpt and obj\n"
-    "(read and written), iges (read only); each is taken from the file's extension (.bpt,\n"
-    ".obj, .igs or .iges) unless --from or --to names it. OUT is replaced only once it is\n"
-    "written completely.\n"
+    "(read and written), iges and step (read only); each is taken from the file's extension\n"
+    "(.bpt, .obj, .igs, .iges, .step or .stp) unless --from or --to names it. A STEP or IGES\n"
+    "part written as obj keeps its trims (OBJ free-form with trim and hole loops); written as\n"
+    "bpt it keeps only its faces' untrimmed patches. OUT is replaced only once it is written\n"
+    "completely.\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of IN\n"
-    "      --from FORMAT     the input's format: bpt, obj or iges\n"
+    "      --from FORMAT     the input's format: bpt, obj, iges or step\n"
     "      --to FORMAT       the output's format: bpt or obj\n"
     "  -h, --help            this text\n";
+
+/* A trimmed model (STEP, IGES) to OBJ free-form with its trim loops. */
+static int convert_model(const char *cmd, const cli_input *in, const char *out)
+{
+    bs_model *m;
+    int rc = cli_load_model(cmd, in, &m);
+    if (rc != CLI_OK)
+        return rc;
+    bs_status st = bs_model_write_obj_file(m, out);
+    size_t nf = bs_model_face_count(m);
+    bs_model_destroy(m);
+    if (st == BS_ERR_IO)
+        return cli_fail_write(cmd, out);
+    if (st != BS_OK)
+        return cli_fail(cmd, st == BS_ERR_NO_MEMORY ? CLI_INTERNAL : CLI_INPUT, "%s: %s", out,
+                        bs_status_string(st));
+    printf("%s: %zu trimmed faces (obj)\n", out, nf);
+    return cli_finish(cmd);
+}
 
 int cmd_convert(int argc, char **argv)
 {
@@ -61,6 +82,12 @@ int cmd_convert(int argc, char **argv)
     int rc = cli_check_output(cmd, out);
     if (rc != CLI_OK)
         return rc;
+    const cli_format *from = NULL;
+    if (in.path != NULL && strcmp(in.path, "-") != 0)
+        from = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
+    if (from != NULL && (strcmp(from->name, "step") == 0 || strcmp(from->name, "iges") == 0) &&
+        strcmp(fmt->name, "obj") == 0)
+        return convert_model(cmd, &in, out);
     bs_surface *s;
     if ((rc = cli_load(cmd, &in, &s)) != CLI_OK)
         return rc;

@@ -27,18 +27,32 @@ static bs_status step_read_file(const char *path, bs_parse_error *err, bs_surfac
     return surface_of_model(bs_model_read_step_file(path, err, &m), m, out);
 }
 
+/* IGES through the model reader (trimmed surfaces, B-reps, B-splines), the 1.1 surface reader
+ * when the model reader refuses the file (its error is the one reported if both do). */
 static bs_status iges_read(const char *text, size_t len, bs_parse_error *err, bs_surface **out)
 {
     bs_model *m = NULL;
     *out = NULL;
-    return surface_of_model(bs_model_read_iges(text, len, err, &m), m, out);
+    bs_status st = surface_of_model(bs_model_read_iges(text, len, err, &m), m, out);
+    if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED) {
+        bs_parse_error second;
+        if (bs_surface_read_iges(text, len, &second, out) == BS_OK)
+            return BS_OK;
+    }
+    return st;
 }
 
 static bs_status iges_read_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
     bs_model *m = NULL;
     *out = NULL;
-    return surface_of_model(bs_model_read_iges_file(path, err, &m), m, out);
+    bs_status st = surface_of_model(bs_model_read_iges_file(path, err, &m), m, out);
+    if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED) {
+        bs_parse_error second;
+        if (bs_surface_read_iges_file(path, &second, out) == BS_OK)
+            return BS_OK;
+    }
+    return st;
 }
 
 static const cli_format formats[] = {
