@@ -10,6 +10,8 @@
  *   model.c      the model: building it face by face, then frozen; the counts and face info
  *   face_map.c   native parameters -> patch and (s,t); face evaluation
  *   classify.c   inside / outside / on by a winding number over the exact trim curves
+ *   properties.c area, volume and centroid by Green's theorem over the trimmed domains
+ *                (quadrature.c: adaptive Gauss-Kronrod)
  *   sew.c        edges of files without topology: trims whose 3-D images coincide
  *   pcurve.c     trims computed by projecting 3-D edges onto the surface
  */
@@ -43,6 +45,8 @@ typedef struct bsi_axis {
 int bsi_axis_locate(const bsi_axis *a, double x, size_t *piece, double *s);
 /* The native parameter of local s on piece k. */
 double bsi_axis_native(const bsi_axis *a, size_t k, double s);
+/* ds/dx at native x on piece k: the derivative of the map, for partials in native parameters. */
+double bsi_axis_rate(const bsi_axis *a, size_t k, double x);
 /* Breaks cutting [x0, x1] into pieces: ANGULAR ones at most a quarter turn each and of equal
  * width, LINEAR ones at the given interior breaks inner[0..ninner) that lie strictly inside.
  * BS_ERR_NO_MEMORY (a left empty) or BS_ERR_DOMAIN for x0 >= x1 or non-finite ends. */
@@ -200,6 +204,10 @@ bs_status bsi_model_finish(bs_model *m);
 int bsi_face_locate(const bs_model *m, size_t f, double u, double v, uint32_t *patch, double *st);
 /* The point of face f at native (u, v): 1, or 0 outside (p untouched). */
 int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p);
+/* The point and its partials along native u and v (the surface's own, `reversed` not applied):
+ * 1, or 0 outside. */
+int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
+                      double *pv);
 /* Bring u into [lo, lo + period) when period > 0. */
 double bsi_wrap(double u, double lo, double period);
 
@@ -219,5 +227,31 @@ bs_status bsi_model_sew(bs_model *m, double tol);
  * more than tol, BS_ERR_NO_MEMORY. */
 bs_status bsi_pcurve_project(const bs_model *m, size_t f, const bsi_curve *edge, double tol,
                              bsi_trim *out);
+/* Method: feet of the edge at its segment ends, reached by continuation (periodic parameters
+ * unwrap along the edge: a full circle of a cylinder runs u over 2 pi), joined by cubic Hermite
+ * segments (uv' = J+ C') bisected until their images are within tol/2 of the edge beyond the edge's
+ * own distance to the surface (at most 4096 segments, else BS_ERR_DOMAIN). The trim's axis is LINEAR
+ * over the edge's native range (trim parameter = edge parameter), breaks at the segments' ends.
+ * At a pole (u undefined) u is the neighbouring foot's. Periodic directions are placed by whole
+ * periods inside the face's box when the trim's range fits there, else with its start in
+ * [box lo, box lo + period): a seam edge comes out at the box's low side (u = 0, not 2 pi); fix
+ * loops with bsi_pcurve_close_loop(). BS_ERR_INVALID_ARG for a bad face, edge or tol <= 0. */
+
+/* The same from the face's surface definition, before the face is added (STEP edges with only 3-D
+ * curves). def: the face's surface; swap: as bsi_face_spec.swap; box: NULL or the native
+ * u0 u1 v0 v1 the face will cover: BSPLINE, REVOLUTION and EXTRUSION are projected onto their
+ * patches over it (NULL: the B-spline's knot domain; a revolution's [0, 2 pi] x its curve's range;
+ * an extrusion's curve range x the edge's extent along the sweep), CYLINDER .. TORUS use closed forms
+ * and box only for placing periodic parameters (NULL: [0, period]); hint: NULL or a native (u, v)
+ * the trim's start is put nearest to by whole periods (then box places nothing). Statuses as
+ * bsi_pcurve_project, and those of bsi_surface_def_patches. A PLANE's trim is exact: the edge's own
+ * control points in the plane's (u, v) over the edge's own axis (rational arcs stay arcs). */
+bs_status bsi_pcurve_project_def(const bsi_surface_def *def, int swap, const double *box,
+                                 const double *hint, const bsi_curve *edge, double tol,
+                                 bsi_trim *out);
+/* Shift trims[1 .. n) of one loop, each by whole periods (period[2], native; 0: none), so that
+ * each starts where the one before ends (in the loop's direction: `reversed` trims start at their
+ * curve's end): a seam edge used twice lands at u = 0 once and at u = 2 pi once. trims[0] stays. */
+void bsi_pcurve_close_loop(bsi_trim *trims, size_t n, const double *period);
 
 #endif
