@@ -1,0 +1,267 @@
+/* The IGES model reader: the CAD parts of data/cad/ (144 trimmed surfaces and 186 B-reps written by
+ * OpenCASCADE 7.6) against the face counts of their .ref files, closed shells from the B-rep
+ * topology, points of the faces on the closed-form surfaces of the parts (sphere, torus, cone,
+ * wedge); small files written here, one per entity read and one per refusal. */
+#include "harness.h"
+
+#include <bezsurf.h>
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- writing small IGES files ---- */
+typedef struct ent {
+    long type, form, xform; /* xform: DE number of a 124, or 0 */
+    const char *par;        /* the parameters, from the type on, ended by ';' */
+} ent;
+
+/* Fixed-column records: S, G, two D records per entity, P records (64 columns, back pointer to
+ * the entity's DE), T. back_fix: the DE number written as back pointer of entity 0 (0: right). */
+static char *iges_text(const ent *e, size_t n, long back_fix, size_t *len)
+{
+    size_t cap = 4096 + n * 400;
+    for (size_t k = 0; k < n; k++)
+        cap += strlen(e[k].par) / 64 * 81 + 81;
+    char *t = malloc(cap);
+    size_t at = 0, p = 1;
+    at += (size_t)sprintf(t + at, "%-72sS%7d\n", "", 1);
+    at += (size_t)sprintf(t + at, "%-72sG%7d\n", ",,;", 1);
+    for (size_t k = 0; k < n; k++) {
+        size_t lines = (strlen(e[k].par) + 63) / 64;
+        at += (size_t)sprintf(t + at, "%8ld%8zu%8d%8d%8d%8d%8ld%8d%8s", e[k].type, p, 0, 0, 0, 0, e[k].xform, 0,
+                              "00000000");
+        at += (size_t)sprintf(t + at, "D%7zu\n", 2 * k + 1);
+        at += (size_t)sprintf(t + at, "%8ld%8d%8d%8zu%8ld%8s%8s%8s%8s", e[k].type, 0, 0, lines, e[k].form, "", "", "", "0");
+        at += (size_t)sprintf(t + at, "D%7zu\n", 2 * k + 2);
+        p += lines;
+    }
+    size_t seq = 1;
+    for (size_t k = 0; k < n; k++) {
+        size_t len0 = strlen(e[k].par);
+        long back = k == 0 && back_fix ? back_fix : (long)(2 * k + 1);
+        for (size_t o = 0; o < len0; o += 64)
+            at += (size_t)sprintf(t + at, "%-64.64s %07ldP%7zu\n", e[k].par + o, back, seq++);
+    }
+    at += (size_t)sprintf(t + at, "S%7dG%7dD%7zuP%7zu%40sT%7d\n", 1, 1, 2 * n, seq - 1, "", 1);
+    *len = at;
+    return t;
+}
+
+static bs_status read_ents(const ent *e, size_t n, long back_fix, bs_parse_error *err, bs_model **m)
+{
+    size_t len;
+    char *t = iges_text(e, n, back_fix, &len);
+    bs_status st = bs_model_read_iges(t, len, err, m);
+    free(t);
+    return st;
+}
+
+/* The reader refuses with status want and a message holding `words`, at a line. */
+static void refused(const ent *e, size_t n, long back_fix, bs_status want, const char *words)
+{
+    bs_parse_error err;
+    memset(&err, 0, sizeof err);
+    bs_model *m = (bs_model *)&err;
+    bs_status st = read_ents(e, n, back_fix, &err, &m);
+    CHECKF(st == want && m == NULL && err.line > 0 && strstr(err.message, words) != NULL,
+           "status %d (want %d), line %zu: \"%s\" (want \"%s\")", (int)st, (int)want, err.line, err.message, words);
+    if (st == BS_OK)
+        bs_model_destroy(m);
+}
+
+/* Points of face f over its box (a grid of g x g inside it) through bs_model_face_eval. */
+static size_t face_points(const bs_model *m, size_t f, size_t g, double *pts)
+{
+    bs_face_info fi;
+    memset(&fi, 0, sizeof fi);
+    fi.size = sizeof fi;
+    if (bs_model_face_info(m, f, &fi) != BS_OK)
+        return 0;
+    size_t n = 0;
+    for (size_t i = 0; i < g; i++)
+        for (size_t j = 0; j < g; j++) {
+            double u = fi.u0 + (fi.u1 - fi.u0) * ((double)i + 0.5) / (double)g;
+            double v = fi.v0 + (fi.v1 - fi.v0) * ((double)j + 0.5) / (double)g;
+            uint32_t face = (uint32_t)f;
+            bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+            bs_view pos[3] = {{&pts[3 * n], 1, 0}, {&pts[3 * n + 1], 1, 0}, {&pts[3 * n + 2], 1, 0}};
+            if (bs_model_face_eval(m, 1, &face, &cu, &cv, pos, NULL, NULL) == BS_OK && !isnan(pts[3 * n]))
+                n++;
+        }
+    return n;
+}
+
+/* Distance of p from the part's closed-form surface of a face of that kind (NAN: not judged). */
+static double off_surface(const char *part, int kind, const double *p)
+{
+    if (strcmp(part, "sphere") == 0) /* centre and radius of sphere.ref's box */
+        return fabs(sqrt((p[0] - 1) * (p[0] - 1) + (p[1] - 2) * (p[1] - 2) + (p[2] - 3) * (p[2] - 3)) - 5);
+    if (strcmp(part, "torus") == 0) { /* R 6, r 1.5 (torus.ref's box and volume), axis (0,1,1)/sqrt 2 */
+        double h = (p[1] + p[2]) / sqrt(2.0), q[3] = {p[0], p[1] - h / sqrt(2.0), p[2] - h / sqrt(2.0)};
+        double rho = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        return fabs(hypot(rho - 6, h) - 1.5);
+    }
+    if (strcmp(part, "cone") == 0) /* radius 4 at z = 0, 1 at z = 7 (cone.ref's box and volume) */
+        return kind == BS_FACE_PLANE ? fmin(fabs(p[2]), fabs(p[2] - 7)) : fabs(hypot(p[0], p[1]) - (4 - 3 * p[2] / 7));
+    if (strcmp(part, "wedge") == 0 && kind != BS_FACE_PLANE) /* radius 2.5 about the x axis */
+        return fabs(hypot(p[1], p[2]) - 2.5);
+    return NAN;
+}
+
+static void test_part(const char *part, int brep)
+{
+    char path[512];
+    (void)snprintf(path, sizeof path, "%s/%s.ref", BS_CAD_DIR, part);
+    FILE *f = fopen(path, "r");
+    size_t want = 0;
+    CHECK(f != NULL && fscanf(f, "%*[^\n]\nfaces %zu", &want) == 1);
+    if (f != NULL)
+        fclose(f);
+    (void)snprintf(path, sizeof path, "%s/%s%s.igs", BS_CAD_DIR, part, brep ? "-brep" : "");
+    bs_model *m = NULL;
+    bs_parse_error err;
+    memset(&err, 0, sizeof err);
+    bs_status st = bs_model_read_iges_file(path, &err, &m);
+    CHECKF(st == BS_OK, "%s: status %d, line %zu column %zu: %s", path, (int)st, err.line, err.column, err.message);
+    if (st != BS_OK)
+        return;
+    size_t faces = bs_model_face_count(m), closed = 0, points = 0;
+    CHECKF(faces == want, "%s: %zu faces, %zu in the .ref", path, faces, want);
+    for (size_t s = 0; s < bs_model_shell_count(m); s++)
+        closed += (size_t)bs_model_shell_closed(m, s);
+    if (brep)
+        CHECKF(closed == bs_model_shell_count(m) && closed == 1, "%s: %zu of %zu shells closed", path, closed,
+               bs_model_shell_count(m));
+    double worst = 0.0, pts[3 * 64];
+    for (size_t k = 0; k < faces; k++) {
+        bs_face_info fi;
+        memset(&fi, 0, sizeof fi);
+        fi.size = sizeof fi;
+        CHECK(bs_model_face_info(m, k, &fi) == BS_OK && fi.loop_count >= 1);
+        size_t n = face_points(m, k, 8, pts);
+        for (size_t i = 0; i < n; i++) {
+            double d = off_surface(part, fi.kind, &pts[3 * i]);
+            if (!isnan(d)) {
+                worst = fmax(worst, d);
+                points++;
+            }
+        }
+    }
+    CHECKF(worst <= 1e-7, "%s: points %g off the part's surface", path, worst);
+    printf("%s%s: %zu faces (%zu in the .ref), %zu edges, %zu of %zu shells closed; %zu points on the closed "
+           "form, worst %.3g\n",
+           part, brep ? "-brep" : "", faces, want, bs_model_edge_count(m), closed, bs_model_shell_count(m), points,
+           worst);
+    bs_model_destroy(m);
+}
+
+static void test_parts(void)
+{
+    static const char *const parts[] = {"sphere", "torus", "cone", "wedge", "bell", "duct", "block", "bottle"};
+    for (size_t k = 0; k < sizeof parts / sizeof parts[0]; k++)
+        for (int brep = 0; brep < 2; brep++)
+            test_part(parts[k], brep);
+}
+
+/* A square of side 2 on the plane z = 1 (108), its boundary a composite of four lines (3-D only). */
+static const ent square[] = {
+    {144, 0, 0, "144,3,1,0,5;"},
+    {108, 0, 0, "108,0.,0.,1.,1.,0,0.,0.,0.,0.;"},
+    {142, 0, 0, "142,0,3,0,7,2;"},
+    {102, 0, 0, "102,4,9,11,13,15;"},
+    {110, 0, 0, "110,0.,0.,1.,2.,0.,1.;"},
+    {110, 0, 0, "110,2.,0.,1.,2.,2.,1.;"},
+    {110, 0, 0, "110,2.,2.,1.,0.,2.,1.;"},
+    {110, 0, 0, "110,0.,2.,1.,0.,0.,1.;"},
+};
+
+static void test_small(void)
+{
+    bs_model *m = NULL;
+    bs_parse_error err;
+    bs_status st = read_ents(square, 8, 0, &err, &m);
+    CHECKF(st == BS_OK, "square: %d %s", (int)st, err.message);
+    if (st == BS_OK) {
+        double pts[3 * 16];
+        bs_face_info fi;
+        memset(&fi, 0, sizeof fi);
+        fi.size = sizeof fi;
+        CHECK(bs_model_face_count(m) == 1 && bs_model_face_info(m, 0, &fi) == BS_OK && fi.kind == BS_FACE_PLANE);
+        CHECK(fi.loop_count == 1 && fabs((fi.u1 - fi.u0) * (fi.v1 - fi.v0) - 4.0) < 1e-12);
+        size_t n = face_points(m, 0, 4, pts);
+        CHECK(n == 16);
+        for (size_t k = 0; k < n; k++)
+            CHECK(fabs(pts[3 * k + 2] - 1.0) < 1e-14 && pts[3 * k] > 0 && pts[3 * k] < 2);
+        bs_model_destroy(m);
+    }
+    /* an untrimmed bilinear 128 moved by a 124: one face without loops */
+    static const ent patch[] = {
+        {128, 0, 3, "128,1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,1.,"
+                    "0.,1.,0.,1.;"},
+        {124, 0, 0, "124,1.,0.,0.,5.,0.,1.,0.,0.,0.,0.,1.,0.;"},
+    };
+    st = read_ents(patch, 2, 0, &err, &m);
+    CHECKF(st == BS_OK, "patch: %d %s", (int)st, err.message);
+    if (st == BS_OK) {
+        double pts[3 * 4];
+        CHECK(bs_model_face_count(m) == 1 && face_points(m, 0, 2, pts) == 4);
+        CHECK(fabs(pts[0] - 5.25) < 1e-14 && fabs(pts[2] - 0.25 * 0.25) < 1e-14);
+        bs_model_destroy(m);
+    }
+}
+
+static void test_refusals(void)
+{
+    static const ent lines[] = {{110, 0, 0, "110,0.,0.,0.,1.,0.,0.;"}, {116, 0, 0, "116,0.,0.,0.;"}};
+    refused(lines, 2, 0, BS_ERR_PARSE, "no surface read: 2 entities of types 110, 116");
+    ent e[8];
+    memcpy(e, square, sizeof e);
+    refused(e, 8, 5, BS_ERR_PARSE, "back pointer");
+    e[1] = (ent){140, 0, 0, "140,1.,3,0.,0.,0.;"}; /* an offset surface (of itself) */
+    refused(e, 8, 0, BS_ERR_UNSUPPORTED, "entity 140 (DE 3): surface type not read");
+    memcpy(e, square, sizeof e);
+    e[3] = (ent){102, 0, 0, "102,2,9,7;"}; /* a composite holding itself */
+    refused(e, 8, 0, BS_ERR_PARSE, "circular");
+    memcpy(e, square, sizeof e);
+    e[4].xform = 9; /* a line whose transformation is the line */
+    refused(e, 8, 0, BS_ERR_PARSE, "not 124");
+    ent chain[9]; /* a line moved by a 124 moved by itself */
+    memcpy(chain, square, sizeof e);
+    chain[8] = (ent){124, 0, 17, "124,1.,0.,0.,0.,0.,1.,0.,0.,0.,0.,1.,0.;"}, chain[5].xform = 17;
+    refused(chain, 9, 0, BS_ERR_PARSE, "longer than 16 or circular");
+    memcpy(e, square, sizeof e);
+    e[2] = (ent){142, 0, 0, "142,0,3,0,8,2;"}; /* an even pointer */
+    refused(e, 8, 0, BS_ERR_PARSE, "pointer 8 to no directory entry");
+    memcpy(e, square, sizeof e);
+    e[7] = (ent){126, 0, 0, "126,60,3,0,0,1,0,0.,1.;"};
+    refused(e, 8, 0, BS_ERR_PARSE, "more control points than the parameter data can hold");
+    memcpy(e, square, sizeof e);
+    e[7] = (ent){112, 0, 0, "112,1,1,2,0.,1.;"};
+    refused(e, 8, 0, BS_ERR_UNSUPPORTED, "entity 112 (DE 15): curve type not read");
+    memcpy(e, square, sizeof e);
+    e[2] = (ent){142, 0, 0, "142,0,3,0,0,2;"};
+    refused(e, 8, 0, BS_ERR_PARSE, "no curve the surface's parameters can use");
+    /* the 1.1 reader sends files of trimmed surfaces here */
+    size_t len;
+    char *t = iges_text(square, 8, 0, &len);
+    bs_surface *s = NULL;
+    bs_parse_error err;
+    CHECK(bs_surface_read_iges(t, len, &err, &s) == BS_ERR_PARSE && s == NULL &&
+          strstr(err.message, "1 trimmed surfaces (144); read it with bs_model_read_iges") != NULL);
+    free(t);
+    bs_model *m = (bs_model *)&err;
+    CHECK(bs_model_read_iges(NULL, 1, &err, &m) == BS_ERR_INVALID_ARG && m == NULL);
+    CHECK(bs_model_read_iges_file(NULL, &err, &m) == BS_ERR_INVALID_ARG);
+    CHECK(bs_model_read_iges_file(BS_CAD_DIR "/missing.igs", &err, &m) == BS_ERR_IO && m == NULL);
+}
+
+int main(void)
+{
+    test_small();
+    test_refusals();
+    test_parts();
+    return bs_test_exit("test_iges_model");
+}
