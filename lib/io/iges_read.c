@@ -180,6 +180,24 @@ static bs_status read_128(const iges *g, size_t de, bsi_growing *vals, bs_surfac
     return st;
 }
 
+/* A file without a 128: what it holds instead, and the reader of models for trimmed ones. */
+static bs_status no_bspline(const iges *g)
+{
+    size_t n = g->count[IGES_D] / 2, trimmed = 0, brep = 0;
+    for (size_t de = 0; de < g->count[IGES_D]; de += 2) {
+        long type;
+        if (bsi_iges_de_field(g, de, 1, &type) != BS_OK)
+            return BS_ERR_PARSE;
+        trimmed += type == 144 || type == 143;
+        brep += type == 186;
+    }
+    size_t line = g->first[IGES_D] + 1;
+    if (trimmed > 0 || brep > 0)
+        return bsi_fail(g->err, line, 1, "no 128 surface: the file holds %zu %s; read it with bs_model_read_iges",
+                        trimmed ? trimmed : brep, trimmed ? "trimmed surfaces (144)" : "B-reps (186)");
+    return bsi_fail(g->err, line, 1, "no untrimmed B-spline surface (128) among the %zu entities", n);
+}
+
 bs_status bs_surface_read_iges(const char *text, size_t len, bs_parse_error *err, bs_surface **out)
 {
     if (out != NULL)
@@ -206,6 +224,8 @@ bs_status bs_surface_read_iges(const char *text, size_t len, bs_parse_error *err
         if (st == BS_OK && type == 128)
             st = read_128(&g, de, &vals, s);
     }
+    if (st == BS_OK && bs_surface_count(s) == 0)
+        st = no_bspline(&g);
     free(vals.data);
     free(g.rec);
     if (st != BS_OK) {
