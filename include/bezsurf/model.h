@@ -303,6 +303,30 @@ BS_API bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *
                                    const bs_cview *u, const bs_cview *v, double tol,
                                    unsigned char *where);
 
+/**
+ * @brief Area of the faces, volume enclosed by the closed shells and centroid, computed on the
+ * exact surfaces.
+ * Each face's integrals are taken over its trimmed parameter domain by Green's theorem: a line
+ * integral along the exact trim curves of an inner integral across the face, both by adaptive
+ * Gauss-Kronrod quadrature whose error estimates are held below rel_tol times the quantity's
+ * scale (docs/models.md). The volume is the divergence theorem over the closed shells, each face
+ * with its outward side; faces of open shells count in the area only.
+ * @param[in]  m         the model.
+ * @param[in]  rel_tol   relative tolerance, from 1e-12 up to 0.1 (1e-10 is met on the parts of
+ *                       data/cad/, docs/models.md).
+ * @param[out] area      NULL or: the total area of the faces.
+ * @param[out] volume    NULL or: the volume enclosed by the closed shells (NaN when no shell is
+ *                       closed).
+ * @param[out] centroid  NULL or 3 doubles: the centroid of that volume, or of the area when no
+ *                       shell is closed (NaN for an empty model).
+ * @return BS_OK; BS_ERR_INVALID_ARG if m is NULL; BS_ERR_DOMAIN if rel_tol is out of range or
+ *         NaN; BS_ERR_UNSUPPORTED if a face's integrals do not converge within the work cap (a
+ *         trim loop that is not closed); nothing is written on failure.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_properties(const bs_model *m, double rel_tol, double *area,
+                                     double *volume, double *centroid);
+
 #ifdef __cplusplus
 }
 #endif

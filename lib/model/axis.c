@@ -50,6 +50,16 @@ double bsi_axis_native(const bsi_axis *a, size_t k, double s)
     return b0 + s * (b1 - b0);
 }
 
+double bsi_axis_rate(const bsi_axis *a, size_t k, double x)
+{
+    double b0 = a->breaks[k], b1 = a->breaks[k + 1];
+    if (a->kind != BSI_AXIS_ANGULAR)
+        return 1.0 / (b1 - b0);
+    double half = 0.5 * a->radians * (b1 - b0), phi = a->radians * (x - b0);
+    double c = cos(0.5 * (phi - half));
+    return a->radians / (4.0 * tan(0.5 * half) * c * c);
+}
+
 bs_status bsi_axis_make(int kind, double radians, double x0, double x1, const double *inner,
                         size_t ninner, bsi_axis *a)
 {

@@ -57,6 +57,34 @@ int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p)
     return bs_patch_eval(bs_surface_get(m->surface, patch), 1, &cu, &cv, pos, NULL, NULL) == BS_OK;
 }
 
+int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
+                      double *pv)
+{
+    const bsi_face *face = &m->faces[f];
+    u = into_box(u, face->box[0], face->box[1], face->period[0]);
+    v = into_box(v, face->box[2], face->box[3], face->period[1]);
+    double cu = face->swap ? v : u, cv = face->swap ? u : v;
+    size_t i, j;
+    double s, t;
+    if (!bsi_axis_locate(&face->au, cu, &i, &s) || !bsi_axis_locate(&face->av, cv, &j, &t))
+        return 0;
+    double ds = bsi_axis_rate(&face->au, i, cu), dt = bsi_axis_rate(&face->av, j, cv);
+    double ps[3], pt[3];
+    bs_cview su = {&s, 1, 0}, tv = {&t, 1, 0};
+    bs_view pos[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
+    bs_view dsv[3] = {{&ps[0], 1, 0}, {&ps[1], 1, 0}, {&ps[2], 1, 0}};
+    bs_view dtv[3] = {{&pt[0], 1, 0}, {&pt[1], 1, 0}, {&pt[2], 1, 0}};
+    const bs_patch *patch = bs_surface_get(m->surface, face->first_patch + i * face->av.n + j);
+    if (bs_patch_eval(patch, 1, &su, &tv, pos, dsv, dtv) != BS_OK)
+        return 0;
+    for (int c = 0; c < 3; c++) {
+        double along_cu = ps[c] * ds, along_cv = pt[c] * dt;
+        pu[c] = face->swap ? along_cv : along_cu;
+        pv[c] = face->swap ? along_cu : along_cv;
+    }
+    return 1;
+}
+
 /* The argument rules shared by the entry points; on success every face id is valid. */
 static bs_status check_args(const bs_model *m, size_t n, const uint32_t *faces, const bs_cview *u,
                             const bs_cview *v, const bs_view *a, size_t ka, const bs_view *b, size_t kb)
