@@ -47,6 +47,15 @@ class Face(NamedTuple):
     box: Tuple[float, float, float, float]
 
 
+class Properties(NamedTuple):
+    """Area of the faces, volume enclosed by the closed shells (NaN when none is closed) and the
+    centroid of that volume (of the area when no shell is closed), of :meth:`Model.properties`."""
+
+    area: float
+    volume: float
+    centroid: Tuple[float, float, float]
+
+
 class FaceEvaluation(NamedTuple):
     """Positions (n, 3) (``position``, as :class:`Evaluation`), outward unit normals (n, 3) and normal kinds (n,) of
     :meth:`Model.face_eval`; for one point the leading n axis is dropped."""
@@ -248,6 +257,19 @@ class Model(Handle):
             return np.array(values, dtype=np.uint8)
         return values
 
+    def properties(self, rel_tol: float = 1e-10) -> Properties:
+        """Area, enclosed volume and centroid on the exact surfaces, within ``rel_tol``
+        (1e-12 .. 0.1) of each (Gauss-Kronrod quadrature over the trimmed faces)."""
+        rel_tol = A.real(rel_tol, "rel_tol")
+        if not (1e-12 <= rel_tol <= 0.1):
+            raise ValueError(f"rel_tol must be in [1e-12, 0.1], not {rel_tol}")
+        area = ctypes.c_double()
+        volume = ctypes.c_double()
+        centroid = (ctypes.c_double * 3)()
+        LIB.bs_model_properties(self._ptr, rel_tol, ctypes.addressof(area),
+                                ctypes.addressof(volume), ctypes.addressof(centroid))
+        return Properties(area.value, volume.value, (centroid[0], centroid[1], centroid[2]))
+
     def to_obj(self) -> str:
         """The model as OBJ free-form text (surfaces with trim and hole loops), read back
         exactly by :meth:`read_obj`."""
@@ -293,5 +315,5 @@ def _rebuild(fmt: str, source: Any) -> Model:
     return Model._read_text(fmt, source)
 
 
-__all__ = ["Model", "Face", "FaceEvaluation", "FACE_KINDS", "TRIM_OUTSIDE", "TRIM_INSIDE",
+__all__ = ["Model", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_OUTSIDE", "TRIM_INSIDE",
            "TRIM_ON"]

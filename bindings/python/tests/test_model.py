@@ -22,6 +22,16 @@ def ref_faces(part):
     raise AssertionError(f"{part}.ref has no face count")
 
 
+def ref_values(part):
+    """The kernel's area and volume of a part (its .ref file)."""
+    out = {}
+    for line in (CAD_DIR / f"{part}.ref").read_text().splitlines():
+        key, _, value = line.partition(" ")
+        if key in ("area", "volume"):
+            out[key] = float(value)
+    return out
+
+
 def cube():
     """A unit cube of six bilinear patches."""
     c = [[[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0]], [[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]],
@@ -59,6 +69,18 @@ class ModelOfSurfaceTest(PlainTestCase):
         one = m.face_eval(3, 0.5, 0.5)
         self.assertEqual(len(plain(one.position)), 3)
         self.assertEqual(len(m.surface), 32)
+
+    def test_properties_of_the_cube(self):
+        # the cube's patches face inwards (S_u x S_v into the cube): its volume is -1
+        p = bezsurf.Model(cube()).properties()
+        self.assertAlmostEqual(p.area, 6.0, delta=1e-12)
+        self.assertAlmostEqual(p.volume, -1.0, delta=1e-12)
+        for c in p.centroid:
+            self.assertAlmostEqual(c, 0.5, delta=1e-12)
+        open_model = bezsurf.Model(bezsurf.Surface.builtin("teapot"))
+        self.assertTrue(math.isnan(open_model.properties(1e-6).volume))
+        with self.assertRaises(ValueError):
+            open_model.properties(0.5)
 
     def test_copy_and_pickle(self):
         m = bezsurf.Model(cube())
@@ -98,6 +120,10 @@ class CadPartsTest(PlainTestCase):
                     self.assertEqual(len(m), ref_faces(part))
                     if not name.endswith(".igs") or "brep" in name:
                         self.assertTrue(all(m.shells), m.shells)
+                    ref = ref_values(part)
+                    p = m.properties(1e-10)
+                    self.assertAlmostEqual(p.area, ref["area"], delta=1e-9 * ref["area"])
+                    self.assertAlmostEqual(p.volume, ref["volume"], delta=1e-9 * ref["volume"])
 
     def test_points_of_a_sphere(self):
         m = bezsurf.Model.read(CAD_DIR / "sphere.step")

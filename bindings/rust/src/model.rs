@@ -84,6 +84,17 @@ pub enum Trim {
     On,
 }
 
+/// Area, enclosed volume and centroid of [`Model::properties`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Properties {
+    /// Total area of the faces.
+    pub area: f64,
+    /// Volume enclosed by the closed shells (NaN when no shell is closed).
+    pub volume: f64,
+    /// Centroid of that volume (of the area when no shell is closed).
+    pub centroid: [f64; 3],
+}
+
 /// Positions, outward unit normals and normal kinds of [`Model::face_eval`], one per point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FaceEval {
@@ -404,6 +415,17 @@ impl Model {
                 _ => Trim::Outside,
             })
             .collect())
+    }
+
+    /// Area, enclosed volume and centroid on the exact surfaces, within `rel_tol` (1e-12 ..
+    /// 0.1, else `Domain`) of each (`bs_model_properties`).
+    pub fn properties(&self, rel_tol: f64) -> Result<Properties> {
+        let (mut area, mut volume, mut centroid) = (0.0, 0.0, [0.0; 3]);
+        // SAFETY: self is live; the outputs are valid for 1, 1 and 3 doubles.
+        check(unsafe {
+            sys::bs_model_properties(self.as_ptr(), rel_tol, &mut area, &mut volume, centroid.as_mut_ptr())
+        })?;
+        Ok(Properties { area, volume, centroid })
     }
 
     /// The model as OBJ free-form text with trim and hole loops (`bs_model_write_obj`).

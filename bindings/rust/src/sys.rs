@@ -890,4 +890,12 @@ extern "C" {
         tol: f64,
         where_: *mut u8,
     ) -> bs_status;
+    /// `bs_model_properties` (model.h, since 1.2).
+    pub fn bs_model_properties(
+        m: *const bs_model,
+        rel_tol: f64,
+        area: *mut f64,
+        volume: *mut f64,
+        centroid: *mut f64,
+    ) -> bs_status;
 }

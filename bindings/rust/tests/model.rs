@@ -15,6 +15,15 @@ fn ref_faces(part: &str) -> usize {
     line[6..].trim().parse().unwrap()
 }
 
+fn ref_measures(part: &str) -> (f64, f64) {
+    let text = std::fs::read_to_string(cad_dir().join(format!("{part}.ref"))).unwrap();
+    let value = |key: &str| -> f64 {
+        let line = text.lines().find(|l| l.starts_with(key)).unwrap();
+        line[key.len()..].trim().parse().unwrap()
+    };
+    (value("area "), value("volume "))
+}
+
 #[test]
 fn teapot_model_evaluates_as_its_patches() {
     let pot = Surface::builtin("teapot").unwrap();
@@ -48,6 +57,9 @@ fn teapot_model_evaluates_as_its_patches() {
     assert_eq!(m.face_eval(&[0, 1], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::Size);
     assert_eq!(m.face_eval(&[32], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::InvalidArg);
     assert_eq!(m.surface().unwrap().len(), 32);
+    let p = m.properties(1e-6).unwrap();
+    assert!(p.area > 0.0 && p.volume.is_nan());
+    assert_eq!(m.properties(0.5).unwrap_err().kind(), ErrorKind::Domain);
 }
 
 #[test]
@@ -56,6 +68,14 @@ fn cad_parts_read_with_their_face_counts() {
         for file in [format!("{part}.step"), format!("{part}.igs"), format!("{part}-brep.igs")] {
             let m = Model::read_file(cad_dir().join(&file)).unwrap_or_else(|e| panic!("{file}: {e}"));
             assert_eq!(m.face_count(), ref_faces(part), "{file}");
+            let (area, volume) = ref_measures(part);
+            let p = m.properties(1e-10).unwrap();
+            assert!((p.area - area).abs() <= 1e-9 * area, "{file}: area {} against {area}", p.area);
+            assert!(
+                (p.volume - volume).abs() <= 1e-9 * volume,
+                "{file}: volume {} against {volume}",
+                p.volume
+            );
         }
     }
 }
