@@ -313,12 +313,15 @@ BS_API bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *
  * with its outward side; faces of open shells count in the area only.
  * @param[in]  m         the model.
  * @param[in]  rel_tol   relative tolerance, from 1e-12 up to 0.1 (1e-10 is met on the parts of
- *                       data/cad/, docs/models.md).
+ *                       data/cad/, docs/models.md). A model far from the origin is held to
+ *                       16 eps times (its largest coordinate / its box's diagonal) when that is
+ *                       larger: its coordinates carry no more digits.
  * @param[out] area      NULL or: the total area of the faces.
  * @param[out] volume    NULL or: the volume enclosed by the closed shells (NaN when no shell is
  *                       closed).
  * @param[out] centroid  NULL or 3 doubles: the centroid of that volume, or of the area when no
- *                       shell is closed (NaN for an empty model).
+ *                       shell is closed (NaN for an empty model); within rel_tol of the box's
+ *                       diagonal.
  * @return BS_OK; BS_ERR_INVALID_ARG if m is NULL; BS_ERR_DOMAIN if rel_tol is out of range or
  *         NaN; BS_ERR_UNSUPPORTED if a face's integrals do not converge within the work cap (a
  *         trim loop that is not closed); nothing is written on failure.

@@ -13,10 +13,13 @@
  * patch breaks, the outer one along each exact Bezier segment of the trims. A first pass at a
  * coarse tolerance gives each quantity's size; the second holds every error estimate below
  * rel_tol times that size. Points are taken relative to the centre of the model's box, so that
- * a part far from the origin loses no digits to the cancellation of its faces' volumes.
+ * a part far from the origin loses no digits to the cancellation of its faces' volumes; its
+ * coordinates still carry rounding of their magnitude, so the tolerance is never below
+ * 16 eps times (the largest coordinate / the box's diagonal).
  */
 #include "model/quadrature.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -249,11 +252,16 @@ bs_status bs_model_properties(const bs_model *m, double rel_tol, double *area, d
                 hi[c] = fmax(hi[c], phi[c]);
             }
     }
-    double diag = 0.0;
+    double diag = 0.0, far = 0.0;
     for (int c = 0; c < 3; c++) {
         ctx.centre[c] = m->nface ? 0.5 * (lo[c] + hi[c]) : 0.0;
         diag = m->nface ? hypot(diag, hi[c] - lo[c]) : 0.0;
+        far = m->nface ? fmax(far, fmax(fabs(lo[c]), fabs(hi[c]))) : 0.0;
     }
+    /* coordinates far from the origin carry rounding of their magnitude: no quantity is known
+     * better than that relative to the model's size */
+    double floor_rel = diag > 0.0 ? 16.0 * DBL_EPSILON * far / diag : 0.0;
+    rel_tol = fmax(rel_tol, floor_rel);
     /* pass 1: each quantity's size, at a coarse tolerance relative to the model's size */
     double size_of[NQ], tol[NQ], coarse_a[NQ] = {0}, coarse_v[NQ] = {0};
     double d2 = diag * diag, scale[NQ] = {d2, d2 * diag, 0, 0, 0, 0, 0, 0};
@@ -269,7 +277,9 @@ bs_status bs_model_properties(const bs_model *m, double rel_tol, double *area, d
     double sum_a[NQ] = {0}, sum_v[NQ] = {0};
     for (int q = 0; q < NQ; q++) {
         double big = q == AREA || q >= AMOM ? fabs(coarse_a[q]) : fabs(coarse_v[q]);
-        size_of[q] = fmax(big, 1e-6 * scale[q]);
+        /* a moment is held to the model's scale (the centroid to rel_tol of the diagonal); a
+         * small area or volume to a thousandth of it */
+        size_of[q] = q >= VMOM ? fmax(big, scale[q]) : fmax(big, 1e-3 * scale[q]);
         tol[q] = 0.25 * rel_tol * size_of[q];
     }
     if (m->nface > 0 && !model_integrals(&ctx, tol, sum_a, sum_v))
