@@ -16,7 +16,7 @@
 #define CHAIN 4      /* continuation steps from one segment end to the next */
 
 typedef struct node {
-    double t, uv[2], d[2], dist;
+    double t, uv[2], d[2], dl[2], dist; /* d: uv' onwards, dl: uv' before (they differ at corners) */
     int pole;
 } node;
 
@@ -30,23 +30,30 @@ typedef struct fitter {
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-/* The node's derivative uv' = J+ C'(t); at a pole only the defined parameter moves. */
-static void derivative(const fitter *F, node *a)
+/* uv' = J+ C'(t) with C' from the edge's piece after t (left = 0) or before it (left = 1); at a
+ * pole only the defined parameter moves. */
+static void derivative(const fitter *F, node *a, int left)
 {
-    double c[3], dc[3], p[3], du[3], dv[3];
-    a->d[0] = a->d[1] = 0.0;
-    if (!bsi_pc_edge(F->edge, a->t, c, dc) || !bsi_pc_eval(F->S, a->uv, p, du, dv))
+    double c[3], dc[3], p[3], du[3], dv[3], *d = left ? a->dl : a->d;
+    d[0] = d[1] = 0.0;
+    if (!bsi_pc_edge(F->edge, a->t, left, c, dc) || !bsi_pc_eval(F->S, a->uv, p, du, dv))
         return; /* LCOV_EXCL_LINE: the foot was evaluated there */
     double a11 = dot3(du, du), a12 = dot3(du, dv), a22 = dot3(dv, dv);
     double b1 = dot3(du, dc), b2 = dot3(dv, dc), det = a11 * a22 - a12 * a12;
     if (a->pole & BSI_PC_POLE_U) {
-        a->d[1] = a22 > 0.0 ? b2 / a22 : 0.0;
+        d[1] = a22 > 0.0 ? b2 / a22 : 0.0;
     } else if (a->pole & BSI_PC_POLE_V) {
-        a->d[0] = a11 > 0.0 ? b1 / a11 : 0.0;
+        d[0] = a11 > 0.0 ? b1 / a11 : 0.0;
     } else if (det > 0.0) {
-        a->d[0] = (a22 * b1 - a12 * b2) / det;
-        a->d[1] = (a11 * b2 - a12 * b1) / det;
+        d[0] = (a22 * b1 - a12 * b2) / det;
+        d[1] = (a11 * b2 - a12 * b1) / det;
     }
+}
+
+static void derivatives(const fitter *F, node *a)
+{
+    derivative(F, a, 0);
+    derivative(F, a, 1);
 }
 
 /* The foot of the edge's point at t (start: a nearby uv, or NULL) with its derivative along t.
@@ -54,7 +61,7 @@ static void derivative(const fitter *F, node *a)
 static bs_status project_node(const fitter *F, double t, const double *start, node *out)
 {
     double c[3], dc[3];
-    if (!bsi_pc_edge(F->edge, t, c, dc))
+    if (!bsi_pc_edge(F->edge, t, 0, c, dc))
         return BS_ERR_DOMAIN; /* LCOV_EXCL_LINE: t lies in the edge's range */
     bs_status st = bsi_pc_project(F->S, c, start, F->tol, out->uv, &out->dist, &out->pole);
     if (st != BS_OK)
@@ -66,7 +73,7 @@ static bs_status project_node(const fitter *F, double t, const double *start, no
         out->uv[0] = start[0];
     if (start != NULL && (out->pole & BSI_PC_POLE_V))
         out->uv[1] = start[1];
-    derivative(F, out);
+    derivatives(F, out);
     return BS_OK;
 }
 
@@ -77,7 +84,7 @@ static void hermite(const node *a, const node *b, double P[4][2])
     for (int k = 0; k < 2; k++) {
         P[0][k] = a->uv[k];
         P[1][k] = a->uv[k] + h * a->d[k];
-        P[2][k] = b->uv[k] - h * b->d[k];
+        P[2][k] = b->uv[k] - h * b->dl[k];
         P[3][k] = b->uv[k];
     }
 }
@@ -105,7 +112,7 @@ static bs_status chain(const fitter *F, node *a, double t1, node *b)
         if (k == 1 && F->n == 1 && (a->pole & BSI_PC_POLE_V))
             a->uv[1] = b->uv[1];
         if (k == 1 && F->n == 1 && a->pole)
-            derivative(F, a);
+            derivatives(F, a);
         prev = *b;
     }
     return BS_OK;
@@ -128,7 +135,7 @@ static bs_status fits(const fitter *F, const node *a, const node *b, node *mid, 
             return st;
         if (i == 0)
             *mid = foot;
-        (void)bsi_pc_edge(F->edge, t, c, dc);
+        (void)bsi_pc_edge(F->edge, t, 0, c, dc);
         if (!bsi_pc_eval(F->S, uv, p, du, dv))
             return BS_OK;
         if (!(hypot(hypot(p[0] - c[0], p[1] - c[1]), p[2] - c[2]) <= 0.5 * F->tol + foot.dist))

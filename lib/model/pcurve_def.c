@@ -80,6 +80,7 @@ static bs_status plane_trim(const bsi_surface_def *def, int swap, const bsi_curv
     bs_status st = bsi_axis_copy(&edge->axis, &c.axis);
     if (st != BS_OK)
         return st;
+    /* NOLINTNEXTLINE(clang-analyzer-optin.portability.UnixAPI): np >= 1, axis.n >= 1 was checked */
     if ((c.hom = malloc(np * 3 * sizeof *c.hom)) == NULL) {
         bsi_axis_free(&c.axis);
         return BS_ERR_NO_MEMORY;

@@ -37,8 +37,9 @@ int bsi_pc_eval(const bsi_pc_surf *S, const double *uv, double *p, double *du, d
  * BS_ERR_NO_MEMORY, BS_ERR_DOMAIN (no patch answers). */
 bs_status bsi_pc_project(const bsi_pc_surf *S, const double *q, const double *start, double tol,
                          double *uv, double *dist, int *pole);
-/* The 3-D edge's point and derivative d/dt at native t: 1, or 0 outside its range. */
-int bsi_pc_edge(const bsi_curve *c, double t, double *p, double *dp);
+/* The 3-D edge's point and derivative d/dt at native t: 1, or 0 outside its range. At a break
+ * between pieces the derivative is the later piece's, the earlier one's when left is 1. */
+int bsi_pc_edge(const bsi_curve *c, double t, int left, double *p, double *dp);
 
 /* The trim of edge on S (bsi_pcurve_project): the first foot near hint (NULL: anywhere), then
  * without a hint periodic directions placed by whole periods into place_box (NULL: left). */

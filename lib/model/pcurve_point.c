@@ -118,17 +118,6 @@ static double into_box(double x, double lo, double hi, double period)
     return shifted >= lo && shifted <= hi ? shifted : x;
 }
 
-/* d(local s)/d(native x) on piece k of an axis at native x. */
-static double axis_rate(const bsi_axis *a, size_t k, double x)
-{
-    double b0 = a->breaks[k], b1 = a->breaks[k + 1];
-    if (a->kind != BSI_AXIS_ANGULAR)
-        return 1.0 / (b1 - b0);
-    double half = 0.5 * a->radians * (b1 - b0), phi = a->radians * (x - b0);
-    double c = cos(0.5 * (phi - half));
-    return a->radians * 0.25 / (tan(0.5 * half) * c * c);
-}
-
 static int patch_eval(const bsi_pc_surf *S, const double *uv, double *p, double *du, double *dv)
 {
     double x = into_box(uv[0], S->box[0], S->box[1], S->period[0]);
@@ -145,7 +134,7 @@ static int patch_eval(const bsi_pc_surf *S, const double *uv, double *p, double 
     bs_view vt[3] = {{&dt[0], 1, 0}, {&dt[1], 1, 0}, {&dt[2], 1, 0}};
     if (bs_patch_eval(bs_surface_get(S->s, S->first + i * S->av->n + j), 1, &vu, &vv, pos, vs, vt) != BS_OK)
         return 0; /* LCOV_EXCL_LINE: the views are valid */
-    double ru = axis_rate(S->au, i, cu), rv = axis_rate(S->av, j, cv);
+    double ru = bsi_axis_rate(S->au, i, cu), rv = bsi_axis_rate(S->av, j, cv);
     for (int c = 0; c < 3; c++) {
         (S->swap ? dv : du)[c] = ds[c] * ru;
         (S->swap ? du : dv)[c] = dt[c] * rv;
@@ -203,7 +192,7 @@ static int newton(const bsi_pc_surf *S, const double *q, const double *start, do
         } else {
             return 0;
         }
-        for (int k = 0; k < 2; k++) {
+        for (size_t k = 0; k < 2; k++) {
             x[k] += step[k];
             if (!(S->period[k] > 0.0))
                 x[k] = fmin(fmax(x[k], S->box[2 * k]), S->box[2 * k + 1]);
@@ -251,7 +240,7 @@ static bs_status global_foot(const bsi_pc_surf *S, const double *q, double *uv)
 bs_status bsi_pc_project(const bsi_pc_surf *S, const double *q, const double *start, double tol,
                          double *uv, double *dist, int *pole)
 {
-    double p[3], du[3], dv[3], x[2];
+    double p[3], du[3], dv[3], x[2] = {0.0, 0.0};
     if (S->def != NULL) {
         closed_inverse(S->def, q, &x[S->swap], &x[!S->swap]);
         unwrap(S, start, x);
@@ -270,12 +259,16 @@ bs_status bsi_pc_project(const bsi_pc_surf *S, const double *q, const double *st
     return BS_OK;
 }
 
-int bsi_pc_edge(const bsi_curve *c, double t, double *p, double *dp)
+int bsi_pc_edge(const bsi_curve *c, double t, int left, double *p, double *dp)
 {
     size_t k;
     double s;
     if (c->dim != 3 || !bsi_axis_locate(&c->axis, t, &k, &s))
         return 0;
+    if (left && k > 0 && t == c->axis.breaks[k]) { /* the piece ending there */
+        k--;
+        s = 1.0;
+    }
     /* de Casteljau on the homogeneous points, keeping the last two for the derivative */
     size_t n = c->degree;
     double h[BS_MAX_DEGREE + 1][4];
@@ -289,7 +282,7 @@ int bsi_pc_edge(const bsi_curve *c, double t, double *p, double *dp)
         pt[j] = (1.0 - s) * h[0][j] + s * h[1][j];
         d[j] = (double)n * (h[1][j] - h[0][j]);
     }
-    double rate = axis_rate(&c->axis, k, t);
+    double rate = bsi_axis_rate(&c->axis, k, t);
     for (int j = 0; j < 3; j++) {
         p[j] = pt[j] / pt[3];
         dp[j] = (d[j] - p[j] * d[3]) / pt[3] * rate;

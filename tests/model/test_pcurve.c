@@ -5,7 +5,7 @@
  * the unwrapping and placement of periodic parameters, loops closed across a seam; refusals. */
 #include "harness.h"
 
-#include "model/internal.h"
+#include "model/pcurve_internal.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -51,6 +51,27 @@ static void set_hom(bsi_curve *c, size_t k, size_t i, const double *p, double w)
     for (size_t j = 0; j < c->dim; j++)
         h[j] = w * p[j];
     h[c->dim] = w;
+}
+
+/* c + rx cos t x + ry sin t y, t in [t0, t1] radians: exact quadratic arcs (affine images of
+ * circular ones). */
+static bsi_curve ellipse(const double *c, const double *x, const double *y, double rx, double ry,
+                         double t0, double t1)
+{
+    bsi_axis a;
+    CHECK(bsi_axis_make(BSI_AXIS_ANGULAR, 1.0, t0, t1, NULL, 0, &a) == BS_OK);
+    bsi_curve k = alloc_curve(3, 2, a);
+    for (size_t s = 0; s < a.n; s++) {
+        double a0 = a.breaks[s], a1 = a.breaks[s + 1], half = 0.5 * (a1 - a0), mid = a0 + half;
+        double ang[3] = {a0, mid, a1}, sc[3] = {1.0, 1.0 / cos(half), 1.0}, w[3] = {1.0, cos(half), 1.0};
+        for (size_t i = 0; i < 3; i++) {
+            double p[3];
+            for (int j = 0; j < 3; j++)
+                p[j] = c[j] + sc[i] * (rx * cos(ang[i]) * x[j] + ry * sin(ang[i]) * y[j]);
+            set_hom(&k, s, i, p, w[i]);
+        }
+    }
+    return k;
 }
 
 /* c + r (cos t x + sin t y), t in [t0, t1] radians: exact quadratic arcs. */
@@ -377,6 +398,152 @@ static void test_analytic(void)
     bsi_curve_free(&e);
 }
 
+/* ---- surfaces of patches built here (cylinder, sphere): continuation across patches ---- */
+
+/* The quadratic rational arc over angles [a0, a1]: (cos, sin) of its points and its weights. */
+static void arc3(double a0, double a1, double out[3][3])
+{
+    double half = 0.5 * (a1 - a0), mid = a0 + half;
+    out[0][0] = cos(a0), out[0][1] = sin(a0), out[0][2] = 1.0;
+    out[1][0] = cos(mid) / cos(half), out[1][1] = sin(mid) / cos(half), out[1][2] = cos(half);
+    out[2][0] = cos(a1), out[2][1] = sin(a1), out[2][2] = 1.0;
+}
+
+typedef struct patched {
+    bs_surface *s;
+    bsi_axis au, av;
+    bsi_pc_surf S;
+} patched;
+
+/* d as patches over u in [0, 2 pi], v over [v0, v1] (cylinder) or [-pi/2, pi/2] (sphere). */
+static void make_patched(const bsi_surface_def *d, double v0, double v1, patched *out)
+{
+    int sphere = d->kind == BS_FACE_SPHERE;
+    CHECK(bs_surface_create(&out->s) == BS_OK);
+    CHECK(bsi_axis_make(BSI_AXIS_ANGULAR, 1.0, 0.0, 2.0 * PI, NULL, 0, &out->au) == BS_OK);
+    CHECK(bsi_axis_make(sphere ? BSI_AXIS_ANGULAR : BSI_AXIS_LINEAR, 1.0, v0, v1, NULL, 0, &out->av) == BS_OK);
+    for (size_t i = 0; i < out->au.n; i++)
+        for (size_t j = 0; j < out->av.n; j++) {
+            double U[3][3], W[3][3] = {{1, v0, 1}, {1, v1, 1}, {0, 0, 0}};
+            arc3(out->au.breaks[i], out->au.breaks[i + 1], U);
+            if (sphere)
+                arc3(out->av.breaks[j], out->av.breaks[j + 1], W);
+            size_t nv = sphere ? 3 : 2;
+            double ctrl[9 * 3], w[9];
+            for (size_t a = 0; a < 3; a++)
+                for (size_t b = 0; b < nv; b++) {
+                    double rho = sphere ? d->r * W[b][0] : d->r, z = sphere ? d->r * W[b][1] : W[b][1];
+                    local_point(d, rho * U[a][0], rho * U[a][1], z, ctrl + (a * nv + b) * 3);
+                    w[a * nv + b] = U[a][2] * (sphere ? W[b][2] : 1.0);
+                }
+            bs_patch *p = NULL;
+            CHECK(bs_patch_create(2, nv - 1, 3, ctrl, w, &p) == BS_OK);
+            CHECK(bs_surface_add(out->s, p, NULL) == BS_OK);
+            bs_patch_destroy(p);
+        }
+    memset(&out->S, 0, sizeof out->S);
+    out->S.s = out->s;
+    out->S.au = &out->au;
+    out->S.av = &out->av;
+    out->S.box[0] = 0.0, out->S.box[1] = 2.0 * PI, out->S.box[2] = v0, out->S.box[3] = v1;
+    out->S.period[0] = 2.0 * PI;
+}
+
+static void free_patched(patched *p)
+{
+    bs_surface_destroy(p->s);
+    bsi_axis_free(&p->au);
+    bsi_axis_free(&p->av);
+}
+
+static bsi_trim run_patched(const patched *P, const bsi_surface_def *d, const double *hint,
+                            bsi_curve *edge, const char *what)
+{
+    bsi_trim t;
+    bs_status st = bsi_pc_fit(&P->S, edge, hint, P->S.box, TOL, &t);
+    CHECKF(st == BS_OK, "%s patches %s: status %d", kind_name(d->kind), what, st);
+    if (st == BS_OK) {
+        check_ctx x = {d, NULL, 0, 0};
+        double e = worst_error(&x, edge, &t);
+        printf("  %-8s %-28s %4zu segments  worst %.3g (tol %.3g)\n", kind_name(d->kind), what,
+               t.uv.axis.n, e, TOL);
+        CHECKF(e <= TOL, "%s patches %s: %g", kind_name(d->kind), what, e);
+    }
+    return t;
+}
+
+static void test_patches(void)
+{
+    double uv0[2], uv1[2], c[3], x[3], y[3], p[3], d[3];
+    bsi_surface_def cy = def_of(BS_FACE_CYLINDER, 2.0, 0.0);
+    patched P;
+    make_patched(&cy, -1.0, 4.0, &P);
+    local_point(&cy, 0.0, 0.0, 1.5, c);
+    local_dir(&cy, 1.0, 0.0, 0.0, x);
+    local_dir(&cy, 0.0, 1.0, 0.0, y);
+    bsi_curve e = circle(c, x, y, 2.0, 0.0, 2.0 * PI);
+    bsi_trim t = run_patched(&P, &cy, NULL, &e, "circle, full turn");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0]) < 1e-9 && fabs(uv1[0] - 2.0 * PI) < 1e-9, "u %g .. %g", uv0[0], uv1[0]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    /* the cut by a tilted plane through the axis: an ellipse; v = 2 tan(0.5) cos u */
+    double tx[3];
+    local_dir(&cy, 1.0 / sqrt(1.0 + tan(0.5) * tan(0.5)), 0.0, tan(0.5) / sqrt(1.0 + tan(0.5) * tan(0.5)), tx);
+    local_point(&cy, 0.0, 0.0, 1.0, c);
+    e = ellipse(c, tx, y, 2.0 * sqrt(1.0 + tan(0.5) * tan(0.5)), 2.0, 0.0, 2.0 * PI);
+    t = run_patched(&P, &cy, NULL, &e, "ellipse (tilted cut)");
+    bsi_curve_free(&t.uv);
+    t = run_def(&cy, 0, NULL, NULL, &e, "ellipse (tilted cut)");
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    local_point(&cy, 0.0, 0.0, 1.5, c);
+    e = circle(c, x, y, 2.0, -0.25 * PI, 0.25 * PI);
+    t = run_patched(&P, &cy, NULL, &e, "arc across the seam");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0] - 1.75 * PI) < 1e-9 && fabs(uv1[0] - 2.25 * PI) < 1e-9, "u %g .. %g", uv0[0], uv1[0]);
+    bsi_curve_free(&t.uv);
+    double hint[2] = {-8.0, 0.0};
+    t = run_patched(&P, &cy, hint, &e, "arc, hint");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0] - (-0.25 * PI - 2.0 * PI)) < 1e-9, "u %g", uv0[0]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    local_point(&cy, 2.0, 0.0, -1.0, p);
+    local_dir(&cy, 0.0, 0.0, 1.0, d);
+    e = line(p, d, 0.0, 5.0);
+    t = run_patched(&P, &cy, NULL, &e, "seam line");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0]) < 1e-9 && fabs(uv1[0]) < 1e-9, "u %g .. %g", uv0[0], uv1[0]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    free_patched(&P);
+
+    bsi_surface_def sp = def_of(BS_FACE_SPHERE, 1.5, 0.0);
+    make_patched(&sp, -0.5 * PI, 0.5 * PI, &P);
+    local_point(&sp, 0.0, 0.0, 1.5 * sin(0.3), c);
+    e = circle(c, x, y, 1.5 * cos(0.3), 0.0, 2.0 * PI);
+    t = run_patched(&P, &sp, NULL, &e, "latitude circle");
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    double z[3], o[3], m[3];
+    local_dir(&sp, 0.0, 0.0, 1.0, z);
+    local_point(&sp, 0.0, 0.0, 0.0, o);
+    local_dir(&sp, cos(1.0), sin(1.0), 0.0, m);
+    e = circle(o, m, z, 1.5, -0.5 * PI, 0.5 * PI);
+    t = run_patched(&P, &sp, NULL, &e, "meridian pole to pole");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0] - 1.0) < 1e-6 && fabs(uv1[0] - 1.0) < 1e-6 && fabs(uv1[1] - 0.5 * PI) < 1e-9,
+           "u %g .. %g, v %g", uv0[0], uv1[0], uv1[1]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    /* an edge away from the sphere */
+    e = circle(o, m, z, 1.6, 0.0, 0.5 * PI);
+    CHECK(bsi_pc_fit(&P.S, &e, NULL, P.S.box, TOL, &t) == BS_ERR_DOMAIN);
+    bsi_curve_free(&e);
+    free_patched(&P);
+}
+
 /* ---- Bezier faces: the model path (certified closest points, Newton continuation) ---- */
 
 /* Solve the n x n system A x = b in place (partial pivoting). */
@@ -498,6 +665,27 @@ static void test_bezier_face(void)
         }
         bsi_curve_free(&e);
     }
+    /* a piecewise edge (two segments, as a B-spline's spans): the images of two halves of a line */
+    {
+        bsi_curve h0 = image_of_line(P, (const double[]){0.05, 0.2}, (const double[]){0.5, 0.9});
+        bsi_curve h1 = image_of_line(P, (const double[]){0.5, 0.9}, (const double[]){0.95, 0.1});
+        bsi_axis ax;
+        CHECK(bsi_axis_make(BSI_AXIS_LINEAR, 1.0, 2.0, 4.0, (const double[]){3.0}, 1, &ax) == BS_OK);
+        bsi_curve two = alloc_curve(3, 6, ax);
+        memcpy(two.hom, h0.hom, 7 * 4 * sizeof(double));
+        memcpy(two.hom + 7 * 4, h1.hom, 7 * 4 * sizeof(double));
+        bsi_trim t;
+        CHECK(bsi_pcurve_project(m, f, &two, TOL, &t) == BS_OK);
+        check_ctx x = {NULL, m, f, 0};
+        double err = worst_error(&x, &two, &t);
+        printf("  bezier   %-28s %4zu segments  worst %.3g (tol %.3g)\n", "two-span edge with a corner",
+               t.uv.axis.n, err, TOL);
+        CHECK(err <= TOL && t.uv.axis.breaks[0] == 2.0 && t.uv.axis.breaks[t.uv.axis.n] == 4.0);
+        bsi_curve_free(&t.uv);
+        bsi_curve_free(&two);
+        bsi_curve_free(&h0);
+        bsi_curve_free(&h1);
+    }
     /* an edge off the face: refused */
     double p[3] = {0.0, 0.0, 50.0}, d[3] = {1.0, 1.0, 0.0};
     bsi_curve off = line(p, d, 0.0, 1.0);
@@ -593,6 +781,8 @@ int main(void)
 {
     printf("closed forms:\n");
     test_analytic();
+    printf("patches built here:\n");
+    test_patches();
     printf("Bezier faces:\n");
     test_bezier_face();
     test_refusals();
