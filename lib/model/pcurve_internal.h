@@ -8,7 +8,7 @@
 
 #include "model/internal.h"
 
-/* A face's surface in native parameters: closed forms (def of kind PLANE .. TORUS), else the
+/* A face's surface in native parameters: closed forms (def of kind CYLINDER .. TORUS), else the
  * patches s[first ..] over the canonical axes au, av (patch (i, j) = first + i * av->n + j). */
 typedef struct bsi_pc_surf {
     const bsi_surface_def *def; /* closed forms, or NULL */
@@ -24,7 +24,7 @@ typedef struct bsi_pc_surf {
 #define BSI_PC_POLE_U 1 /* native u undefined at the point (a sphere's or cone's pole) */
 #define BSI_PC_POLE_V 2
 
-/* 1 when def has closed forms (PLANE, CYLINDER, CONE, SPHERE, TORUS). */
+/* 1 when def has closed forms (CYLINDER, CONE, SPHERE, TORUS). */
 int bsi_pc_closed_form(const bsi_surface_def *def);
 /* Canonical periods of the closed-form kinds (2 pi for angles of closed directions). */
 void bsi_pc_periods(const bsi_surface_def *def, double *pu, double *pv);

@@ -14,14 +14,13 @@ static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1]
 
 int bsi_pc_closed_form(const bsi_surface_def *def)
 {
-    return def != NULL && (def->kind == BS_FACE_PLANE || def->kind == BS_FACE_CYLINDER ||
-                           def->kind == BS_FACE_CONE || def->kind == BS_FACE_SPHERE ||
-                           def->kind == BS_FACE_TORUS);
+    return def != NULL && (def->kind == BS_FACE_CYLINDER || def->kind == BS_FACE_CONE ||
+                           def->kind == BS_FACE_SPHERE || def->kind == BS_FACE_TORUS);
 }
 
 void bsi_pc_periods(const bsi_surface_def *def, double *pu, double *pv)
 {
-    *pu = def->kind == BS_FACE_PLANE ? 0.0 : TWO_PI;
+    *pu = TWO_PI;
     *pv = def->kind == BS_FACE_TORUS ? TWO_PI : 0.0;
 }
 
@@ -38,16 +37,12 @@ static void frame_vector(const bsi_frame *f, double a, double b, double c, doubl
         p[k] = a * f->x[k] + b * f->y[k] + c * f->z[k];
 }
 
-/* Closed form point and canonical partials (the formulas of internal.h). */
+/* Closed form point and canonical partials (the formulas of internal.h; planes need none: their
+ * trims are exact, pcurve_def.c). */
 static void closed_eval(const bsi_surface_def *d, double u, double v, double *p, double *du, double *dv)
 {
     double cu = cos(u), su = sin(u), cv = cos(v), sv = sin(v), rho, t;
     switch (d->kind) {
-    case BS_FACE_PLANE:
-        frame_point(&d->f, u, v, 0.0, p);
-        frame_vector(&d->f, 1.0, 0.0, 0.0, du);
-        frame_vector(&d->f, 0.0, 1.0, 0.0, dv);
-        break;
     case BS_FACE_CYLINDER:
         frame_point(&d->f, d->r * cu, d->r * su, v, p);
         frame_vector(&d->f, -d->r * su, d->r * cu, 0.0, du);
@@ -82,10 +77,6 @@ static void closed_inverse(const bsi_surface_def *d, const double *q, double *u,
     double a = dot3(e, d->f.x), b = dot3(e, d->f.y), c = dot3(e, d->f.z), h = hypot(a, b);
     *u = atan2(b, a);
     switch (d->kind) {
-    case BS_FACE_PLANE:
-        *u = a;
-        *v = b;
-        break;
     case BS_FACE_CYLINDER:
         *v = c;
         break;

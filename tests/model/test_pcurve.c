@@ -359,6 +359,19 @@ static void test_analytic(void)
     bsi_curve_free(&t.uv);
     bsi_curve_free(&e);
 
+    e = circle(o, z, m, 1.5, 0.0, 0.5 * PI);
+    t = run_def(&sp, 1, NULL, NULL, &e, "from the pole (swapped)");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[1] - 1.0) < 1e-9 && fabs(uv0[0] - 0.5 * PI) < 1e-9, "u %g v %g", uv0[0], uv0[1]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    e = circle(o, m, z, 1.5, -0.5 * PI, 0.5 * PI); /* pole to pole, swapped: the pole at both ends */
+    t = run_def(&sp, 1, NULL, NULL, &e, "pole to pole (swapped)");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[1] - 1.0) < 1e-9 && fabs(uv1[1] - 1.0) < 1e-9, "v %g .. %g", uv0[1], uv1[1]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+
     /* cone: a circle, a generator line, a generator from the apex */
     bsi_surface_def co = def_of(BS_FACE_CONE, 1.0, 0.4);
     double rho = 1.0 + 2.0 * tan(0.4);
@@ -731,6 +744,38 @@ static void test_refusals(void)
     bsi_curve e = line(p, d, 0.0, 1.0);
     bsi_trim t;
     CHECK(bsi_pcurve_project_def(&cy, 0, NULL, NULL, &e, TOL, &t) == BS_ERR_DOMAIN);
+    CHECK(bsi_pcurve_project_def(&cy, 0, NULL, NULL, &e, 0.0, &t) == BS_ERR_INVALID_ARG);
+    bsi_surface_def pl = def_of(BS_FACE_PLANE, 0.0, 0.0);
+    CHECK(bsi_pcurve_project_def(&pl, 0, NULL, NULL, &e, TOL, &t) == BS_ERR_DOMAIN);
+#ifdef BS_WRAP_MALLOC
+    double c[3], x[3], y[3];
+    local_point(&pl, 0.0, 0.0, 0.0, c);
+    local_dir(&pl, 1.0, 0.0, 0.0, x);
+    local_dir(&pl, 0.0, 1.0, 0.0, y);
+    bsi_curve arc = circle(c, x, y, 1.0, 0.0, 2.0);
+    const bsi_surface_def *defs[2] = {&pl, &cy};
+    for (int k = 0; k < 2; k++) {
+        if (k == 1) {
+            bsi_curve_free(&arc);
+            local_point(&cy, 0.0, 0.0, 1.0, c);
+            arc = circle(c, x, y, 2.0, 0.0, 2.0);
+        }
+        int failed = 0;
+        for (size_t n = 1; n < 20; n++) {
+            fail_in = n;
+            bs_status st = bsi_pcurve_project_def(defs[k], 0, NULL, NULL, &arc, TOL, &t);
+            fail_in = 0;
+            if (st == BS_OK) {
+                bsi_curve_free(&t.uv);
+                break;
+            }
+            CHECK(st == BS_ERR_NO_MEMORY && t.uv.hom == NULL);
+            failed++;
+        }
+        CHECK(failed >= 2);
+    }
+    bsi_curve_free(&arc);
+#endif
     CHECK(bsi_pcurve_project_def(NULL, 0, NULL, NULL, &e, TOL, &t) == BS_ERR_INVALID_ARG);
     CHECK(bsi_pcurve_project_def(&cy, 0, NULL, NULL, NULL, TOL, &t) == BS_ERR_INVALID_ARG);
     bsi_curve flat = e;
