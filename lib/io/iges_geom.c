@@ -48,8 +48,8 @@ bs_status bsi_igm_matrix(igm *m, size_t s, double *mat)
             return r;
         const double *a = m->slot[ts].mat;
         double out[12];
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 4; j++)
+        for (size_t i = 0; i < 3; i++)
+            for (size_t j = 0; j < 4; j++)
                 out[4 * i + j] = a[4 * i] * mat[j] + a[4 * i + 1] * mat[4 + j] + a[4 * i + 2] * mat[8 + j] +
                                  (j == 3 ? a[4 * i + 3] : 0.0);
         memcpy(mat, out, sizeof out);
@@ -62,8 +62,8 @@ bs_status bsi_igm_matrix(igm *m, size_t s, double *mat)
 void bsi_igm_move(bsi_curve *c, const double *mat)
 {
     double a[12]; /* bsi_curve_transform's order: the 3x3 part row by row, then the shift */
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++)
+    for (size_t i = 0; i < 3; i++) {
+        for (size_t j = 0; j < 3; j++)
             a[3 * i + j] = mat[4 * i + j];
         a[9 + i] = mat[4 * i + 3];
     }
@@ -87,8 +87,8 @@ bs_status bsi_igm_curve2(const bsi_curve *c, const double *a, bsi_curve *out)
     }
     for (size_t k = 0; k < n; k++) {
         const double *h = c->hom + 4 * k;
-        for (int i = 0; i < 2; i++)
-            out->hom[3 * k + (size_t)i] = a[4 * i] * h[0] + a[4 * i + 1] * h[1] + a[4 * i + 2] * h[2] + a[4 * i + 3] * h[3];
+        for (size_t i = 0; i < 2; i++)
+            out->hom[3 * k + i] = a[4 * i] * h[0] + a[4 * i + 1] * h[1] + a[4 * i + 2] * h[2] + a[4 * i + 3] * h[3];
         out->hom[3 * k + 2] = h[3];
     }
     return BS_OK;

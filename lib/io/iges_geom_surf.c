@@ -26,7 +26,7 @@ static int unit3(double *a)
     double n = sqrt(dot3(a, a));
     if (!(n > 0.0) || !isfinite(n))
         return 0;
-    for (int i = 0; i < 3; i++)
+    for (size_t i = 0; i < 3; i++)
         a[i] /= n;
     return 1;
 }
@@ -43,7 +43,7 @@ static int frame(const double *o, const double *z, const double *ref, bsi_frame 
         memcpy(x, ref, sizeof x);
     for (int pass = 0; pass < 2; pass++) {
         double d = dot3(x, f->z);
-        for (int i = 0; i < 3; i++)
+        for (size_t i = 0; i < 3; i++)
             f->x[i] = x[i] - d * f->z[i];
         if (unit3(f->x) && fabs(dot3(f->x, f->z)) < 1e-9)
             break;
@@ -54,11 +54,12 @@ static int frame(const double *o, const double *z, const double *ref, bsi_frame 
     return 1;
 }
 
-/* Apply a rigid 3x4 matrix to frame f: 0 when it scales, shears or reflects. */
-static int move_frame(const double *mat, bsi_frame *f)
+/* Apply a rigid 3x4 matrix to frame f: 0 when it scales or shears. A reflection (*flip set) turns
+ * the frame's y around to keep it right-handed: the surface's u (a plane's v) then runs backwards. */
+static int move_frame(const double *mat, bsi_frame *f, int *flip)
 {
     bsi_frame g;
-    for (int i = 0; i < 3; i++) {
+    for (size_t i = 0; i < 3; i++) {
         g.o[i] = mat[4 * i] * f->o[0] + mat[4 * i + 1] * f->o[1] + mat[4 * i + 2] * f->o[2] + mat[4 * i + 3];
         g.x[i] = mat[4 * i] * f->x[0] + mat[4 * i + 1] * f->x[1] + mat[4 * i + 2] * f->x[2];
         g.y[i] = mat[4 * i] * f->y[0] + mat[4 * i + 1] * f->y[1] + mat[4 * i + 2] * f->y[2];
@@ -66,9 +67,12 @@ static int move_frame(const double *mat, bsi_frame *f)
     }
     double c[3];
     cross3(g.x, g.y, c);
+    *flip = dot3(c, g.z) < 0.0;
     if (fabs(dot3(g.x, g.x) - 1) > 1e-9 || fabs(dot3(g.y, g.y) - 1) > 1e-9 || fabs(dot3(g.x, g.y)) > 1e-9 ||
-        dot3(c, g.z) < 1 - 1e-9)
+        fabs(fabs(dot3(c, g.z)) - 1) > 1e-9)
         return 0;
+    for (size_t i = 0; i < 3 && *flip; i++)
+        g.y[i] = -g.y[i];
     *f = g;
     return 1;
 }
@@ -93,7 +97,7 @@ static bs_status vector(igm *m, size_t s, size_t t, long type, double *p)
             return bsi_igm_name(m, t, r);
         if ((e->mat = malloc(3 * sizeof *e->mat)) == NULL)
             return BS_ERR_NO_MEMORY;
-        for (int i = 0; i < 3; i++)
+        for (size_t i = 0; i < 3; i++)
             e->mat[i] = mat[4 * i] * v[0] + mat[4 * i + 1] * v[1] + mat[4 * i + 2] * v[2] + (type == 116 ? mat[4 * i + 3] : 0.0);
     }
     memcpy(p, e->mat, 3 * sizeof *p);
@@ -160,7 +164,7 @@ static int line_ends(const igm_slot *e, double *p0, double *p1)
     if (e->npieces != 1 || e->pieces[0].degree != 1 || e->pieces[0].axis.n != 1)
         return 0;
     const double *h = e->pieces[0].hom;
-    for (int i = 0; i < 3; i++) {
+    for (size_t i = 0; i < 3; i++) {
         p0[i] = h[i] / h[3];
         p1[i] = h[4 + i] / h[7];
     }
@@ -202,7 +206,7 @@ static bs_status swept(igm *m, size_t s, iges_stream *st, igm_surface *sf, int d
         double z[3];
         if (!line_ends(&m->slot[l], p0, p1))
             return bsi_igm_fail(m, s, 1, "axis line not read as one segment");
-        for (int i = 0; i < 3; i++)
+        for (size_t i = 0; i < 3; i++)
             z[i] = p1[i] - p0[i];
         if (!frame(p0, z, NULL, &sf->def.f))
             return bsi_igm_fail(m, s, 1, "axis line of length 0");
@@ -217,7 +221,7 @@ static bs_status swept(igm *m, size_t s, iges_stream *st, igm_surface *sf, int d
     }
     double z[3] = {0, 0, 1};
     (void)bsi_curve_eval(&sf->curve, t0, p0);
-    for (int i = 0; i < 3; i++)
+    for (size_t i = 0; i < 3; i++)
         sf->def.dir[i] = v[i] - p0[i];
     (void)frame(p0, z, NULL, &sf->def.f);
     sf->def.kind = BS_FACE_EXTRUSION;
@@ -249,18 +253,29 @@ static bs_status build(igm *m, size_t s, igm_surface *sf, int depth)
     if (type == 128) {
         for (size_t k = 0; k < sf->b.count_u * sf->b.count_v; k++) {
             double *p = (double *)sf->b.ctrl + 3 * k, x[3] = {p[0], p[1], p[2]};
-            for (int i = 0; i < 3; i++)
+            for (size_t i = 0; i < 3; i++)
                 p[i] = mat[4 * i] * x[0] + mat[4 * i + 1] * x[1] + mat[4 * i + 2] * x[2] + mat[4 * i + 3];
         }
         return BS_OK;
     }
-    if (!move_frame(mat, &sf->def.f)) {
-        (void)bsi_igm_fail(m, s, 7, "transformation that scales or reflects the surface");
+    int flip;
+    if (!move_frame(mat, &sf->def.f, &flip)) {
+        (void)bsi_igm_fail(m, s, 7, "transformation that scales or shears the surface");
         return BS_ERR_UNSUPPORTED;
+    }
+    bsi_frame *f = &sf->def.f;
+    if (flip && sf->def.kind == BS_FACE_REVOLUTION) { /* a mirrored turn is a turn the other way round */
+        for (size_t i = 0; i < 3; i++)
+            f->z[i] = -f->z[i];
+        cross3(f->z, f->x, f->y);
+    } else if (flip && sf->def.kind != BS_FACE_EXTRUSION) {
+        size_t row = sf->def.kind == BS_FACE_PLANE ? 3 : 0;
+        for (size_t i = row; i < row + 3; i++)
+            sf->aff[i] = -sf->aff[i];
     }
     if (sf->def.curve != NULL)
         bsi_igm_move(&sf->curve, mat);
-    for (int i = 0; i < 3 && type == 122; i++) { /* the sweep is a vector */
+    for (size_t i = 0; i < 3 && type == 122; i++) { /* the sweep is a vector */
         double d[3] = {sf->def.dir[0], sf->def.dir[1], sf->def.dir[2]};
         sf->def.dir[i] = mat[4 * i] * d[0] + mat[4 * i + 1] * d[1] + mat[4 * i + 2] * d[2];
     }

@@ -95,14 +95,56 @@ bs_status bsi_igm_trims(igm *m, size_t s, size_t ss, size_t c, int space, int re
     return bsi_igm_name(m, s, r);
 }
 
+/* The face's native box: its loops' bounds, cut to the surface's own box along the directions
+ * where it is bounded (the file's trims may pass its ends by their rounding). A revolution's
+ * generatrix arc first turned by whole turns to where the trims use it (its parameter in the file
+ * may differ from the angle of its start point by turns). */
+static bs_status face_box(igm *m, size_t s, igm_surface *sf, const igm_acc *a, double *box)
+{
+    const bsi_trim *t = a->trims.data;
+    box[0] = box[2] = INFINITY;
+    box[1] = box[3] = -INFINITY;
+    for (size_t k = 0; k < a->trims.n; k++) {
+        double lo[2], hi[2];
+        bsi_curve_bounds(&t[k].uv, lo, hi);
+        for (size_t d = 0; d < 2; d++) {
+            box[2 * d] = fmin(box[2 * d], lo[d]);
+            box[2 * d + 1] = fmax(box[2 * d + 1], hi[d]);
+        }
+    }
+    bsi_axis *ax = &sf->curve.axis;
+    if (sf->def.kind == BS_FACE_REVOLUTION && ax->kind == BSI_AXIS_ANGULAR) {
+        double turn = 2.0 * 3.141592653589793 / ax->radians;
+        double mid = 0.5 * (box[0] + box[1]), c = 0.5 * (ax->breaks[0] + ax->breaks[ax->n]);
+        double k = floor((mid - c) / turn + 0.5);
+        for (size_t i = 0; k != 0.0 && i <= ax->n; i++)
+            ax->breaks[i] += k * turn;
+        sf->box[0] = ax->breaks[0];
+        sf->box[1] = ax->breaks[ax->n];
+    }
+    if (sf->has_box)
+        for (size_t d = 0; d < 2; d++) {
+            if (d == 1 && sf->def.kind != BS_FACE_BSPLINE)
+                continue; /* angles and sweeps are not bounded */
+            box[2 * d] = fmax(box[2 * d], sf->box[2 * d]);
+            box[2 * d + 1] = fmin(box[2 * d + 1], sf->box[2 * d + 1]);
+        }
+    if (!(box[0] < box[1] && box[2] < box[3]))
+        return bsi_igm_fail(m, s, 1, "trims outside the parameter range of its surface");
+    return BS_OK;
+}
+
 bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed, size_t shell)
 {
-    const igm_surface *sf = m->slot[ss].surf;
+    igm_surface *sf = m->slot[ss].surf;
     bs_status r = bsi_igm_close_loop(a);
     if (r != BS_OK)
         return r;
     if (a->trims.n == 0)
         return bsi_igm_fail(m, s, 1, "face without a trim curve");
+    double box[4];
+    if ((r = face_box(m, s, sf, a, box)) != BS_OK)
+        return r;
     bsi_face_spec spec;
     memset(&spec, 0, sizeof spec);
     spec.def = &sf->def;
@@ -113,6 +155,7 @@ bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed
     spec.ntrim = a->trims.n;
     spec.loop_len = a->lens.data;
     spec.nloop = a->lens.n;
+    spec.box = box;
     r = bsi_model_add_face(m->model, &spec, NULL);
     a->trims.n = 0; /* moved or freed */
     return bsi_igm_name(m, s, r);
@@ -192,13 +235,13 @@ static bs_status boundary(igm *m, size_t s, size_t t, size_t ss, igm_acc *a)
     const igm_surface *sf = m->slot[ss].surf;
     for (long k = 0; k < n && r == BS_OK; k++) {
         long sense, np;
-        size_t cp, pp = 0;
+        size_t cp, pp = 0, more;
         if ((r = bsi_igm_ptr(m, t, &st, "a model curve pointer", 0, &cp, NULL)) != BS_OK ||
             (r = bsi_iges_int(&m->g, &st, "SENSE", 1, 2, &sense)) != BS_OK ||
             (r = bsi_iges_int(&m->g, &st, "the number of parameter curves", 0, 99999999L, &np)) != BS_OK)
             return bsi_igm_name(m, t, r);
         for (long j = 0; j < np && r == BS_OK; j++) /* the first one is used */
-            r = bsi_igm_ptr(m, t, &st, "a parameter curve pointer", 0, j == 0 ? &pp : &cp, NULL);
+            r = bsi_igm_ptr(m, t, &st, "a parameter curve pointer", 0, j == 0 ? &pp : &more, NULL);
         if (r != BS_OK)
             return r;
         int space = np == 0 || sf->plane || !sf->param || type == 0;
@@ -212,7 +255,7 @@ static bs_status boundary(igm *m, size_t s, size_t t, size_t ss, igm_acc *a)
 /* 143: TYPE, SPTR, N, the boundaries (the outer first). */
 static bs_status bounded(igm *m, size_t s, iges_stream *st, igm_acc *a, size_t *ss)
 {
-    long type, n;
+    long type, n = 0;
     bs_status r = bsi_iges_int(&m->g, st, "TYPE", 0, 1, &type);
     if (r == BS_OK && (r = bsi_igm_ptr(m, s, st, "the surface pointer", 0, ss, NULL)) == BS_OK &&
         (r = bsi_igm_surface(m, *ss, 0)) == BS_OK)

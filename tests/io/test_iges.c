@@ -488,6 +488,25 @@ static void test_files(void)
     CHECK(s == NULL && err.line == 1);
 }
 
+/* A file without a 128 is an error naming what it holds: trimmed surfaces go to bs_model_read_iges. */
+static void test_no_bspline(void)
+{
+    static const ent trimmed[] = {{144, "144,3,1,0,5;", 0, 0}, {108, "108,0.,0.,1.,0.,0,0.,0.,0.,0.;", 0, 0},
+                                  {110, "110,0.,0.,0.,1.,0.,0.;", 0, 0}};
+    bs_surface *s = (bs_surface *)&s;
+    bs_parse_error err;
+    char *t = make_iges(GLOBAL, trimmed, 3);
+    CHECK_STATUS(bs_surface_read_iges(t, strlen(t), &err, &s), BS_ERR_PARSE);
+    CHECK(s == NULL && err.line == 4 && err.column == 1 &&
+          strcmp(err.message, "no 128 surface: the file holds 1 trimmed surfaces (144); read it with "
+                              "bs_model_read_iges") == 0);
+    free(t);
+    t = make_iges(GLOBAL, trimmed + 2, 1);
+    CHECK_STATUS(bs_surface_read_iges(t, strlen(t), &err, &s), BS_ERR_PARSE);
+    CHECK(s == NULL && strcmp(err.message, "no untrimmed B-spline surface (128) among the 1 entities") == 0);
+    free(t);
+}
+
 int main(void)
 {
     make_nets();
@@ -502,5 +521,6 @@ int main(void)
     test_cylinder();
     test_locale();
     test_files();
+    test_no_bspline();
     return bs_test_exit("test_iges");
 }

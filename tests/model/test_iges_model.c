@@ -117,7 +117,8 @@ static void test_part(const char *part, int brep)
     (void)snprintf(path, sizeof path, "%s/%s.ref", BS_CAD_DIR, part);
     FILE *f = fopen(path, "r");
     size_t want = 0;
-    CHECK(f != NULL && fscanf(f, "%*[^\n]\nfaces %zu", &want) == 1);
+    double ref_area = 0.0, ref_volume = 0.0;
+    CHECK(f != NULL && fscanf(f, "%*[^\n]\nfaces %zu area %lf volume %lf", &want, &ref_area, &ref_volume) == 3);
     if (f != NULL)
         fclose(f);
     (void)snprintf(path, sizeof path, "%s/%s%s.igs", BS_CAD_DIR, part, brep ? "-brep" : "");
@@ -151,10 +152,17 @@ static void test_part(const char *part, int brep)
         }
     }
     CHECKF(worst <= 1e-7, "%s: points %g off the part's surface", path, worst);
+    double area = NAN, volume = NAN;
+    st = bs_model_properties(m, 1e-9, &area, &volume, NULL);
+    CHECKF(st == BS_OK && fabs(area - ref_area) <= 1e-6 * ref_area, "%s: area %.10g, %.10g in the .ref", path, area,
+           ref_area);
+    if (brep)
+        CHECKF(fabs(volume - ref_volume) <= 1e-6 * ref_volume, "%s: volume %.10g, %.10g in the .ref", path, volume,
+               ref_volume);
     printf("%s%s: %zu faces (%zu in the .ref), %zu edges, %zu of %zu shells closed; %zu points on the closed "
-           "form, worst %.3g\n",
+           "form, worst %.3g; area %.10g (.ref %.10g), volume %.10g (.ref %.10g)\n",
            part, brep ? "-brep" : "", faces, want, bs_model_edge_count(m), closed, bs_model_shell_count(m), points,
-           worst);
+           worst, area, ref_area, volume, ref_volume);
     bs_model_destroy(m);
 }
 
