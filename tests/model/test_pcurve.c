@@ -557,6 +557,188 @@ static void test_patches(void)
     free_patched(&P);
 }
 
+/* ---- surfaces of analytic.c's patches: B-spline, extrusion, revolution (the definition path) ---- */
+static void solve(size_t n, double *A, double *b);
+static double binom(size_t n, size_t k);
+
+/* The B-spline basis functions of degree p at x (knots t, count of them n): N[0 .. n). */
+static void basis(const double *t, size_t p, size_t n, double x, double *N)
+{
+    double B[64];
+    size_t m = n + p; /* knot intervals */
+    for (size_t i = 0; i < m; i++)
+        B[i] = (t[i] <= x && x < t[i + 1]) || (x == t[m] && t[i] < t[i + 1] && t[i + 1] == t[m]) ? 1.0 : 0.0;
+    for (size_t d = 1; d <= p; d++)
+        for (size_t i = 0; i + d < m; i++) {
+            double a = t[i + d] > t[i] ? (x - t[i]) / (t[i + d] - t[i]) * B[i] : 0.0;
+            double b = t[i + d + 1] > t[i + 1] ? (t[i + d + 1] - x) / (t[i + d + 1] - t[i + 1]) * B[i + 1] : 0.0;
+            B[i] = a + b;
+        }
+    memcpy(N, B, n * sizeof *N);
+}
+
+static const double KU[10] = {0, 0, 0, 0, 1, 2, 3, 3, 3, 3}, KV[9] = {0, 0, 0, 0, 1.5, 3, 3, 3, 3};
+static double BCTRL[6 * 5 * 3];
+
+static void bspline_point(double u, double v, double *p)
+{
+    double Nu[6], Nv[5];
+    basis(KU, 3, 6, u, Nu);
+    basis(KV, 3, 5, v, Nv);
+    p[0] = p[1] = p[2] = 0.0;
+    for (size_t i = 0; i < 6; i++)
+        for (size_t j = 0; j < 5; j++)
+            for (int c = 0; c < 3; c++)
+                p[c] += Nu[i] * Nv[j] * BCTRL[(i * 5 + j) * 3 + (size_t)c];
+}
+
+/* The worst distance between the trim on a surface given by a point function and the edge. */
+static double worst_on(void (*point)(const void *, double, double, double *), const void *ctx,
+                       const bsi_curve *edge, const bsi_trim *t)
+{
+    double e = 0.0, t0 = edge->axis.breaks[0], t1 = edge->axis.breaks[edge->axis.n];
+    for (int i = 0; i <= 2000; i++) {
+        double s = t0 + (t1 - t0) * i / 2000.0, uv[2], p[3], q[3];
+        curve_at(&t->uv, s, uv);
+        curve_at(edge, s, q);
+        point(ctx, uv[0], uv[1], p);
+        e = fmax(e, dist3(p, q));
+    }
+    return e;
+}
+
+static void bspline_at(const void *ctx, double u, double v, double *p)
+{
+    (void)ctx;
+    bspline_point(u, v, p);
+}
+
+static void extrusion_at(const void *ctx, double u, double v, double *p)
+{
+    const bsi_surface_def *d = ctx;
+    curve_at(d->curve, u, p);
+    for (int c = 0; c < 3; c++)
+        p[c] += v * d->dir[c];
+}
+
+static void revolution_at(const void *ctx, double u, double v, double *p)
+{
+    const bsi_surface_def *d = ctx;
+    double q[3], e[3];
+    curve_at(d->curve, v, q);
+    for (int c = 0; c < 3; c++)
+        e[c] = q[c] - d->f.o[c];
+    double a = e[0] * d->f.x[0] + e[1] * d->f.x[1] + e[2] * d->f.x[2];
+    double b = e[0] * d->f.y[0] + e[1] * d->f.y[1] + e[2] * d->f.y[2];
+    double z = e[0] * d->f.z[0] + e[1] * d->f.z[1] + e[2] * d->f.z[2];
+    local_point(d, a * cos(u) - b * sin(u), a * sin(u) + b * cos(u), z, p);
+}
+
+static int run_other(const bsi_surface_def *d, void (*point)(const void *, double, double, double *),
+                     bsi_curve *edge, const char *what)
+{
+    bsi_trim t;
+    bs_status st = bsi_pcurve_project_def(d, 0, NULL, NULL, edge, TOL, &t);
+    if (st == BS_ERR_UNSUPPORTED) {
+        printf("  %-30s skipped: no patches of this surface yet\n", what);
+        return 0;
+    }
+    CHECKF(st == BS_OK, "%s: status %d", what, st);
+    if (st != BS_OK)
+        return 0;
+    double e = worst_on(point, d, edge, &t);
+    printf("  %-39s %4zu segments  worst %.3g (tol %.3g)\n", what, t.uv.axis.n, e, TOL);
+    CHECKF(e <= TOL, "%s: %g", what, e);
+    bsi_curve_free(&t.uv);
+    return 1;
+}
+
+static void test_other_surfaces(void)
+{
+    for (size_t i = 0; i < 6; i++)
+        for (size_t j = 0; j < 5; j++) {
+            double *q = BCTRL + (i * 5 + j) * 3;
+            q[0] = 2.0 * (double)i;
+            q[1] = 2.5 * (double)j + 0.3 * (double)(i % 2);
+            q[2] = ((i + j) % 3 == 0 ? 1.2 : -0.4) + 0.05 * (double)(i * j);
+        }
+    bs_bspline b = {3, 3, 6, 5, 3, KU, KV, BCTRL, NULL};
+    bsi_surface_def bd;
+    memset(&bd, 0, sizeof bd);
+    bd.kind = BS_FACE_BSPLINE;
+    bd.bspline = &b;
+    /* the iso-curve v = 0.7: a B-spline of degree 3 on KU, its points the columns blended at 0.7 */
+    double Nv[5], iso[6 * 3];
+    basis(KV, 3, 5, 0.7, Nv);
+    for (size_t i = 0; i < 6; i++)
+        for (int c = 0; c < 3; c++) {
+            iso[i * 3 + (size_t)c] = 0.0;
+            for (size_t j = 0; j < 5; j++)
+                iso[i * 3 + (size_t)c] += Nv[j] * BCTRL[(i * 5 + j) * 3 + (size_t)c];
+        }
+    bsi_curve e;
+    CHECK(bsi_curve_bspline(3, 3, 6, KU, iso, NULL, 0.0, 3.0, &e) == BS_OK);
+    if (!run_other(&bd, bspline_at, &e, "bspline  iso-curve v = 0.7 (3 spans)")) {
+        bsi_curve_free(&e);
+        return;
+    }
+    bsi_curve_free(&e);
+    /* a straight line of (u, v) inside one span: a degree-6 Bezier through 7 of its points */
+    bsi_axis ax;
+    CHECK(bsi_axis_make(BSI_AXIS_LINEAR, 1.0, 0.0, 1.0, NULL, 0, &ax) == BS_OK);
+    e = alloc_curve(3, 6, ax);
+    {
+        double A[49], rhs[3][7];
+        for (size_t i = 0; i <= 6; i++) {
+            double x = (double)i / 6.0, q[3];
+            bspline_point(1.1 + 0.8 * x, 0.2 + 1.2 * x, q);
+            for (size_t j = 0; j <= 6; j++)
+                A[i * 7 + j] = binom(6, j) * pow(x, (double)j) * pow(1.0 - x, (double)(6 - j));
+            for (int c = 0; c < 3; c++)
+                rhs[c][i] = q[c];
+        }
+        for (int c = 0; c < 3; c++) {
+            double M[49];
+            memcpy(M, A, sizeof M);
+            solve(7, M, rhs[c]);
+        }
+        for (size_t i = 0; i <= 6; i++)
+            set_hom(&e, 0, i, (const double[]){rhs[0][i], rhs[1][i], rhs[2][i]}, 1.0);
+    }
+    run_other(&bd, bspline_at, &e, "bspline  line of (u, v) in a span");
+    bsi_curve_free(&e);
+
+    /* an extruded arc and a line along the sweep */
+    bsi_surface_def ex = def_of(BS_FACE_EXTRUSION, 0.0, 0.0);
+    double c[3], x[3], y[3], p[3];
+    local_point(&ex, 0.0, 0.0, 0.0, c);
+    local_dir(&ex, 1.0, 0.0, 0.0, x);
+    local_dir(&ex, 0.0, 1.0, 0.0, y);
+    bsi_curve arc = circle(c, x, y, 2.0, 0.0, 1.5);
+    local_dir(&ex, 0.2, 0.1, 1.0, ex.dir);
+    ex.curve = &arc;
+    curve_at(&arc, 0.9, p);
+    e = line(p, ex.dir, -0.5, 2.0);
+    run_other(&ex, extrusion_at, &e, "extrusion line along the sweep");
+    bsi_curve_free(&e);
+    bsi_curve_free(&arc);
+
+    /* a revolved segment (a cone's piece) and the circle at v = 0.4 */
+    bsi_surface_def rv = def_of(BS_FACE_REVOLUTION, 0.0, 0.0);
+    double a0[3], dz[3], cc[3];
+    local_point(&rv, 1.0, 0.0, 0.0, a0);
+    local_dir(&rv, 1.0, 0.0, 1.5, dz);
+    bsi_curve gen = line(a0, dz, 0.0, 1.0);
+    rv.curve = &gen;
+    local_point(&rv, 0.0, 0.0, 0.6, cc);
+    local_dir(&rv, 1.0, 0.0, 0.0, x);
+    local_dir(&rv, 0.0, 1.0, 0.0, y);
+    e = circle(cc, x, y, 1.4, 0.0, 2.0 * PI);
+    run_other(&rv, revolution_at, &e, "revolution circle, full turn");
+    bsi_curve_free(&e);
+    bsi_curve_free(&gen);
+}
+
 /* ---- Bezier faces: the model path (certified closest points, Newton continuation) ---- */
 
 /* Solve the n x n system A x = b in place (partial pivoting). */
@@ -828,6 +1010,8 @@ int main(void)
     test_analytic();
     printf("patches built here:\n");
     test_patches();
+    printf("surfaces of analytic.c's patches:\n");
+    test_other_surfaces();
     printf("Bezier faces:\n");
     test_bezier_face();
     test_refusals();
