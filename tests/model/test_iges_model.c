@@ -166,6 +166,47 @@ static void test_part(const char *part, int brep)
     bs_model_destroy(m);
 }
 
+/* A CAD file with `from` replaced by `to` (of the same length) is refused with those words. */
+static void spoiled(const char *part, const char *from, const char *to, bs_status want, const char *words)
+{
+    char path[512];
+    (void)snprintf(path, sizeof path, "%s/%s.igs", BS_CAD_DIR, part);
+    FILE *f = fopen(path, "rb");
+    char *t = malloc(1 << 20);
+    size_t len = f != NULL && t != NULL ? fread(t, 1, (1 << 20) - 1, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    CHECK(len > 0 && strlen(from) == strlen(to));
+    t[len] = '\0';
+    char *at = strstr(t, from);
+    CHECKF(at != NULL, "%s: no %s", part, from);
+    if (at != NULL) {
+        memcpy(at, to, strlen(to));
+        bs_parse_error err;
+        memset(&err, 0, sizeof err);
+        bs_model *m = NULL;
+        bs_status st = bs_model_read_iges(t, len, &err, &m);
+        CHECKF(st == want && m == NULL && err.line > 0 && strstr(err.message, words) != NULL,
+               "%s: status %d, line %zu: \"%s\" (want \"%s\")", part, (int)st, err.line, err.message, words);
+        bs_model_destroy(m);
+    }
+    free(t);
+}
+
+static void test_spoiled_parts(void)
+{
+    spoiled("cone-brep", "508,4,0,17,1,0,1", "508,4,0,17,9,0,1", BS_ERR_PARSE, "edge 9 of a list of 3");
+    spoiled("cone-brep", "514,3,5,1,37,1,49,0", "514,3,5,1,5 ,1,49,0", BS_ERR_PARSE, "used twice");
+    spoiled("cone-brep", "194,9,11,4.", "194,9,9 ,4.", BS_ERR_PARSE, "where 123 is needed");
+    spoiled("cone-brep", "508,1,0,17,1,1,0;", "508,1,1,17,1,1,0;", BS_ERR_PARSE, "where 502 is needed");
+    spoiled("sphere-brep", "186,3,1,0;", "186,5,1,0;", BS_ERR_PARSE, "where 514 is needed");
+    spoiled("sphere-brep", "504,1,23,17,2,17,1;", "504,9,23,17,2,17,1;", BS_ERR_PARSE, "the number of edges");
+    spoiled("sphere", "142,0,3,15,21,3;", "142,0,5,15,21,3;", BS_ERR_PARSE, "not DE 3 of its face");
+    spoiled("sphere", "120,7,9,0.,6.283185307;", "120,7,9,0.,6.283185307,", BS_ERR_PARSE, "");
+    spoiled("torus", "0000001P0000001", "0000003P0000001", BS_ERR_PARSE, "back pointer is not DE 1");
+    spoiled("torus", "     124       3", "     124      99", BS_ERR_PARSE, "parameter data pointer outside");
+}
+
 static void test_parts(void)
 {
     static const char *const parts[] = {"sphere", "torus", "cone", "wedge", "bell", "duct", "block", "bottle"};
@@ -252,6 +293,37 @@ static void test_refusals(void)
     memcpy(e, square, sizeof e);
     e[2] = (ent){142, 0, 0, "142,0,3,0,0,2;"};
     refused(e, 8, 0, BS_ERR_PARSE, "no curve the surface's parameters can use");
+    static const struct {
+        size_t at;
+        ent e;
+        bs_status st;
+        const char *words;
+    } one[] = {
+        {4, {100, 0, 0, "100,0.,0.,0.,0.,0.,0.,0.;"}, BS_ERR_PARSE, "arc of radius 0"},
+        {4, {104, 2, 0, "104,1.,0.,-1.,0.,0.,-1.,0.,1.,0.,1.,0.;"}, BS_ERR_UNSUPPORTED, "only elliptic arcs"},
+        {4, {126, 0, 0, "126,1,1,0,0,1,0,1.,0.,1.,1.,1.,1.,0.,0.,1.,1.,1.,1.,0.,1.;"}, BS_ERR_PARSE, "refused"},
+        {4, {126, 0, 0, "126,1,1,0,0,1,0,0.,0.,1.,1.,1.,-1.,0.,0.,1.,1.,1.,1.,0.,1.;"}, BS_ERR_PARSE,
+         "weights must be positive"},
+        {4, {126, 0, 0, "126,1,2,0,0,1,0,0.,0.,1.,1.;"}, BS_ERR_PARSE, "K must be at least the degree M"},
+        {3, {102, 0, 0, "102,0;"}, BS_ERR_PARSE, "the number of curves"},
+        {1, {108, 0, 17, "108,0.,0.,1.,1.,0,0.,0.,0.,0.;"}, BS_ERR_UNSUPPORTED, "scales or shears"},
+        {1, {108, 0, 0, "108,0.,0.,0.,1.,0,0.,0.,0.,0.;"}, BS_ERR_PARSE, "plane of normal 0"},
+        {1, {192, 0, 0, "192,9,9,1.;"}, BS_ERR_PARSE, "(DE 9) where 116 is needed"},
+        {1, {120, 0, 0, "120,7,9,0.,1.;"}, BS_ERR_PARSE, "axis of entity 102"},
+        {1, {120, 0, 0, "120,9,11,1.,1.;"}, BS_ERR_PARSE, "terminate angle"},
+        {1, {120, 0, 0, "120,9,7,0.,1.;"}, BS_ERR_UNSUPPORTED, "several pieces"},
+        {0, {144, 0, 0, "144,3,1,1,5,5;"}, BS_ERR_PARSE, "used twice"},
+        {0, {144, 0, 0, "144,3,0,0,0;"}, BS_ERR_PARSE, "outer boundary of an unbounded surface"},
+        {0, {144, 0, 0, "144,9,1,0,5;"}, BS_ERR_UNSUPPORTED, "surface type not read"},
+        {2, {142, 0, 0, "142,0,9,0,7,2;"}, BS_ERR_PARSE, "not DE 3 of its face"},
+    };
+    for (size_t k = 0; k < sizeof one / sizeof one[0]; k++) {
+        ent f[9];
+        memcpy(f, square, sizeof square);
+        f[8] = (ent){124, 0, 0, "124,2.,0.,0.,0.,0.,1.,0.,0.,0.,0.,1.,0.;"}; /* a scaling */
+        f[one[k].at] = one[k].e;
+        refused(f, 9, 0, one[k].st, one[k].words);
+    }
     /* the 1.1 reader sends files of trimmed surfaces here */
     size_t len;
     char *t = iges_text(square, 8, 0, &len);
@@ -270,6 +342,7 @@ int main(void)
 {
     test_small();
     test_refusals();
+    test_spoiled_parts();
     test_parts();
     return bs_test_exit("test_iges_model");
 }
