@@ -13,11 +13,12 @@
  * Lv bound the surface's speed per native unit over the face's patches (the rational derivative
  * bound under "speed bounds" below, times the native -> local rate of the axis piece: 1 / width,
  * or radians / (2 sin a) on a quadratic arc of half angle a), the piece's speeds bound the same
- * way from its control points. A piece is dropped when D - K / 2 > tol: only the parts of the boundary that can come within
- * tol in 3-D are refined, wherever they lie in parameter space (a pole: a degenerate trim along
- * v = pi / 2 maps to one 3-D point; a seam: far in u, near in 3-D). Refinement stops when K h is
- * a thousandth of tol (such points are within 1.001 tol: the parity below then decides them) or
- * after a fixed number of evaluations per segment. Seam trims (a constant u, or v, of a periodic
+ * way from its control points. A piece is dropped when D - K / 2 > tol: only the parts of the
+ * boundary that can come within tol in 3-D are refined, wherever they lie in parameter space (a
+ * pole: a degenerate trim along v = pi / 2 maps to one 3-D point; a seam: far in u, near in 3-D).
+ * Refinement stops when K / 2 is a thousandth of tol (the piece is then farther than 0.999 tol:
+ * a point that near is left to the parity below, which is exact) or after a fixed number of
+ * evaluations per segment. Seam trims (a constant u, or v, of a periodic
  * direction whose twin lies one period away, or an edge used twice by this face) are not a
  * boundary of the face and are left out of this test only.
  *
@@ -117,7 +118,10 @@ static int seg_parity(const double *seg, size_t p, double u, double v)
         span sp = stack[--top];
         double pts[HOM_MAX];
         piece(seg, p, sp.s0, sp.s1, pts);
-        double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+        /* the box of the control points and of the ends as computed: a piece judged above or
+         * below the line has its ends on that side for its neighbours too */
+        double xlo = fmin(sp.a[0], sp.b[0]), xhi = fmax(sp.a[0], sp.b[0]);
+        double ylo = fmin(sp.a[1], sp.b[1]), yhi = fmax(sp.a[1], sp.b[1]);
         for (size_t i = 0; i <= p; i++) {
             double x = pts[i * 3] / pts[i * 3 + 2], y = pts[i * 3 + 1] / pts[i * 3 + 2];
             xlo = fmin(xlo, x), xhi = fmax(xhi, x), ylo = fmin(ylo, y), yhi = fmax(yhi, y);
@@ -384,8 +388,11 @@ static size_t shifts(double x, double lo, double hi, double period, double *out)
         return x >= lo && x <= hi;
     }
     size_t n = 0;
-    for (double y = bsi_wrap(x, lo, period); y <= hi && n < MAX_SHIFTS; y += period)
+    double y = bsi_wrap(x, lo, period);
+    while (y <= hi && n < MAX_SHIFTS) {
         out[n++] = y;
+        y += period;
+    }
     return n;
 }
 

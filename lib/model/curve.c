@@ -160,6 +160,8 @@ static bs_status homogeneous(size_t dim, size_t count, const double *ctrl, const
             if (!isfinite(ctrl[k * dim + c]) || !isfinite(w * ctrl[k * dim + c]))
                 return BS_ERR_NONFINITE;
     }
+    /* count >= degree + 1 >= 2 (bsi_knots_check), never a size of 0 */
+    /* NOLINTNEXTLINE(clang-analyzer-optin.portability.UnixAPI) */
     double *h = malloc(count * (dim + 1) * sizeof *h);
     if (h == NULL)
         return BS_ERR_NO_MEMORY;
@@ -220,7 +222,7 @@ void bsi_curve_transform(bsi_curve *c, const double *affine)
 {
     size_t n = c->dim + 1, np = c->axis.n * (c->degree + 1);
     for (size_t k = 0; k < np; k++) {
-        double *h = c->hom + k * n, q[3];
+        double *h = c->hom + k * n, q[3] = {0.0, 0.0, 0.0};
         for (size_t r = 0; r < c->dim; r++) {
             const double *row = affine + r * 3; /* (a b c; d e f) in 2-D: the third is the shift */
             double s = (c->dim == 3 ? affine[9 + r] : row[2]) * h[c->dim];

@@ -333,6 +333,61 @@ static void test_cylinder_seam(void)
     EXPECT(m, g, 3.0, 1.0 - 1e-6, 1e-5, BS_TRIM_ON);
     EXPECT(m, g, 1e-7, 1.0 - 1e-6, 1e-5, BS_TRIM_ON); /* near the seam and the top */
     EXPECT(m, g, 3.0, 1.0 + 1e-6, 1e-5, BS_TRIM_OUTSIDE);
+
+    /* the same, its seams a little off u = const, known as seams by their edge (used twice) */
+    uint32_t e = 0;
+    CHECK_STATUS(bsi_model_add_edge(m, &e), BS_OK);
+    bsi_trim ring2[4] = {line_trim(0, 0, 2 * PI, 0), line_trim(2 * PI, 0, 2 * PI + 1e-13, 1),
+                         line_trim(2 * PI + 1e-13, 1, 1e-13, 1), line_trim(1e-13, 1, 0, 0)};
+    ring2[1].edge = ring2[3].edge = e;
+    size_t h = cylinder_face(m, full, ring2, 4, &four, 1);
+    m->edges[e].uses = 2;
+    m->edges[e].face[0] = m->edges[e].face[1] = (uint32_t)h;
+    EXPECT(m, h, 1e-7, 0.5, 1e-5, BS_TRIM_INSIDE);
+    EXPECT(m, h, 2 * PI - 1e-7, 0.5, 1e-5, BS_TRIM_INSIDE);
+    EXPECT(m, h, 3.0, 1e-6, 1e-5, BS_TRIM_ON);
+    m->edges[e].face[1] = UINT32_MAX; /* one face only: a boundary */
+    EXPECT(m, h, 1e-7, 0.5, 1e-5, BS_TRIM_ON);
+    bs_model_destroy(m);
+}
+
+/* ---- a loop that closes only within a tolerance: rays through its gaps ---- */
+static void test_gaps(void)
+{
+    bs_model *m = NULL;
+    CHECK_STATUS(bsi_model_create(&m), BS_OK);
+    bs_patch *patch = flat_patch();
+    bsi_trim trims[5] = {line_trim(0.2, 0.2, 0.8, 0.2), line_trim(0.8, 0.2, 0.8, 0.5 - 1e-9),
+                         line_trim(0.8 + 1e-9, 0.5, 0.8, 0.8), line_trim(0.8, 0.8, 0.2, 0.8 + 1e-9),
+                         line_trim(0.2, 0.8, 0.2, 0.2 + 2e-9)};
+    size_t five = 5;
+    size_t f = add_bezier_face(m, patch, trims, 5, &five, 1);
+    double vs[6] = {0.5 - 1e-9, 0.5 - 0.5e-9, 0.5, 0.8 + 0.25e-9, 0.2 + 1e-9, 0.8 - 1e-12};
+    for (int i = 0; i < 6; i++) {
+        EXPECT(m, f, 0.5, vs[i], 0.0, BS_TRIM_INSIDE);
+        EXPECT(m, f, 0.1, vs[i], 0.0, BS_TRIM_OUTSIDE);
+        EXPECT(m, f, 0.9, vs[i], 0.0, BS_TRIM_OUTSIDE);
+    }
+    bs_patch_destroy(patch);
+    bs_model_destroy(m);
+}
+
+/* ---- a surface constant along v, S(u, v) = (2u, 0, 0): every point of the square is at 3-D
+ * distance 0 from its bottom side ---- */
+static void test_degenerate_surface(void)
+{
+    bs_model *m = NULL;
+    CHECK_STATUS(bsi_model_create(&m), BS_OK);
+    double ctrl[6] = {0, 0, 0, 2, 0, 0};
+    bs_patch *patch = NULL;
+    CHECK_STATUS(bs_patch_create(1, 0, 3, ctrl, NULL, &patch), BS_OK);
+    bsi_trim trims[4] = {line_trim(0.2, 0.2, 0.8, 0.2), line_trim(0.8, 0.2, 0.8, 0.8),
+                         line_trim(0.8, 0.8, 0.2, 0.8), line_trim(0.2, 0.8, 0.2, 0.2)};
+    size_t four = 4;
+    size_t f = add_bezier_face(m, patch, trims, 4, &four, 1);
+    EXPECT(m, f, 0.5, 0.5, 1e-9, BS_TRIM_ON);
+    EXPECT(m, f, 0.1, 0.5, 1e-9, BS_TRIM_OUTSIDE);
+    bs_patch_destroy(patch);
     bs_model_destroy(m);
 }
 
@@ -436,6 +491,8 @@ int main(void)
     spline_loop(1);
     test_cylinder_seam();
     test_pole();
+    test_gaps();
+    test_degenerate_surface();
     test_untrimmed();
     test_public();
     return bs_test_exit("test_classify");
