@@ -4,6 +4,7 @@
  * A loop must close: each trim ends where the next starts (OBJM_CLOSURE of the loop's size). */
 #include "io/obj_model.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -135,7 +136,9 @@ static bs_status check_closed(objm *o, size_t line, size_t col, const bsi_trim *
             hi[c] = fmax(hi[c], b[c]);
         }
     }
-    double tol = OBJM_CLOSURE * fmax(hi[0] - lo[0], hi[1] - lo[1]);
+    /* and a few ulps of the coordinates, which rounding moves whatever the loop's size */
+    double big = fmax(fmax(fabs(lo[0]), fabs(hi[0])), fmax(fabs(lo[1]), fabs(hi[1])));
+    double tol = OBJM_CLOSURE * fmax(hi[0] - lo[0], hi[1] - lo[1]) + 16 * DBL_EPSILON * big;
     for (size_t k = 0; k < n; k++) {
         double e[2], s[2];
         trim_end(&t[k], 1, e);

@@ -74,17 +74,17 @@ static bs_status bezier_face(objm *o, face_build *fb)
 {
     size_t seg[2], cnt[2];
     static const double unit[2] = {0.0, 1.0};
-    for (int d = 0; d < 2; d++) {
+    for (size_t d = 0; d < 2; d++) {
         const double *pv = o->have_parm[d] ? o->parm[d].data : unit;
         size_t np = o->have_parm[d] ? o->parm[d].n : 2;
         if (np < 2)
-            return fail_surf(o, d, "a parm statement needs at least two values");
+            return fail_surf(o, (int)d, "a parm statement needs at least two values");
         seg[d] = np - 1;
         if (seg[d] > 1 && o->deg[d] == 0)
-            return fail_surf(o, d, "a surface of degree 0 has one segment");
+            return fail_surf(o, (int)d, "a surface of degree 0 has one segment");
         for (size_t k = 1; k < np; k++)
             if (!(pv[k] > pv[k - 1]))
-                return fail_surf(o, d, "parameter values must increase");
+                return fail_surf(o, (int)d, "parameter values must increase");
         if (o->refs.n == 0 || (o->deg[d] > 0 && seg[d] > (o->refs.n - 1) / o->deg[d]))
             return fail_surf(o, -1, "fewer control vertices than the degrees and parameter values need");
         cnt[d] = seg[d] * o->deg[d] + 1;
@@ -92,7 +92,7 @@ static bs_status bezier_face(objm *o, face_build *fb)
         fb->box[2 * d + 1] = pv[np - 1];
         bs_status st = bsi_axis_make(BSI_AXIS_LINEAR, 1.0, pv[0], pv[np - 1], pv, np, d ? &fb->av : &fb->au);
         if (st != BS_OK)
-            return st == BS_ERR_DOMAIN ? fail_surf(o, d, "parameter values must be finite") : st;
+            return st;
     }
     if (o->refs.n % cnt[0] != 0 || o->refs.n / cnt[0] != cnt[1])
         return fail_surf(o, -1, "number of control vertices does not match the degrees and parameter values");
@@ -161,7 +161,8 @@ static bs_status bspline_face(objm *o, face_build *fb)
     if (st == BS_OK && (st = bsi_axis_make(BSI_AXIS_LINEAR, 1.0, fb->box[0], fb->box[1], ku, o->parm[0].n, &fb->au)) == BS_OK)
         st = bsi_axis_make(BSI_AXIS_LINEAR, 1.0, fb->box[2], fb->box[3], kv, o->parm[1].n, &fb->av);
     fb->kind = BS_FACE_BSPLINE;
-    int whole = st == BS_OK && memcmp(dom, fb->box, sizeof dom) == 0;
+    int whole = st == BS_OK && dom[0] == fb->box[0] && dom[1] == fb->box[1] && dom[2] == fb->box[2] &&
+                dom[3] == fb->box[3];
     if (whole && separate_spans(ku, o->parm[0].n, b.deg_u) && separate_spans(kv, o->parm[1].n, b.deg_v)) {
         size_t seg[2] = {nu, nv}, stride[2] = {b.deg_u + 1, b.deg_v + 1};
         free(ctrl);
@@ -194,7 +195,8 @@ static bs_status box_loop(const double *box, bsi_trim *t)
 }
 
 /* The loops in the builder's order (outer first) with their trims moved out of o->trims. */
-static bs_status order_loops(objm *o, const face_build *fb, bsi_trim **trims, size_t **lens, size_t *nloop)
+static bs_status order_loops(objm *o, const face_build *fb, bsi_trim **trims, size_t *ntrim, size_t **lens,
+                             size_t *nloop)
 {
     const objm_loop *l = o->loops.data;
     size_t outer = 0, second = 0;
@@ -207,6 +209,7 @@ static bs_status order_loops(objm *o, const face_build *fb, bsi_trim **trims, si
         return BS_ERR_UNSUPPORTED;
     }
     size_t extra = o->loops.n > 0 && outer == 0 ? 4 : 0, n = o->trims.n + extra;
+    *ntrim = n;
     *nloop = o->loops.n + (extra > 0);
     *trims = malloc((n ? n : 1) * sizeof **trims);
     *lens = malloc((*nloop ? *nloop : 1) * sizeof **lens);
@@ -235,8 +238,8 @@ static bs_status order_loops(objm *o, const face_build *fb, bsi_trim **trims, si
 static bs_status add_face(objm *o, face_build *fb)
 {
     bsi_trim *trims = NULL;
-    size_t *lens = NULL, nloop = 0, id;
-    bs_status st = order_loops(o, fb, &trims, &lens, &nloop);
+    size_t *lens = NULL, nloop = 0, ntrim = 0, id;
+    bs_status st = order_loops(o, fb, &trims, &ntrim, &lens, &nloop);
     if (st == BS_OK) {
         bsi_face_spec spec;
         memset(&spec, 0, sizeof spec);
@@ -244,8 +247,7 @@ static bs_status add_face(objm *o, face_build *fb)
         spec.trims = trims;
         spec.loop_len = lens;
         spec.nloop = nloop;
-        for (size_t k = 0; k < nloop; k++)
-            spec.ntrim += lens[k];
+        spec.ntrim = ntrim;
         st = bsi_model_add_face(o->m, &spec, &id);
     }
     free(trims);

@@ -4,8 +4,10 @@
  * multiplicity degree + 1, so that its spans are the face's patches exactly. Its loops are
  * `trim` (outer) and `hole` statements of curv2 curves written just before it, each a B-spline of
  * full-multiplicity knots at the trim's breaks (a reversed trim as its range backwards).
- * Numbers are shortest exact decimals; a rational point's coordinates are chosen so that weight
- * times coordinate gives back the stored homogeneous value where such a decimal exists.
+ * Numbers are shortest exact decimals. A rational trim's points are written as h / w: the reader's
+ * w * (h / w) gives h back whenever h is itself w times a double (every curve read from OBJ); a
+ * computed one (a conic, a B-spline cut inside a span) may come back an ulp away, and from then on
+ * exactly.
  * OBJ has no face orientation: a reversed face is written with u and v exchanged (its native
  * parameters come back exchanged, its outward normal the same). Edges, shells and instances are
  * not written (the reader sews edges again). Faces with angular directions (cylinders, cones,
@@ -14,7 +16,6 @@
 #include "io/obj_model.h"
 #include "mesh/sink.h"
 
-#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,24 +31,6 @@ static void put_double(bsi_sink *o, double x)
     char tmp[32];
     bsi_sink_str(o, " ");
     bsi_sink_put(o, tmp, bsi_format_double(x, tmp));
-}
-
-/* A coordinate x with w * x == h when one lies within two ulps of h / w. */
-static double coordinate(double h, double w)
-{
-    double x = h / w;
-    if (w == 1.0 || w * x == h)
-        return x;
-    double up = x, down = x;
-    for (int k = 0; k < 2; k++) {
-        up = nextafter(up, INFINITY);
-        down = nextafter(down, -INFINITY);
-        if (w * up == h)
-            return up;
-        if (w * down == h)
-            return down;
-    }
-    return x;
 }
 
 static void put_refs(bsi_sink *o, size_t first, size_t n)
@@ -80,8 +63,8 @@ static void put_curve(writer *wr, const bsi_curve *c, int swap)
     for (size_t k = 0; k < n; k++) {
         const double *h = c->hom + 3 * k;
         bsi_sink_str(o, "vp");
-        put_double(o, coordinate(h[swap ? 1 : 0], h[2]));
-        put_double(o, coordinate(h[swap ? 0 : 1], h[2]));
+        put_double(o, h[swap ? 1 : 0] / h[2]);
+        put_double(o, h[swap ? 0 : 1] / h[2]);
         if (rat)
             put_double(o, h[2]);
         bsi_sink_str(o, "\n");
@@ -125,7 +108,8 @@ static int sides_shared(const bs_model *m, const bsi_face *f)
                         pb = face_patch(m, f, 0, a + 1, b, 0, j, &y);
                     else if (j == q && b + 1 < f->av.n)
                         pb = face_patch(m, f, 0, a, b + 1, i, 0, &y);
-                    if (pb != NULL && (memcmp(pa->ctrl + 3 * x, pb->ctrl + 3 * y, 3 * sizeof(double)) != 0 ||
+                    if (pb != NULL && (pa->ctrl[3 * x] != pb->ctrl[3 * y] || pa->ctrl[3 * x + 1] != pb->ctrl[3 * y + 1] ||
+                                       pa->ctrl[3 * x + 2] != pb->ctrl[3 * y + 2] ||
                                        (pa->rational && pa->weights[x] != pb->weights[y])))
                         return 0;
                 }

@@ -394,6 +394,52 @@ static void test_models_of_surfaces(void)
     bs_model_destroy(m);
 }
 
+/* Odd but valid text: CR LF, tabs, colours, continuations with blanks after the backslash, a
+ * backslash at the very end, a 3-D curve's body skipped; a Bezier surface of 2 x 2 segments and
+ * one of degree 0. Then faces the writer must write as B-splines or refuse. */
+static void test_quirks(void)
+{
+    static const char text[] =
+        "# quirks\r\nv 0 0 0 0.5 0.5 0.5\r\nv 1 0 0\t\r\nv 0 1 \\  \t\r\n  0.25\r\nv 1 1 0\r\n"
+        "curv 0 1 1 2\r\nparm u 0 1\r\nend\r\n"
+        "cstype bezier\r\ndeg 1 1\r\nsurf 0 1 0 1 1 2 3 4 # one patch\r\nend\r\n"
+        "v 0 0 0\nv 1 0 0\nv 2 0 1\nv 0 1 0\nv 1 1 2\nv 2 1 0\nv 0 2 1\nv 1 2 0\nv 2 2 0\n"
+        "surf 0 2 0 2 -9 -8 -7 -6 -5 -4 -3 -2 -1\nparm u 0 1 2\nparm v 0 1 2\nend\n"
+        "deg 0 1\nsurf 0 1 0 1 1 2\nend\nv 2 2 2 \\";
+    bs_parse_error err = {0, 0, ""};
+    bs_model *m = NULL;
+    CHECK_STATUS(bs_model_read_obj(text, sizeof text - 1, &err, &m), BS_OK);
+    CHECKF(m != NULL && bs_model_face_count(m) == 3, "%zu:%zu %s", err.line, err.column, err.message);
+    if (m == NULL)
+        return;
+    const bs_patch *p0 = bs_surface_get(m->surface, 0);
+    CHECK(p0->ctrl[3 * 1 + 2] == 0.25 && m->faces[1].patch_count == 4 && m->faces[2].patch_count == 1);
+    round_trip(m, "quirks");
+    /* shared sides that differ: written as a B-spline of separate spans, the patches kept */
+    bs_patch *p = (bs_patch *)bs_surface_get(m->surface, m->faces[1].first_patch);
+    p->ctrl[3 * 1 + 2] = 0.5; /* point (0, 1): the side shared with the next patch along v */
+    size_t size;
+    CHECK_STATUS(bs_model_write_obj(m, NULL, 0, &size), BS_OK);
+    char *out = malloc(size + 1);
+    CHECK_STATUS(bs_model_write_obj(m, out, size + 1, &size), BS_OK);
+    bs_model *back = NULL;
+    CHECK_STATUS(bs_model_read_obj(out, size, NULL, &back), BS_OK);
+    free(out);
+    CHECK(back != NULL && back->faces[1].kind == BS_FACE_BSPLINE && back->faces[1].patch_count == 4);
+    for (size_t k = 0; back != NULL && k < 4; k++)
+        CHECK(same_patch(bs_surface_get(m->surface, m->faces[1].first_patch + k),
+                         bs_surface_get(back->surface, back->faces[1].first_patch + k)));
+    bs_model_destroy(back);
+    /* patches of two degrees in one face; a B-spline face of degree 0 */
+    p = (bs_patch *)bs_surface_get(m->surface, m->faces[1].first_patch + 1);
+    p->deg_u++;
+    CHECK_STATUS(bs_model_write_obj(m, NULL, 0, &size), BS_ERR_UNSUPPORTED);
+    p->deg_u--;
+    m->faces[2].kind = BS_FACE_BSPLINE;
+    CHECK_STATUS(bs_model_write_obj(m, NULL, 0, &size), BS_ERR_UNSUPPORTED);
+    bs_model_destroy(m);
+}
+
 /* ---- refusals ---- */
 typedef struct bad_text {
     const char *text;
@@ -592,6 +638,7 @@ int main(void)
     test_plate();
     test_strip();
     test_models_of_surfaces();
+    test_quirks();
     test_refusals();
     test_cap();
 #ifdef BS_WRAP_MALLOC
