@@ -10,10 +10,12 @@ seconds=${1:-120}
 build=${FUZZ_BUILD:-$root/build-fuzz}
 CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
   -DBS_BUILD_TOOLS=OFF >/dev/null
-cmake --build "$build" -j2 --target fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_obj_model
-for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_obj_model; do
+cmake --build "$build" -j2 --target fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_iges_model fuzz_obj_model
+for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_iges_model fuzz_obj_model; do
   budget=$seconds
-  case $target in fuzz_obj | fuzz_obj_model | fuzz_iges) if [ "$budget" -gt 60 ]; then budget=60; fi ;; esac
+  case $target in fuzz_obj | fuzz_obj_model | fuzz_iges | fuzz_iges_model) if [ "$budget" -gt 60 ]; then budget=60; fi ;; esac
+  max_len=4096
+  case $target in fuzz_iges_model) max_len=8192 ;; esac # the seeds are whole CAD parts
   seeds=$root/tests/fuzz/corpus/$target
   work=$build/corpus-$target
   mkdir -p "$work" "$build/artifacts"
@@ -21,7 +23,7 @@ for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_obj_model; do
   "$build/tests/$target" -runs=0 "$seeds" 2>&1 | tail -n 1
   echo "== $target: fuzz ${budget}s"
   log=$build/$target.log
-  if ! "$build/tests/$target" -max_total_time="$budget" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
+  if ! "$build/tests/$target" -max_total_time="$budget" -max_len="$max_len" -timeout=10 -rss_limit_mb=1024 \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" "$work" "$seeds" >"$log" 2>&1; then
     tail -n 60 "$log"
     echo "== $target: FAILED (the input is saved in $build/artifacts)"
