@@ -253,5 +253,13 @@ bs_status bsi_pcurve_project_def(const bsi_surface_def *def, int swap, const dou
  * each starts where the one before ends (in the loop's direction: `reversed` trims start at their
  * curve's end): a seam edge used twice lands at u = 0 once and at u = 2 pi once. trims[0] stays. */
 void bsi_pcurve_close_loop(bsi_trim *trims, size_t n, const double *period);
+/* The same for one loop of trims computed on def (as bsi_pcurve_project_def: swap, box): the def's
+ * periodic directions as above, and where the surface is closed without being periodic (a clamped
+ * B-spline whose first and last rows of control points agree within tol, as a lofted tube; an
+ * extrusion or revolution of a closed curve) each trim lying on that seam is put on the domain's
+ * low or high side, whichever the trims before and after it in the loop are nearer to. Without
+ * it both uses of such a seam edge come out on the side the closest point happens to give. */
+void bsi_pcurve_close_loop_def(const bsi_surface_def *def, int swap, const double *box, double tol,
+                               bsi_trim *trims, size_t n);
 
 #endif

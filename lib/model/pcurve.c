@@ -184,6 +184,34 @@ static bs_status fit_span(fitter *F, double t1, double min_step)
     return st;
 }
 
+/* A first foot on the seam of a surface closed in a direction that is not periodic (a closed
+ * B-spline's first and last rows are the same points) is put on the side the edge goes on: the
+ * side nearer the foot a step further along. */
+static bs_status seam_side(const fitter *F, node *first, double t1)
+{
+    const bsi_pc_surf *S = F->S;
+    for (size_t k = 0; k < 2 && S->def == NULL; k++) {
+        double lo = S->box[2 * k], hi = S->box[2 * k + 1], eps = 1e-9 * (hi - lo);
+        int at_lo = fabs(first->uv[k] - lo) <= eps, at_hi = fabs(first->uv[k] - hi) <= eps;
+        if (S->period[k] > 0.0 || !(at_lo || at_hi))
+            continue;
+        double other[2] = {first->uv[0], first->uv[1]}, p[3], q[3], du[3], dv[3];
+        other[k] = at_lo ? hi : lo;
+        if (!bsi_pc_eval(S, first->uv, p, du, dv) || !bsi_pc_eval(S, other, q, du, dv) ||
+            !(hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]) <= F->tol))
+            continue;
+        node probe;
+        bs_status st = project_node(F, first->t + (t1 - first->t) / CHAIN, NULL, &probe);
+        if (st != BS_OK)
+            return st;
+        if (fabs(probe.uv[k] - other[k]) < fabs(probe.uv[k] - first->uv[k])) {
+            first->uv[k] = other[k];
+            derivatives(F, first);
+        }
+    }
+    return BS_OK;
+}
+
 /* Whole periods added to a periodic direction of every node: the trim inside [lo, hi] when its
  * range fits there, else its start in [lo, lo + period). */
 static void place(fitter *F, int k, double lo, double hi, double period)
@@ -218,7 +246,8 @@ static bs_status to_trim(const fitter *F, bsi_trim *out)
     free(inner);
     if (st != BS_OK)
         return st;
-    /* the breaks strictly increase: the axis has nseg pieces */
+    /* the breaks strictly increase: the axis has nseg >= 1 pieces (a node per span end) */
+    /* NOLINTNEXTLINE(clang-analyzer-optin.portability.UnixAPI): nseg >= 1, see above */
     if ((c.hom = malloc(nseg * 4 * 3 * sizeof *c.hom)) == NULL) {
         bsi_axis_free(&c.axis);
         return BS_ERR_NO_MEMORY;
@@ -268,6 +297,8 @@ bs_status bsi_pc_fit(const bsi_pc_surf *S, const bsi_curve *edge, const double *
     double min_step = 1e-12 * (br[edge->axis.n] - br[0]);
     node first;
     bs_status st = project_node(&F, br[0], hint, &first);
+    if (st == BS_OK && hint == NULL)
+        st = seam_side(&F, &first, br[1]);
     if (st == BS_OK)
         st = append(&F, &first);
     for (size_t k = 0; st == BS_OK && k < edge->axis.n; k++)

@@ -1,7 +1,6 @@
 /*
  * Computed trims before the face exists: the surface from its definition (closed forms for the
- * analytic kinds, patches over the face's box or the surface's domain for the others), and loops
- * of computed trims made continuous across periodic seams.
+ * analytic kinds, patches over the face's box or the surface's domain for the others).
  */
 #include "model/pcurve_internal.h"
 
@@ -24,8 +23,7 @@ static void dot_range(const bsi_curve *c, const double *d, double *lo, double *h
     }
 }
 
-/* The canonical domain of a surface of patches when the caller gives no box. */
-static bs_status default_box(const bsi_surface_def *def, const bsi_curve *edge, double *box)
+bs_status bsi_pc_default_box(const bsi_surface_def *def, const bsi_curve *edge, double *box)
 {
     if (def->kind == BS_FACE_BSPLINE && def->bspline != NULL) {
         const bs_bspline *b = def->bspline;
@@ -131,7 +129,7 @@ bs_status bsi_pcurve_project_def(const bsi_surface_def *def, int swap, const dou
         memcpy(canon, box, sizeof canon);
         if (S.swap)
             canon[0] = box[2], canon[1] = box[3], canon[2] = box[0], canon[3] = box[1];
-    } else if ((st = default_box(def, edge, canon)) == BS_OK) {
+    } else if ((st = bsi_pc_default_box(def, edge, canon)) == BS_OK) {
         memcpy(native, canon, sizeof native);
         if (S.swap)
             native[0] = canon[2], native[1] = canon[3], native[2] = canon[0], native[3] = canon[1];
@@ -156,33 +154,4 @@ bs_status bsi_pcurve_project_def(const bsi_surface_def *def, int swap, const dou
     }
     bs_surface_destroy(s);
     return st;
-}
-
-/* The loop-direction start (end: at_end) of a trim's curve. */
-static void trim_end(const bsi_trim *t, int at_end, double *uv)
-{
-    const bsi_curve *c = &t->uv;
-    size_t last = c->axis.n * (c->degree + 1) - 1;
-    const double *h = c->hom + ((t->reversed != 0) != (at_end != 0) ? last : 0) * 3;
-    uv[0] = h[0] / h[2];
-    uv[1] = h[1] / h[2];
-}
-
-void bsi_pcurve_close_loop(bsi_trim *trims, size_t n, const double *period)
-{
-    for (size_t i = 1; i < n; i++) {
-        double end[2], start[2];
-        trim_end(&trims[i - 1], 1, end);
-        trim_end(&trims[i], 0, start);
-        bsi_curve *c = &trims[i].uv;
-        for (int k = 0; k < 2; k++) {
-            if (!(period[k] > 0.0))
-                continue;
-            double shift = period[k] * round((end[k] - start[k]) / period[k]);
-            if (shift == 0.0)
-                continue;
-            for (size_t j = 0; j < c->axis.n * (c->degree + 1); j++)
-                c->hom[j * 3 + (size_t)k] += shift * c->hom[j * 3 + 2];
-        }
-    }
 }

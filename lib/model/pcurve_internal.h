@@ -46,4 +46,8 @@ int bsi_pc_edge(const bsi_curve *c, double t, int left, double *p, double *dp);
 bs_status bsi_pc_fit(const bsi_pc_surf *S, const bsi_curve *edge, const double *hint,
                      const double *place_box, double tol, bsi_trim *out);
 
+/* The canonical domain of a surface of patches (BSPLINE, REVOLUTION, EXTRUSION) when the caller
+ * gives no box; edge bounds an extrusion's v. BS_ERR_DOMAIN without a curve or a direction. */
+bs_status bsi_pc_default_box(const bsi_surface_def *def, const bsi_curve *edge, double *box);
+
 #endif

@@ -522,6 +522,22 @@ static void test_patches(void)
     CHECKF(fabs(uv0[0] - (-0.25 * PI - 2.0 * PI)) < 1e-9, "u %g", uv0[0]);
     bsi_curve_free(&t.uv);
     bsi_curve_free(&e);
+    /* closed but not periodic (as a closed B-spline): circles starting on the seam go the right way */
+    P.S.period[0] = 0.0;
+    e = circle(c, x, y, 2.0, 0.0, 2.0 * PI);
+    t = run_patched(&P, &cy, NULL, &e, "circle, closed not periodic");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0]) < 1e-9 && fabs(uv1[0] - 2.0 * PI) < 1e-9, "u %g .. %g", uv0[0], uv1[0]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    double ny[3] = {-y[0], -y[1], -y[2]};
+    e = circle(c, x, ny, 2.0, 0.0, 2.0 * PI);
+    t = run_patched(&P, &cy, NULL, &e, "backwards, closed not periodic");
+    trim_ends(&t, uv0, uv1);
+    CHECKF(fabs(uv0[0] - 2.0 * PI) < 1e-9 && fabs(uv1[0]) < 1e-9, "u %g .. %g", uv0[0], uv1[0]);
+    bsi_curve_free(&t.uv);
+    bsi_curve_free(&e);
+    P.S.period[0] = 2.0 * PI;
     local_point(&cy, 2.0, 0.0, -1.0, p);
     local_dir(&cy, 0.0, 0.0, 1.0, d);
     e = line(p, d, 0.0, 5.0);
@@ -990,7 +1006,7 @@ static void test_close_loop(void)
     for (int i = 0; i < 4; i++)
         CHECK(bsi_pcurve_project_def(&cy, 0, NULL, NULL, &edges[i], TOL, &trims[i]) == BS_OK);
     trims[2].reversed = trims[3].reversed = 1;
-    bsi_pcurve_close_loop(trims, 4, (const double[]){2.0 * PI, 0.0});
+    bsi_pcurve_close_loop_def(&cy, 0, NULL, 1e-9, trims, 4);
     double a[2], b[2];
     trim_ends(&trims[1], a, b);
     CHECKF(fabs(a[0] - 2.0 * PI) < 1e-9 && fabs(b[0] - 2.0 * PI) < 1e-9, "seam up at %g", a[0]);
@@ -1001,6 +1017,54 @@ static void test_close_loop(void)
     for (int i = 0; i < 4; i++) {
         bsi_curve_free(&trims[i].uv);
         bsi_curve_free(&edges[i]);
+    }
+}
+
+/* The seam of a closed B-spline (first and last rows alike), not periodic: trims on it are put on
+ * the side where the loop goes on. */
+static void test_closed_seam(void)
+{
+    static const double ku[6] = {0, 0, 0, 1, 1, 1}, kv[4] = {0, 0, 1, 1};
+    double ctrl[3 * 2 * 3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 2; j++) {
+            double *q = ctrl + (i * 2 + j) * 3;
+            q[0] = i == 1 ? 2.0 : 0.0;
+            q[1] = i == 1 ? 1.0 : 0.0;
+            q[2] = j;
+        }
+    bs_bspline b = {2, 1, 3, 2, 3, ku, kv, ctrl, NULL};
+    bsi_surface_def d;
+    memset(&d, 0, sizeof d);
+    d.kind = BS_FACE_BSPLINE;
+    d.bspline = &b;
+    for (int swap = 0; swap < 2; swap++) {
+        /* (u0 u1 v0 v1): bottom 0 -> 1 at v = 0, seam up (wrongly at u = 0), top back at v = 1,
+         * seam down (wrongly at u = 1) */
+        double q[4][4] = {{0, 1, 0, 0}, {0, 0, 0, 1}, {1, 0, 1, 1}, {1, 1, 1, 0}};
+        bsi_trim t[4];
+        for (int k = 0; k < 4; k++) {
+            memset(&t[k], 0, sizeof t[k]);
+            CHECK(bsi_axis_make(BSI_AXIS_LINEAR, 1.0, 0.0, 1.0, NULL, 0, &t[k].uv.axis) == BS_OK);
+            t[k].uv = alloc_curve(2, 1, t[k].uv.axis);
+            double a[2] = {q[k][0], q[k][2]}, z[2] = {q[k][1], q[k][3]};
+            if (swap) {
+                double h = a[0];
+                a[0] = a[1], a[1] = h;
+                h = z[0];
+                z[0] = z[1], z[1] = h;
+            }
+            set_hom(&t[k].uv, 0, 0, a, 1.0);
+            set_hom(&t[k].uv, 0, 1, z, 1.0);
+        }
+        bsi_pcurve_close_loop_def(&d, swap, NULL, 1e-9, t, 4);
+        double a0[2], a1[2];
+        trim_ends(&t[1], a0, a1);
+        CHECKF(a0[swap] == 1.0 && a1[swap] == 1.0, "seam up at %g", a0[swap]);
+        trim_ends(&t[3], a0, a1);
+        CHECKF(a0[swap] == 0.0 && a1[swap] == 0.0, "seam down at %g", a0[swap]);
+        for (int k = 0; k < 4; k++)
+            bsi_curve_free(&t[k].uv);
     }
 }
 
@@ -1016,5 +1080,6 @@ int main(void)
     test_bezier_face();
     test_refusals();
     test_close_loop();
+    test_closed_seam();
     return bs_test_exit("test_pcurve");
 }
