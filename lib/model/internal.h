@@ -87,6 +87,10 @@ void bsi_curve_transform(bsi_curve *c, const double *affine);
 /* The point at native t (0 when t is outside the curve's range) and at local s of segment k. */
 int bsi_curve_eval(const bsi_curve *c, double t, double *p);
 void bsi_curve_point(const bsi_curve *c, size_t k, double s, double *p);
+/* The curve restricted to [t0, t1] inside its range, exactly and on the same kind of map (cut
+ * arcs of an angular axis put back into the standard form of their map; curve_cut.c).
+ * BS_ERR_DOMAIN for an empty or outside range, BS_ERR_NO_MEMORY. */
+bs_status bsi_curve_cut(const bsi_curve *src, double t0, double t1, bsi_curve *out);
 /* Bounding box of the control points: lo[dim], hi[dim]. */
 void bsi_curve_bounds(const bsi_curve *c, double *lo, double *hi);
 
