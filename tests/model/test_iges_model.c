@@ -262,6 +262,95 @@ static void test_small(void)
     }
 }
 
+/* A face read from ents: its info, and its points over its box (z of each checked against z). */
+static void one_face(const char *what, const ent *e, size_t n, int kind, double area, double z)
+{
+    bs_model *m = NULL;
+    bs_parse_error err;
+    memset(&err, 0, sizeof err);
+    bs_status st = read_ents(e, n, 0, &err, &m);
+    CHECKF(st == BS_OK, "%s: %d %s", what, (int)st, err.message);
+    if (st != BS_OK)
+        return;
+    bs_face_info fi;
+    memset(&fi, 0, sizeof fi);
+    fi.size = sizeof fi;
+    CHECK(bs_model_face_count(m) == 1 && bs_model_face_info(m, 0, &fi) == BS_OK && fi.kind == kind);
+    CHECKF(fabs((fi.u1 - fi.u0) * (fi.v1 - fi.v0) - area) < 1e-12, "%s: box %g %g %g %g", what, fi.u0, fi.u1, fi.v0,
+           fi.v1);
+    double pts[3 * 16];
+    size_t got = face_points(m, 0, 4, pts);
+    CHECK(got == 16);
+    for (size_t k = 0; k < got; k++)
+        CHECKF(isnan(z) || fabs(pts[3 * k + 2] - z) < 1e-14, "%s: z %.17g", what, pts[3 * k + 2]);
+    bs_model_destroy(m);
+}
+
+static void test_entities(void)
+{
+    /* 143 bounded by a 141 of the square's composite (3-D only): as the 144 */
+    ent b[9];
+    memcpy(b, square, sizeof square);
+    b[0] = (ent){143, 0, 0, "143,1,3,1,17;"};
+    b[2] = (ent){110, 0, 0, "110,0.,0.,0.,0.,0.,0.;"};
+    b[8] = (ent){141, 0, 0, "141,1,2,3,1,7,1,0;"};
+    one_face("143", b, 9, BS_FACE_PLANE, 4.0, 1.0);
+    /* a full ellipse (104) at z = 1 (its ZT) bounding the plane: box 4 by 2 */
+    static const ent ellipse[] = {
+        {144, 0, 0, "144,3,1,0,5;"},
+        {108, 0, 0, "108,0.,0.,1.,1.,0,0.,0.,0.,0.;"},
+        {142, 0, 0, "142,0,3,0,7,2;"},
+        {104, 1, 0, "104,1.,0.,4.,0.,0.,-4.,1.,2.,0.,2.,0.;"},
+    };
+    one_face("104", ellipse, 4, BS_FACE_PLANE, 8.0, 1.0);
+    /* a circle (100, full turn, ZT 1) of radius 2 turned upright by a 124: box 4 by 4 on the plane x = 3 */
+    static const ent circle[] = {
+        {144, 0, 0, "144,3,1,0,5;"},
+        {108, 0, 0, "108,1.,0.,0.,3.,0,0.,0.,0.,0.;"},
+        {142, 0, 0, "142,0,3,0,7,2;"},
+        {100, 0, 9, "100,3.,0.,0.,2.,0.,2.,0.;"},
+        {124, 0, 0, "124,0.,0.,1.,0.,1.,0.,0.,0.,0.,-1.,0.,0.;"},
+    };
+    one_face("100", circle, 5, BS_FACE_PLANE, 16.0, NAN);
+    /* a 128 trimmed by its own boundary (N1 = 0): its range */
+    static const ent own[] = {
+        {144, 0, 0, "144,3,0,0,0;"},
+        {128, 0, 0, "128,1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,2.,2.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,"
+                    "0.,1.,0.,2.;"},
+    };
+    one_face("128 untrimmed by 144", own, 2, BS_FACE_BSPLINE, 2.0, 0.0);
+    /* a tabulated cylinder (122) of a line swept along z, bounded by its own [0,1]^2 */
+    static const ent tab[] = {
+        {144, 0, 0, "144,3,0,0,0;"},
+        {122, 0, 0, "122,5,0.,0.,3.;"},
+        {110, 0, 0, "110,0.,0.,0.,2.,0.,0.;"},
+    };
+    one_face("122", tab, 3, BS_FACE_EXTRUSION, 1.0, NAN);
+    /* the sphere's 142 without its parameter curve: the trims projected from the 3-D curves */
+    bs_model *m = NULL;
+    char path[512];
+    (void)snprintf(path, sizeof path, "%s/sphere.igs", BS_CAD_DIR);
+    FILE *f = fopen(path, "rb");
+    char *t = malloc(1 << 16);
+    size_t len = f != NULL && t != NULL ? fread(t, 1, (1 << 16) - 1, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    t[len] = '\0';
+    char *at = strstr(t, "142,0,3,15,21,3;");
+    CHECK(at != NULL);
+    if (at != NULL) {
+        memcpy(at, "142,0,3,0 ,21,3;", 16);
+        bs_parse_error err;
+        bs_status st = bs_model_read_iges(t, len, &err, &m);
+        double area = NAN;
+        CHECKF(st == BS_OK && bs_model_face_count(m) == 1 && bs_model_properties(m, 1e-9, &area, NULL, NULL) == BS_OK &&
+                   fabs(area - 100 * acos(-1.0)) < 1e-6,
+               "projected sphere: status %d (%s), area %.12g", (int)st, err.message, area);
+        bs_model_destroy(m);
+    }
+    free(t);
+}
+
 static void test_refusals(void)
 {
     static const ent lines[] = {{110, 0, 0, "110,0.,0.,0.,1.,0.,0.;"}, {116, 0, 0, "116,0.,0.,0.;"}};
@@ -341,6 +430,7 @@ static void test_refusals(void)
 int main(void)
 {
     test_small();
+    test_entities();
     test_refusals();
     test_spoiled_parts();
     test_parts();
