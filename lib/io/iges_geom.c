@@ -221,6 +221,9 @@ static bs_status composite_102(igm *m, size_t s, iges_stream *st, int depth)
         if ((r = bsi_igm_ptr(m, s, st, "a curve pointer", 0, &c, NULL)) != BS_OK ||
             (r = bsi_igm_curve(m, c, depth + 1)) != BS_OK)
             return r;
+        if (m->slot[c].npieces > m->g.len / 2 - m->copies) /* nested composites reusing curves */
+            return bsi_igm_fail(m, s, 1, "composite curves of more pieces than the file's size allows");
+        m->copies += m->slot[c].npieces;
         for (size_t i = 0; i < m->slot[c].npieces && r == BS_OK; i++)
             if ((r = more_pieces(e)) == BS_OK && (r = bsi_curve_copy(&m->slot[c].pieces[i], &e->pieces[e->npieces])) == BS_OK)
                 e->npieces++;

@@ -150,12 +150,14 @@ static bs_status no_surface(igm *m)
 {
     char list[64] = "";
     size_t used = 0, listed = 0;
-    for (size_t s = 0; s < m->nslot; s++) {
+    long types[6];
+    for (size_t s = 0; s < m->nslot && listed < 6; s++) {
         int seen = 0;
-        for (size_t t = 0; t < s && !seen; t++)
-            seen = m->slot[t].type == m->slot[s].type;
-        if (seen || listed == 6)
+        for (size_t t = 0; t < listed && !seen; t++)
+            seen = types[t] == m->slot[s].type;
+        if (seen)
             continue;
+        types[listed] = m->slot[s].type;
         int n = snprintf(list + used, sizeof list - used, "%s%ld", listed ? ", " : "", m->slot[s].type);
         if (n < 0 || (size_t)n >= sizeof list - used)
             break;

@@ -46,6 +46,7 @@ typedef struct igm {
     bs_model *model;
     bsi_growing vals;      /* scratch reals */
     int named;             /* the error message names its entity */
+    size_t copies;         /* pieces copied into composites: at most half the file's bytes */
 } igm;
 
 /* ---- iges_model.c ---- */
