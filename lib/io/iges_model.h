@@ -90,6 +90,7 @@ typedef struct igm_acc {
     bsi_growing lens;      /* size_t */
     size_t open;           /* trims of the loop being read */
     double period[2];      /* native periods of the face's surface */
+    const igm_surface *sf; /* the face's surface, once a trim is read */
 } igm_acc;
 
 void bsi_igm_acc_free(igm_acc *a);
@@ -98,8 +99,9 @@ void bsi_igm_acc_free(igm_acc *a);
  * plane or projected. The first trim gets edge, the others none. Entity s is named in errors. */
 bs_status bsi_igm_trims(igm *m, size_t s, size_t ss, size_t c, int space, int reversed, uint32_t edge,
                         igm_acc *a);
-/* End the loop being read (nothing when it is empty); a loop with projected trims is made
- * continuous across seams by whole periods. */
+/* End the loop being read (nothing when it is empty): a loop with projected trims is made
+ * continuous across seams by whole periods, and a gap between a trim's end and the next one's
+ * start (a pole the file leaves out) is closed by a line. */
 bs_status bsi_igm_close_loop(igm_acc *a);
 /* The face of the surface at slot ss with the loops of a (emptied), in shell `shell`. */
 bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed, size_t shell);

@@ -30,6 +30,55 @@ static bs_status push_trim(igm_acc *a, bsi_trim *t)
     return BS_OK;
 }
 
+/* The start (end 0) or end (end 1) of trim t in its loop's direction. */
+static void trim_end(const bsi_trim *t, int end, double *p)
+{
+    int last = end != t->reversed;
+    bsi_curve_point(&t->uv, last ? t->uv.axis.n - 1 : 0, last ? 1.0 : 0.0, p);
+}
+
+/* Lines across the gaps between the trims of the open loop (poles a 144's loop leaves out). */
+static bs_status fill_gaps(igm_acc *a)
+{
+    size_t first = a->trims.n - a->open;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (size_t k = first; k < a->trims.n; k++) {
+        double l[2], h[2];
+        bsi_curve_bounds(&((bsi_trim *)a->trims.data)[k].uv, l, h);
+        for (size_t d = 0; d < 2; d++) {
+            lo[d] = fmin(lo[d], l[d]);
+            hi[d] = fmax(hi[d], h[d]);
+        }
+    }
+    double eps = 1e-7 * hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    for (size_t k = first; k < a->trims.n; k++) {
+        size_t next = k + 1 < a->trims.n ? k + 1 : first;
+        double p[2], q[2];
+        trim_end(&((bsi_trim *)a->trims.data)[k], 1, p);
+        trim_end(&((bsi_trim *)a->trims.data)[next], 0, q);
+        if (!(hypot(q[0] - p[0], q[1] - p[1]) > eps))
+            continue;
+        bsi_trim gap;
+        memset(&gap, 0, sizeof gap);
+        gap.edge = BSI_NO_EDGE;
+        double d[2] = {q[0] - p[0], q[1] - p[1]};
+        bs_status r = bsi_curve_line(2, p, d, 0.0, 1.0, &gap.uv);
+        if (r == BS_OK)
+            r = bsi_grow(&a->trims, sizeof gap, 1);
+        if (r != BS_OK) {
+            bsi_curve_free(&gap.uv);
+            return r;
+        }
+        bsi_trim *t = a->trims.data;
+        memmove(t + k + 2, t + k + 1, (a->trims.n - k - 1) * sizeof *t);
+        t[k + 1] = gap;
+        a->trims.n++;
+        a->open++;
+        k++;
+    }
+    return BS_OK;
+}
+
 bs_status bsi_igm_close_loop(igm_acc *a)
 {
     if (a->open == 0)
@@ -38,9 +87,23 @@ bs_status bsi_igm_close_loop(igm_acc *a)
     int computed = 0;
     for (size_t k = 0; k < a->open; k++)
         computed |= t[k].computed;
-    if (computed)
-        bsi_pcurve_close_loop(t, a->open, a->period);
-    bs_status r = bsi_grow(&a->lens, sizeof(size_t), 1);
+    if (computed) {
+        const igm_surface *sf = a->sf;
+        double tol = 1e-7;
+        if (sf->def.kind == BS_FACE_BSPLINE) { /* its size from its control points */
+            double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+            for (size_t k = 0; k < sf->b.count_u * sf->b.count_v; k++)
+                for (size_t c = 0; c < 3; c++) {
+                    lo[c] = fmin(lo[c], sf->b.ctrl[3 * k + c]);
+                    hi[c] = fmax(hi[c], sf->b.ctrl[3 * k + c]);
+                }
+            tol *= hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]);
+        }
+        bsi_pcurve_close_loop_def(&sf->def, sf->swap, sf->has_box ? sf->box : NULL, tol, t, a->open);
+    }
+    bs_status r = fill_gaps(a);
+    if (r == BS_OK)
+        r = bsi_grow(&a->lens, sizeof(size_t), 1);
     if (r != BS_OK)
         return r;
     ((size_t *)a->lens.data)[a->lens.n++] = a->open;
@@ -72,6 +135,7 @@ bs_status bsi_igm_trims(igm *m, size_t s, size_t ss, size_t c, int space, int re
     bsi_surface_def_periods(&sf->def, &pu, &pv);
     a->period[0] = sf->swap ? pv : pu;
     a->period[1] = sf->swap ? pu : pv;
+    a->sf = sf;
     double pa[8] = {x[0], x[1], 0, x[2], x[3], x[4], 0, x[5]};
     double pl[8] = {f->x[0], f->x[1], f->x[2], -(f->o[0] * f->x[0] + f->o[1] * f->x[1] + f->o[2] * f->x[2]),
                     f->y[0], f->y[1], f->y[2], -(f->o[0] * f->y[0] + f->o[1] * f->y[1] + f->o[2] * f->y[2])};
