@@ -130,6 +130,12 @@ bs_status bsi_surface_def_patches(const bsi_surface_def *def, const double *box,
 void bsi_surface_def_eval(const bsi_surface_def *def, double u, double v, double *p);
 /* Period of canonical u and v (2 pi along the angular directions of closed surfaces), 0 if none. */
 void bsi_surface_def_periods(const bsi_surface_def *def, double *pu, double *pv);
+/* The canonical (u, v) of the point of def nearest p, in closed form for PLANE .. TORUS: 1, or 0
+ * (uv untouched) for the other kinds and where u (or a torus's v) is undefined: on the axis, at
+ * the centre of a sphere or the core circle of a torus. Angles are in [0, 2 pi) (a sphere's v in
+ * [-pi/2, pi/2]), or with a finite hint the ones nearest hint[0] (and a torus's v nearest
+ * hint[1]) by whole turns, for continuity along a curve. */
+int bsi_surface_def_inverse(const bsi_surface_def *def, const double *p, const double *hint, double *uv);
 
 /* ---- The model (model.c, face_map.c) ---- */
 #define BSI_NO_EDGE UINT32_MAX
