@@ -89,6 +89,7 @@ bs_status bsi_patch_grid(bs_surface *s, const bsi_axis *au, const bsi_axis *av, 
                          bsi_grid_patch_fn make)
 {
     size_t count = au->n * av->n;
+    // NOLINTNEXTLINE(bugprone-sizeof-expression): an array of pointers
     bs_patch **made = calloc(count ? count : 1, sizeof *made);
     if (made == NULL)
         return BS_ERR_NO_MEMORY;

@@ -143,7 +143,7 @@ static bs_status bspline_patches(const bsi_surface_def *def, const double *box, 
         return BS_ERR_DOMAIN;
     bs_surface *all = NULL;
     double *span_box = malloc(4 * nu * nv * sizeof *span_box);
-    if (span_box == NULL || (st = bs_surface_create(&all)) != BS_OK) {
+    if (span_box == NULL || bs_surface_create(&all) != BS_OK) {
         free(span_box);
         return BS_ERR_NO_MEMORY;
     }
@@ -175,7 +175,7 @@ bs_status bsi_sweep_patches(const bsi_surface_def *def, const double *box, bs_su
             return BS_ERR_INVALID_ARG;
         if (!clip(&lo, &hi, c->axis.breaks[0], c->axis.breaks[c->axis.n]) ||
             (revolve && !(fabs(bsi_dot3(def->f.z, def->f.z) - 1.0) <= 1e-9 && bsi_all_finite(def->f.o, 3))) ||
-            (!revolve && !bsi_all_finite(def->dir, 3)))
+            (!revolve && !(bsi_all_finite(def->dir, 3) && bsi_dot3(def->dir, def->dir) > 0.0)))
             return BS_ERR_DOMAIN;
         bsi_curve cut;
         if ((st = bsi_curve_cut(c, lo, hi, &cut)) != BS_OK)

@@ -415,6 +415,8 @@ static void test_rational_sweeps(void)
     d.kind = BS_FACE_EXTRUSION;
     d.dir[1] = NAN;
     CHECK_STATUS(bsi_surface_def_patches(&d, ebox, s, &au, &av), BS_ERR_DOMAIN);
+    d.dir[0] = d.dir[1] = d.dir[2] = 0.0; /* no sweep */
+    CHECK_STATUS(bsi_surface_def_patches(&d, ebox, s, &au, &av), BS_ERR_DOMAIN);
     CHECK(bs_surface_count(s) == 0 && au.n == 0 && av.n == 0);
     bs_surface_destroy(s);
     bsi_curve_free(&c);
