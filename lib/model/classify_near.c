@@ -1,0 +1,311 @@
+/*
+ * Classification, the ON test and the segment helpers: is the point of a face within tol in 3-D
+ * of its boundary? A branch and bound along each trim with certified bounds of the speed of the
+ * boundary on the surface (classify.c describes the method).
+ */
+#include "model/classify_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+#define NEAR_DEPTH 40
+#define NEAR_BUDGET 4000 /* evaluations of the surface per trim segment */
+
+/* The piece [s0, s1] of the degree-p segment seg into out (de Casteljau, twice). */
+void bsi_seg_piece(const double *seg, size_t p, double s0, double s1, double *out)
+{
+    double tmp[BSI_SEG_MAX];
+    memcpy(out, seg, (p + 1) * 3 * sizeof *out);
+    if (s1 < 1.0) { /* keep [0, s1] */
+        memcpy(tmp, out, (p + 1) * 3 * sizeof *tmp);
+        for (size_t r = 1; r <= p; r++) {
+            for (size_t i = 0; i + r <= p; i++)
+                for (size_t c = 0; c < 3; c++)
+                    tmp[i * 3 + c] = (1.0 - s1) * tmp[i * 3 + c] + s1 * tmp[(i + 1) * 3 + c];
+            memcpy(out + r * 3, tmp, 3 * sizeof *tmp);
+        }
+    }
+    if (s0 > 0.0) { /* keep [s0 / s1, 1] of that */
+        double s = s0 / s1;
+        memcpy(tmp, out, (p + 1) * 3 * sizeof *tmp);
+        for (size_t r = 1; r <= p; r++) {
+            for (size_t i = 0; i + r <= p; i++)
+                for (size_t c = 0; c < 3; c++)
+                    tmp[i * 3 + c] = (1.0 - s) * tmp[i * 3 + c] + s * tmp[(i + 1) * 3 + c];
+            memcpy(out + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
+        }
+    }
+}
+
+/* The point at s of a 2-D segment (de Casteljau on homogeneous points). */
+void bsi_seg_point(const double *seg, size_t p, double s, double *xy)
+{
+    double tmp[BSI_SEG_MAX];
+    memcpy(tmp, seg, (p + 1) * 3 * sizeof *tmp);
+    for (size_t r = 1; r <= p; r++)
+        for (size_t i = 0; i + r <= p; i++)
+            for (size_t c = 0; c < 3; c++)
+                tmp[i * 3 + c] = (1.0 - s) * tmp[i * 3 + c] + s * tmp[(i + 1) * 3 + c];
+    xy[0] = tmp[0] / tmp[2];
+    xy[1] = tmp[1] / tmp[2];
+}
+
+/* ---- speed bounds ----
+ * A rational Bezier C = H / W of degree n has C' = (n / W) sum_i B_i^{n-1} [w_{i+1} (P_{i+1} - P_i)
+ * + (w_{i+1} - w_i) (P_i - C)] (from H' - C W', H - C W = 0), so
+ * |C'| <= n (wmax max |P_{i+1} - P_i| + max |w_{i+1} - w_i| diameter) / wmin; the same holds
+ * coordinate by coordinate, and along one direction of a patch with the differences taken along
+ * that direction. */
+static double speed_1d(const double *x, const double *w, size_t p)
+{
+    double wlo = INFINITY, whi = 0.0, lo = INFINITY, hi = -INFINITY, dx = 0.0, dw = 0.0;
+    for (size_t i = 0; i <= p; i++) {
+        wlo = bsi_dmin(wlo, w[i]), whi = bsi_dmax(whi, w[i]), lo = bsi_dmin(lo, x[i]), hi = bsi_dmax(hi, x[i]);
+        if (i > 0)
+            dx = bsi_dmax(dx, fabs(x[i] - x[i - 1])), dw = bsi_dmax(dw, fabs(w[i] - w[i - 1]));
+    }
+    return (double)p * (whi * dx + dw * (hi - lo)) / wlo;
+}
+
+/* Speeds along u and v of the 2-D piece h (homogeneous points) over its own [0, 1]. */
+static void curve_speed(const double *h, size_t p, double *speed)
+{
+    double x[BS_MAX_DEGREE + 1], y[BS_MAX_DEGREE + 1], w[BS_MAX_DEGREE + 1];
+    for (size_t i = 0; i <= p; i++) {
+        w[i] = h[i * 3 + 2];
+        x[i] = h[i * 3] / w[i];
+        y[i] = h[i * 3 + 1] / w[i];
+    }
+    speed[0] = speed_1d(x, w, p);
+    speed[1] = speed_1d(y, w, p);
+}
+
+/* Native -> local rate of piece k of an axis (the largest over the piece). */
+static double axis_rate(const bsi_axis *a, size_t k)
+{
+    double width = a->breaks[k + 1] - a->breaks[k];
+    if (a->kind == BSI_AXIS_ANGULAR)
+        return a->radians / (2.0 * sin(0.5 * a->radians * width));
+    return 1.0 / width;
+}
+
+static double dist3(const double *a, const double *b)
+{
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/* Bound of |dS/ds| (dir 0) or |dS/dt| (dir 1) of a 3-D patch. */
+static double patch_speed(const bs_patch *pt, int dir)
+{
+    size_t nu = pt->deg_u + 1, nv = pt->deg_v + 1, deg = dir == 0 ? pt->deg_u : pt->deg_v;
+    if (deg == 0)
+        return 0.0;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double wlo = INFINITY, whi = 0.0, dp = 0.0, dw = 0.0;
+    for (size_t i = 0; i < nu; i++)
+        for (size_t j = 0; j < nv; j++) {
+            const double *q = pt->ctrl + (i * nv + j) * 3;
+            double w = pt->weights ? pt->weights[i * nv + j] : 1.0;
+            wlo = bsi_dmin(wlo, w), whi = bsi_dmax(whi, w);
+            for (int c = 0; c < 3; c++)
+                lo[c] = bsi_dmin(lo[c], q[c]), hi[c] = bsi_dmax(hi[c], q[c]);
+            if ((dir == 0 && i == 0) || (dir == 1 && j == 0))
+                continue;
+            size_t prev = dir == 0 ? (i - 1) * nv + j : i * nv + j - 1;
+            dp = bsi_dmax(dp, dist3(q, pt->ctrl + prev * 3));
+            if (pt->weights != NULL)
+                dw = bsi_dmax(dw, fabs(w - pt->weights[prev]));
+        }
+    return (double)deg * (whi * dp + dw * dist3(lo, hi)) / wlo;
+}
+
+/* Bounds of |dS/du| and |dS/dv| per native unit over the face. */
+static void face_speed(const bs_model *m, const bsi_face *face, double *lip)
+{
+    double la = 0.0, lb = 0.0;
+    for (size_t i = 0; i < face->au.n; i++)
+        for (size_t j = 0; j < face->av.n; j++) {
+            const bs_patch *pt = bs_surface_get(m->surface, face->first_patch + i * face->av.n + j);
+            la = bsi_dmax(la, patch_speed(pt, 0) * axis_rate(&face->au, i));
+            lb = bsi_dmax(lb, patch_speed(pt, 1) * axis_rate(&face->av, j));
+        }
+    lip[0] = face->swap ? lb : la;
+    lip[1] = face->swap ? la : lb;
+}
+
+/* ---- ON: within tol in 3-D of a trim that bounds the face ---- */
+/* The one value of coordinate d along a trim, if it has one. */
+static int constant_coord(const bsi_curve *c, size_t d, double *x)
+{
+    size_t np = c->axis.n * (c->degree + 1);
+    double x0 = c->hom[d] / c->hom[2];
+    for (size_t i = 1; i < np; i++)
+        if (c->hom[i * 3 + d] / c->hom[i * 3 + 2] != x0)
+            return 0;
+    *x = x0;
+    return 1;
+}
+
+static int is_seam(const bs_model *m, size_t f, size_t t)
+{
+    const bsi_face *face = &m->faces[f];
+    uint32_t e = m->trims[t].edge;
+    if (e != BSI_NO_EDGE && e < m->nedge && m->edges[e].face[0] == f && m->edges[e].face[1] == f)
+        return 1;
+    for (size_t d = 0; d < 2; d++) {
+        double x, y, per = face->period[d];
+        if (!(per > 0.0) || !constant_coord(&m->trims[t].uv, d, &x))
+            continue;
+        size_t t0 = m->loops[face->first_loop].first_trim;
+        size_t t1 = t0;
+        for (size_t l = face->first_loop; l < face->first_loop + face->loop_count; l++)
+            t1 = m->loops[l].first_trim + m->loops[l].trim_count;
+        for (size_t o = t0; o < t1; o++)
+            if (o != t && constant_coord(&m->trims[o].uv, d, &y) &&
+                fabs(fabs(x - y) - per) <= 1e-9 * per)
+                return 1;
+    }
+    return 0;
+}
+
+/* The Bernstein polynomials of degree n at s. */
+static void bernstein(size_t n, double s, double *b)
+{
+    b[0] = 1.0;
+    for (size_t j = 1; j <= n; j++) {
+        double carry = 0.0;
+        for (size_t k = 0; k < j; k++) {
+            double t = b[k];
+            b[k] = carry + (1.0 - s) * t;
+            carry = s * t;
+        }
+        b[j] = carry;
+    }
+}
+
+/* The point of face f at native (u, v) from its patch's homogeneous net (one point: cheaper than
+ * the block evaluator); 0 outside the face's patches. */
+static int surface_point(const bs_model *m, size_t f, double u, double v, double *q)
+{
+    uint32_t id;
+    double st[2], bu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], acc[4] = {0.0, 0.0, 0.0, 0.0};
+    if (!bsi_face_locate(m, f, u, v, &id, st))
+        return 0;
+    const bs_patch *pt = bs_surface_get(m->surface, id);
+    size_t nv = pt->deg_v + 1, nctrl = pt->nctrl;
+    bernstein(pt->deg_u, st[0], bu);
+    bernstein(pt->deg_v, st[1], bv);
+    for (size_t i = 0; i <= pt->deg_u; i++)
+        for (size_t j = 0; j < nv; j++) {
+            double b = bu[i] * bv[j];
+            for (size_t c = 0; c < pt->ncoord; c++)
+                acc[c] += b * pt->hom[c * nctrl + i * nv + j];
+        }
+    double w = pt->rational ? acc[3] : 1.0;
+    for (int c = 0; c < 3; c++)
+        q[c] = acc[c] / w;
+    return 1;
+}
+
+typedef struct near_ctx {
+    const bs_model *m;
+    size_t f;
+    const double *box;
+    double p[3], lip[2], tol;
+} near_ctx;
+
+/* |P - S(c(s))| with c(s) kept in the face's box; INFINITY where the surface is not found. */
+static double distance_at(const near_ctx *x, const double *seg, size_t p, double s)
+{
+    double uv[2], q[3];
+    bsi_seg_point(seg, p, s, uv);
+    uv[0] = bsi_dmin(bsi_dmax(uv[0], x->box[0]), x->box[1]);
+    uv[1] = bsi_dmin(bsi_dmax(uv[1], x->box[2]), x->box[3]);
+    if (!surface_point(x->m, x->f, uv[0], uv[1], q))
+        return INFINITY;
+    return dist3(x->p, q);
+}
+
+/* Within tol of P somewhere on the segment: each piece [s0, s1] is at least D - K / 2 from P, D
+ * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1]. */
+static int seg_near(const near_ctx *x, const double *seg, size_t p)
+{
+    struct { double s0, s1; int depth; } stack[NEAR_DEPTH + 2];
+    size_t top = 0, budget = NEAR_BUDGET;
+    stack[top].s0 = 0.0;
+    stack[top].s1 = 1.0;
+    stack[top++].depth = 0;
+    while (top > 0 && budget-- > 0) {
+        double s0 = stack[top - 1].s0, s1 = stack[top - 1].s1;
+        int depth = stack[--top].depth;
+        double sm = 0.5 * (s0 + s1), pts[BSI_SEG_MAX], speed[2];
+        double d = distance_at(x, seg, p, sm);
+        if (d <= x->tol)
+            return 1;
+        bsi_seg_piece(seg, p, s0, s1, pts);
+        curve_speed(pts, p, speed);
+        double reach = 0.5 * (x->lip[0] * speed[0] + x->lip[1] * speed[1]);
+        if (!(d - reach <= x->tol) || reach <= 1e-3 * x->tol || depth >= NEAR_DEPTH)
+            continue;
+        stack[top].s0 = sm, stack[top].s1 = s1, stack[top++].depth = depth + 1;
+        stack[top].s0 = s0, stack[top].s1 = sm, stack[top++].depth = depth + 1;
+    }
+    return 0;
+}
+
+/* Within tol of P somewhere on the trim: runs of segments are dropped together when the box of
+ * their control points (in the face's box) is farther than tol from P in 3-D: at least
+ * |P - S(centre)| - Lu du - Lv dv, (du, dv) the box's half-widths. */
+static int trim_near(const near_ctx *x, const bsi_curve *c)
+{
+    size_t stack[2 * (sizeof(size_t) * 8 + 1)][2], top = 0;
+    stack[top][0] = 0, stack[top++][1] = c->axis.n;
+    while (top > 0) {
+        size_t k0 = stack[--top][0], k1 = stack[top][1];
+        if (k1 - k0 == 1) {
+            if (seg_near(x, bsi_trim_segment(c, k0), c->degree))
+                return 1;
+            continue;
+        }
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (size_t i = k0 * (c->degree + 1); i < k1 * (c->degree + 1); i++)
+            for (size_t d = 0; d < 2; d++) {
+                double y = c->hom[i * 3 + d] / c->hom[i * 3 + 2];
+                lo[d] = bsi_dmin(lo[d], y), hi[d] = bsi_dmax(hi[d], y);
+            }
+        for (size_t d = 0; d < 2; d++) {
+            lo[d] = bsi_dmin(bsi_dmax(lo[d], x->box[2 * d]), x->box[2 * d + 1]);
+            hi[d] = bsi_dmin(bsi_dmax(hi[d], x->box[2 * d]), x->box[2 * d + 1]);
+        }
+        double q[3];
+        if (surface_point(x->m, x->f, 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), q) &&
+            dist3(x->p, q) - 0.5 * (x->lip[0] * (hi[0] - lo[0]) + x->lip[1] * (hi[1] - lo[1])) > x->tol)
+            continue;
+        size_t mid = k0 + (k1 - k0) / 2;
+        stack[top][0] = mid, stack[top++][1] = k1;
+        stack[top][0] = k0, stack[top++][1] = mid;
+    }
+    return 0;
+}
+
+int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, double tol)
+{
+    const bsi_face *face = &m->faces[f];
+    near_ctx x;
+    x.m = m, x.f = f, x.box = face->box, x.tol = tol;
+    if (!surface_point(m, f, u, v, x.p))
+        return 0;
+    face_speed(m, face, x.lip);
+    for (size_t l = face->first_loop; l < face->first_loop + face->loop_count; l++) {
+        const bsi_loop *loop = &m->loops[l];
+        for (size_t t = loop->first_trim; t < loop->first_trim + loop->trim_count; t++) {
+            const bsi_curve *c = &m->trims[t].uv;
+            if (c->axis.n == 0 || is_seam(m, f, t))
+                continue;
+            if (trim_near(&x, c))
+                return 1;
+        }
+    }
+    return 0;
+}
