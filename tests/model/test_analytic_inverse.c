@@ -444,6 +444,29 @@ static void test_refusals(void)
     bad[7].f.z[0] = -bad[7].f.z[0], bad[7].f.z[1] = -bad[7].f.z[1], bad[7].f.z[2] = -bad[7].f.z[2]; /* left-handed */
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++)
         CHECKF(bsi_surface_def_patches(&bad[k], box, s, &au, &av) == BS_ERR_DOMAIN, "bad def %zu", k);
+    bsi_surface_def nans[4] = {make(BS_FACE_CONE, f, NAN, 0.2), make(BS_FACE_CONE, f, 1.0, NAN),
+                               make(BS_FACE_TORUS, f, NAN, 0.5), make(BS_FACE_TORUS, f, 2.0, NAN)};
+    for (size_t k = 0; k < 4; k++)
+        CHECKF(bsi_surface_def_patches(&nans[k], box, s, &au, &av) == BS_ERR_DOMAIN, "NaN radius %zu", k);
+    for (int c = 0; c < 4; c++) {
+        double b[4] = {0, 1, 0, 1};
+        b[c] = c % 2 ? INFINITY : NAN;
+        CHECKF(bsi_surface_def_patches(&ok, b, s, &au, &av) == BS_ERR_DOMAIN, "box end %d", c);
+    }
+    /* sweeps without a 3-D curve, or about an axis through a point at infinity */
+    const double lp[3] = {1, 0, 0}, ld[3] = {0, 0, 1};
+    bsi_curve flat_line, line;
+    CHECK_STATUS(bsi_curve_line(2, lp, ld, 0.0, 1.0, &flat_line), BS_OK);
+    CHECK_STATUS(bsi_curve_line(3, lp, ld, 0.0, 1.0, &line), BS_OK);
+    bsi_surface_def sw = make(BS_FACE_REVOLUTION, f, 0, 0);
+    CHECK_STATUS(bsi_surface_def_patches(&sw, box, s, &au, &av), BS_ERR_INVALID_ARG);
+    sw.curve = &flat_line;
+    CHECK_STATUS(bsi_surface_def_patches(&sw, box, s, &au, &av), BS_ERR_INVALID_ARG);
+    sw.curve = &line;
+    sw.f.o[2] = NAN;
+    CHECK_STATUS(bsi_surface_def_patches(&sw, box, s, &au, &av), BS_ERR_DOMAIN);
+    bsi_curve_free(&flat_line);
+    bsi_curve_free(&line);
     bsi_surface_def far = make(BS_FACE_PLANE, f, 0, 0);
     far.f.o[1] = INFINITY;
     CHECK_STATUS(bsi_surface_def_patches(&far, box, s, &au, &av), BS_ERR_DOMAIN);
@@ -457,6 +480,13 @@ static void test_refusals(void)
     CHECK(bsi_surface_def_patches(&bs, box, s, &au, &av) != BS_OK);
     bs.bspline = NULL;
     CHECK(bsi_surface_def_patches(&bs, box, s, &au, &av) != BS_OK);
+    bs_bspline square = {1, 1, 2, 2, 3, k4, k4, ctrl, NULL};
+    const double beside[4] = {0.2, 0.8, 1.5, 2.0};
+    bs.bspline = &square;
+    CHECK_STATUS(bsi_surface_def_patches(&bs, beside, s, &au, &av), BS_ERR_DOMAIN);
+    double at[3];
+    bsi_surface_def_eval(&bs, 0.25, 0.5, at); /* (1 - u) (1 - v) P00 + ... of the bilinear net */
+    CHECK(fabs(at[0] - 0.125) < 1e-15 && fabs(at[1] - 0.125) < 1e-15 && fabs(at[2] - 0.75) < 1e-15);
     CHECK(bs_surface_count(s) == before && au.n == 0 && av.n == 0);
     /* periods */
     double pu, pv;
@@ -469,6 +499,58 @@ static void test_refusals(void)
         CHECK(pu == (closed_u ? 2 * PI : 0.0) && pv == (kinds[k] == BS_FACE_TORUS ? 2 * PI : 0.0));
     }
     bs_surface_destroy(s);
+}
+
+/* bsi_surface_def_eval of the analytic kinds against the long double closed form; a sweep's point
+ * outside its curve's range is NaN; control points overflowing to infinity: BS_ERR_NONFINITE. */
+static void test_eval_and_overflow(void)
+{
+    const bsi_frame f = frame(0.7, -0.4, 1.9, 1.5, -2, 0.25);
+    const int kinds[5] = {BS_FACE_PLANE, BS_FACE_CYLINDER, BS_FACE_CONE, BS_FACE_SPHERE, BS_FACE_TORUS};
+    double worst = 0.0;
+    for (int k = 0; k < 5; k++) {
+        bsi_surface_def d = make(kinds[k], f, 2.0, kinds[k] == BS_FACE_CONE ? 0.3 : 0.75);
+        for (int i = 0; i < 20; i++) {
+            double u = -4.0 + 0.47 * i, v = 1.3 - 0.13 * i, p[3];
+            long double q[3];
+            bsi_surface_def_eval(&d, u, v, p);
+            exact(&d, u, v, q);
+            for (int c = 0; c < 3; c++)
+                worst = fmax(worst, (double)fabsl(p[c] - q[c]) / 8.0);
+        }
+    }
+    CHECKF(worst <= 1e-15, "closed forms: %.3g", worst);
+    const double line_p[3] = {3, 0, 0}, line_d[3] = {0, 0, 1};
+    bsi_curve line;
+    CHECK_STATUS(bsi_curve_line(3, line_p, line_d, 0.0, 1.0, &line), BS_OK);
+    bsi_surface_def rev = make(BS_FACE_REVOLUTION, f, 0, 0);
+    rev.curve = &line;
+    double p[3];
+    bsi_surface_def_eval(&rev, 0.5, 1.5, p);
+    CHECK(isnan(p[0]) && isnan(p[1]) && isnan(p[2]));
+
+    bs_surface *s = NULL;
+    bsi_axis au, av;
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
+    /* the middle arc point of a quarter turn is sqrt 2 times the radius: past DBL_MAX */
+    bsi_surface_def huge = make(BS_FACE_CYLINDER, frame(0, 0, 0, 0, 0, 0), 1.5e308, 0);
+    const double quarter[4] = {-PI / 4, PI / 4, 0, 1};
+    CHECK_STATUS(bsi_surface_def_patches(&huge, quarter, s, &au, &av), BS_ERR_NONFINITE);
+    const double far_p[3] = {1.5e308, 0, 0};
+    bsi_curve far_line;
+    CHECK_STATUS(bsi_curve_line(3, far_p, line_d, 0.0, 1.0, &far_line), BS_OK);
+    rev.curve = &far_line;
+    rev.f = frame(0, 0, 0, 0, 0, 0);
+    CHECK_STATUS(bsi_surface_def_patches(&rev, quarter, s, &au, &av), BS_ERR_NONFINITE);
+    bsi_surface_def ext = make(BS_FACE_EXTRUSION, f, 0, 0);
+    ext.curve = &far_line;
+    ext.dir[0] = 1e308;
+    const double sweep[4] = {0, 1, 0, 1};
+    CHECK_STATUS(bsi_surface_def_patches(&ext, sweep, s, &au, &av), BS_ERR_NONFINITE);
+    CHECK(bs_surface_count(s) == 0 && au.n == 0 && av.n == 0);
+    bs_surface_destroy(s);
+    bsi_curve_free(&line);
+    bsi_curve_free(&far_line);
 }
 
 #ifdef BS_WRAP_MALLOC
@@ -526,6 +608,7 @@ int main(void)
     test_boxes();
     test_rational_sweeps();
     test_refusals();
+    test_eval_and_overflow();
 #ifdef BS_WRAP_MALLOC
     test_no_memory();
 #endif
