@@ -3,7 +3,9 @@
  * values (knots), and its loops, outer first. The patches are built here rather than from a
  * bsi_surface_def so that control points are kept bit for bit where the file gives them (a B-spline
  * whose every knot has multiplicity degree + 1 is its patches exactly, as bs_model_write_obj
- * writes faces). Holes without a trim statement get the parameter box as their outer loop. */
+ * writes faces). A bezier surf's box is that of its parm values (its s0 s1 t0 t1 are not used, as
+ * in bs_surface_read_obj); a bspline surf's is s0 s1 t0 t1 within its knots' domain. Holes without
+ * a trim statement get the parameter box as their outer loop. */
 #include "io/obj_model.h"
 
 #include <bezsurf/bspline.h>
