@@ -2,7 +2,8 @@
  * cylinders, 128 B-spline surfaces, and the analytic 190 .. 198 (with their 116 points and 123
  * directions), transformations applied to their frames, curves and control points. The
  * parameters of the file's trim curves are mapped to the canonical ones of model/internal.h:
- * 190 .. 198 as written by OpenCASCADE measure angles in degrees and the cone's v along its slant;
+ * 190 .. 198 as written by OpenCASCADE measure angles in degrees and the cone's v along its slant,
+ * and a torus's trims take (minor angle, minus the major angle), as the bottle's fillets show;
  * 120 takes (generatrix parameter, angle), the canonical (v, u); 122 runs over [0,1]^2. */
 #include "io/iges_model.h"
 
@@ -134,6 +135,11 @@ static bs_status analytic(igm *m, size_t s, iges_stream *st, igm_surface *sf)
     double a = type == 190 ? 1.0 : DEG; /* OpenCASCADE writes angles in degrees */
     double b = type == 190 ? 1.0 : type == 194 ? cos(d->r2) : type == 192 ? 1.0 : DEG;
     double aff[6] = {a, 0, 0, 0, b, 0};
+    if (type == 198) { /* (minor angle, major angle measured backwards), as OpenCASCADE writes tori */
+        double turned[6] = {DEG, 0, 0, 0, -DEG, 2 * 3.141592653589793};
+        memcpy(aff, turned, sizeof aff);
+        sf->swap = 1;
+    }
     memcpy(sf->aff, aff, sizeof aff);
     sf->plane = type == 190;
     sf->param = form == 1;
@@ -269,7 +275,7 @@ static bs_status build(igm *m, size_t s, igm_surface *sf, int depth)
             f->z[i] = -f->z[i];
         cross3(f->z, f->x, f->y);
     } else if (flip && sf->def.kind != BS_FACE_EXTRUSION) {
-        size_t row = sf->def.kind == BS_FACE_PLANE ? 3 : 0;
+        size_t row = sf->def.kind == BS_FACE_PLANE || sf->swap ? 3 : 0;
         for (size_t i = row; i < row + 3; i++)
             sf->aff[i] = -sf->aff[i];
     }

@@ -212,7 +212,8 @@ bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed
     bsi_face_spec spec;
     memset(&spec, 0, sizeof spec);
     spec.def = &sf->def;
-    spec.reversed = reversed;
+    /* the file's flags are against its own parameters' normal: a mirrored map turns it round */
+    spec.reversed = reversed != (sf->aff[0] * sf->aff[4] - sf->aff[1] * sf->aff[3] < 0.0);
     spec.swap = sf->swap;
     spec.shell = shell;
     spec.trims = a->trims.data;
