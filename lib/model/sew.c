@@ -7,9 +7,11 @@
  * crossed), the points of the first at a quarter, half and three quarters of its range lie within
  * tol of the second's image, and the second's middle point within tol of the first's image. Each
  * trim is joined at most once, first come first served in the order of the keys below; a trim
- * whose image is one point (a pole, a collapsed side) gets no edge. Not joined: trims split
- * differently on the two sides (one trim along two of the neighbour's: their ends differ), and a
- * third trim along an edge already joined (non-manifold); their faces' shells are then open.
+ * whose image is one point (a pole, a collapsed side) gets no edge. Closed trims (a hole's whole
+ * loop in one trim) left over are matched again by their images alone, as the two sides may start
+ * the loop at different points. Not joined: trims split differently on the two sides (one trim
+ * along two of the neighbour's: their ends differ), and a third trim along an edge already joined
+ * (non-manifold); their faces' shells are then open.
  *
  * Cost: each trim gets a key that does not depend on its direction (the sum of the coordinates of
  * both end points), trims are sorted by key, and only trims whose keys differ by at most 6 tol
@@ -33,6 +35,7 @@ typedef struct sew_trim {
     uint32_t face;
     int skip;         /* has an edge, is degenerate, or cannot be evaluated */
     double a[3], b[3]; /* 3-D start and end */
+    double lo[3], hi[3]; /* closed trims: the box of samples of the image */
 } sew_trim;
 
 static double dist3(const double *a, const double *b)
@@ -54,7 +57,17 @@ static int trim_point(const bs_model *m, size_t f, const bsi_curve *c, double x,
         for (size_t i = 0; i + r <= n; i++)
             for (int j = 0; j < 3; j++)
                 h[i][j] = (1.0 - s) * h[i][j] + s * h[i + 1][j];
-    return bsi_face_point(m, f, h[0][0] / h[0][2], h[0][1] / h[0][2], p);
+    double uv[2] = {h[0][0] / h[0][2], h[0][1] / h[0][2]};
+    /* ends a rounding outside the box (u = -2e-16 of [0, 1]) are on its side */
+    const bsi_face *face = &m->faces[f];
+    for (size_t d = 0; d < 2; d++) {
+        double lo = face->box[2 * d], hi = face->box[2 * d + 1], eps = 1e-9 * (hi - lo);
+        if (!(face->period[d] > 0.0) && uv[d] < lo && uv[d] >= lo - eps)
+            uv[d] = lo;
+        if (!(face->period[d] > 0.0) && uv[d] > hi && uv[d] <= hi + eps)
+            uv[d] = hi;
+    }
+    return bsi_face_point(m, f, uv[0], uv[1], p);
 }
 
 /* Whether q is within tol of the image of trim t: at fraction guess (the two images alike
@@ -127,6 +140,73 @@ static int same_image(const bs_model *m, const sew_trim *st, size_t i, size_t j,
     return trim_point(m, b->face, &m->trims[j].uv, 0.5, p) && near_image(m, a, &m->trims[i], p, 0.5, tol);
 }
 
+static int by_key(const void *x, const void *y)
+{
+    const sew_key *a = x, *b = y;
+    if (a->key != b->key)
+        return a->key < b->key ? -1 : 1;
+    return a->trim < b->trim ? -1 : a->trim > b->trim;
+}
+
+/* A closed trim's box of COARSE samples (1), or 0 when a sample is off its face. */
+static int sample_box(const bs_model *m, size_t t, sew_trim *st)
+{
+    double p[3];
+    for (int i = 0; i < COARSE; i++) {
+        if (!trim_point(m, st->face, &m->trims[t].uv, (double)i / COARSE, p))
+            return 0; /* LCOV_EXCL_LINE: the ends were evaluated; a middle off the face */
+        for (int c = 0; c < 3; c++) {
+            st->lo[c] = i ? fmin(st->lo[c], p[c]) : p[c];
+            st->hi[c] = i ? fmax(st->hi[c], p[c]) : p[c];
+        }
+    }
+    return 1;
+}
+
+/* Whether closed trims i and j are one loop, started at different points: the boxes of their
+ * samples overlap, each start lies on the other's image, the quarter points of i and the middle
+ * of j on the other's image. */
+static int same_loop(const bs_model *m, const sew_trim *st, size_t i, size_t j, double tol)
+{
+    const sew_trim *a = &st[i], *b = &st[j];
+    for (int c = 0; c < 3; c++)
+        if (a->lo[c] > b->hi[c] + tol || b->lo[c] > a->hi[c] + tol)
+            return 0;
+    static const double at[3] = {0.25, 0.5, 0.75};
+    double p[3];
+    if (!near_image(m, b, &m->trims[j], a->a, 0.0, tol) || !near_image(m, a, &m->trims[i], b->a, 0.0, tol))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        if (!trim_point(m, a->face, &m->trims[i].uv, at[k], p) || !near_image(m, b, &m->trims[j], p, at[k], tol))
+            return 0;
+    return trim_point(m, b->face, &m->trims[j].uv, 0.5, p) && near_image(m, a, &m->trims[i], p, 0.5, tol);
+}
+
+/* Closed trims left unpaired (a hole's loop and the neighbour's, started at different points):
+ * sorted by the low x of their sample boxes, compared while the boxes can overlap. */
+static size_t pair_loops(const bs_model *m, sew_trim *st, sew_key *keys, size_t *pair, double tol)
+{
+    size_t T = m->ntrim, nk = 0, npair = 0;
+    for (size_t t = 0; t < T; t++)
+        if (!st[t].skip && pair[t] == T && dist3(st[t].a, st[t].b) <= tol && sample_box(m, t, &st[t])) {
+            keys[nk].key = st[t].lo[0];
+            keys[nk++].trim = t;
+        }
+    qsort(keys, nk, sizeof *keys, by_key);
+    for (size_t i = 0; i < nk; i++) {
+        size_t a = keys[i].trim;
+        for (size_t j = i + 1; pair[a] == T && j < nk && keys[j].key <= st[a].hi[0] + tol; j++) {
+            size_t b = keys[j].trim;
+            if (pair[b] == T && same_loop(m, st, a, b, tol)) {
+                pair[a] = b;
+                pair[b] = a;
+                npair++;
+            }
+        }
+    }
+    return npair;
+}
+
 /* The trim's face, ends, and whether it is left out (an edge already, degenerate, unevaluable). */
 static void describe(const bs_model *m, size_t f, size_t t, double tol, sew_trim *out)
 {
@@ -143,13 +223,6 @@ static void describe(const bs_model *m, size_t f, size_t t, double tol, sew_trim
     out->skip = point;
 }
 
-static int by_key(const void *x, const void *y)
-{
-    const sew_key *a = x, *b = y;
-    if (a->key != b->key)
-        return a->key < b->key ? -1 : 1;
-    return a->trim < b->trim ? -1 : a->trim > b->trim;
-}
 
 bs_status bsi_model_sew(bs_model *m, double tol)
 {
@@ -192,6 +265,7 @@ bs_status bsi_model_sew(bs_model *m, double tol)
             }
         }
     }
+    npair += pair_loops(m, st, keys, pair, tol);
     /* the edges first, then the trims: on failure the model is as before */
     size_t before = m->nedge;
     bs_status status = BS_OK;

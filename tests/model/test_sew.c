@@ -259,6 +259,55 @@ static void test_speed(void)
     bs_model_destroy(m);
 }
 
+/* A full circle of centre (0.5, 0.5), radius 0.25 in uv as one trim of four quarter arcs,
+ * starting at angle a0, counter-clockwise or not. */
+static bsi_trim circle_trim(double a0, int ccw)
+{
+    bsi_trim t;
+    memset(&t, 0, sizeof t);
+    CHECK(bsi_axis_make(BSI_AXIS_LINEAR, 1.0, 0.0, 4.0, (const double[]){1.0, 2.0, 3.0}, 3, &t.uv.axis) == BS_OK);
+    t.uv.dim = 2;
+    t.uv.degree = 2;
+    t.uv.hom = malloc(4 * 3 * 3 * sizeof(double));
+    double q = 1.5707963267948966 * (ccw ? 1.0 : -1.0), w = cos(0.25 * 3.141592653589793);
+    for (int k = 0; k < 4; k++)
+        for (int i = 0; i < 3; i++) {
+            double a = a0 + q * (k + 0.5 * i), r = i == 1 ? 0.25 / w : 0.25, wt = i == 1 ? w : 1.0;
+            double *h = t.uv.hom + (k * 3 + i) * 3;
+            h[0] = wt * (0.5 + r * cos(a));
+            h[1] = wt * (0.5 + r * sin(a));
+            h[2] = wt;
+        }
+    t.edge = BSI_NO_EDGE;
+    return t;
+}
+
+/* A plate with a round hole and the plug filling it, each side of the hole one closed trim
+ * starting at a different point: joined by their images. */
+static void test_hole(void)
+{
+    bs_model *m = NULL;
+    CHECK(bsi_model_create(&m) == BS_OK);
+    const double c11[3] = {2, 2, 0.5};
+    bs_patch *p = bilinear(V[0], V[1], V[2], c11);
+    bsi_trim plate[5] = {seg(0, 0, 1, 0), seg(1, 0, 1, 1), seg(1, 1, 0, 1), seg(0, 1, 0, 0), circle_trim(0.0, 0)};
+    bsi_face_spec spec;
+    memset(&spec, 0, sizeof spec);
+    spec.patch = p;
+    spec.trims = plate;
+    spec.ntrim = 5;
+    size_t lens[2] = {4, 1};
+    spec.loop_len = lens;
+    spec.nloop = 2;
+    CHECK(bsi_model_add_face(m, &spec, NULL) == BS_OK);
+    bsi_trim plug[1] = {circle_trim(2.0, 1)};
+    add_face(m, p, plug, 1, 0);
+    bs_patch_destroy(p);
+    CHECK(bsi_model_sew(m, 1e-7) == BS_OK);
+    CHECKF(m->nedge == 1 && m->trims[4].edge == 0 && m->trims[5].edge == 0, "hole: %zu edges", m->nedge);
+    bs_model_destroy(m);
+}
+
 /* An N x N grid of wavy bilinear faces, alternate faces' trims run backwards. */
 static bs_model *grid(size_t N)
 {
@@ -340,6 +389,7 @@ int main(void)
     test_seam();
     test_bulge();
     test_speed();
+    test_hole();
     test_grid();
     test_small();
     test_no_memory();
