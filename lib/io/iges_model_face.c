@@ -190,8 +190,19 @@ static bs_status face_box(igm *m, size_t s, igm_surface *sf, const igm_acc *a, d
         for (size_t d = 0; d < 2; d++) {
             if (d == 1 && sf->def.kind != BS_FACE_BSPLINE)
                 continue; /* angles and sweeps are not bounded */
-            box[2 * d] = fmax(box[2 * d], sf->box[2 * d]);
-            box[2 * d + 1] = fmin(box[2 * d + 1], sf->box[2 * d + 1]);
+            double lo = sf->box[2 * d], hi = sf->box[2 * d + 1], eps = 1e-9 * (hi - lo);
+            box[2 * d] = fmax(box[2 * d], lo);
+            box[2 * d + 1] = fmin(box[2 * d + 1], hi);
+            for (size_t k = 0; k < a->trims.n; k++) { /* points past the ends by rounding: onto them */
+                const bsi_curve *c = &t[k].uv;
+                for (size_t i = 0; i < c->axis.n * (c->degree + 1); i++) {
+                    double *h = c->hom + 3 * i, x = h[d] / h[2];
+                    if (x < lo && x >= lo - eps)
+                        h[d] = lo * h[2];
+                    if (x > hi && x <= hi + eps)
+                        h[d] = hi * h[2];
+                }
+            }
         }
     if (!(box[0] < box[1] && box[2] < box[3]))
         return bsi_igm_fail(m, s, 1, "trims outside the parameter range of its surface");
