@@ -256,6 +256,31 @@ static void draw_wire(raster *r, const double *pos, const uint32_t *tri, size_t 
                         0.6, ink);
 }
 
+/* Face the mesh outwards where it encloses a negative signed volume (the teapot's patches face
+ * into the pot): the triangles reversed and the normals negated, as BS_TESS_REVERSE would (the
+ * curvatures keep the sign of the patches' normals, as bs_patch_eval_curvature gives them).
+ * Returns 1 when it did. */
+static int face_outwards(const double *pos, double *nrm, size_t nv, uint32_t *tri, size_t nt)
+{
+    double vol = 0.0;
+    for (size_t t = 0; t < nt; t++) {
+        const double *p = pos + 3 * (size_t)tri[3 * t], *q = pos + 3 * (size_t)tri[3 * t + 1],
+                     *w = pos + 3 * (size_t)tri[3 * t + 2];
+        vol += p[0] * (q[1] * w[2] - q[2] * w[1]) - p[1] * (q[0] * w[2] - q[2] * w[0]) +
+               p[2] * (q[0] * w[1] - q[1] * w[0]);
+    }
+    if (!(vol < 0.0))
+        return 0;
+    for (size_t t = 0; t < nt; t++) {
+        uint32_t b = tri[3 * t + 1];
+        tri[3 * t + 1] = tri[3 * t + 2];
+        tri[3 * t + 2] = b;
+    }
+    for (size_t k = 0; k < 3 * nv; k++)
+        nrm[k] = -nrm[k];
+    return 1;
+}
+
 /* The tessellated surface into r (framed already), coloured by o->color or by curvature (then *cr
  * holds the range); *ntri receives the triangle count. CLI_OK or the exit code after a message. */
 static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_t *ntri, curvature_range *cr)
@@ -279,7 +304,8 @@ static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_
     if (!(pos && nrm && tri && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
           bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK))
         cli_fail("render", CLI_INTERNAL, "out of memory");
-    else if (!o->curvature || (vcol = curvature_vertex_colors(o, s, m, pos, tri, cr, &rc)) != NULL)
+    else if (face_outwards(pos, nrm, nv, tri, nt) >= 0 &&
+             (!o->curvature || (vcol = curvature_vertex_colors(o, s, m, pos, tri, cr, &rc)) != NULL))
         rc = CLI_OK;
     if (rc == CLI_OK) {
         raster_mesh(r, pos, nrm, vcol, tri, nt, o->color);

@@ -20,6 +20,8 @@ static const char usage[] =
     "                        (a quadtree of sub-patches in each patch, fewer triangles)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
     "  -s, --strips          also build triangle strips (reported, not written)\n"
+    "      --reverse         reverse the triangles' winding and the normals (the built-in\n"
+    "                        teapot's patches face into the pot: --reverse faces it outwards)\n"
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
     "                        (default 10000000, about 0.5 GB of memory; 0: no limit)\n"
     "  -h, --help            this text\n"
@@ -66,6 +68,10 @@ int cmd_tessellate(int argc, char **argv)
         const char *a = argv[i];
         if (strcmp(a, "-s") == 0 || strcmp(a, "--strips") == 0) {
             flags |= BS_TESS_STRIPS;
+            continue;
+        }
+        if (strcmp(a, "--reverse") == 0) {
+            flags |= BS_TESS_REVERSE;
             continue;
         }
         if (i + 1 >= argc)

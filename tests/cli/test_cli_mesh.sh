@@ -26,6 +26,22 @@ expect 0 "tessellate obj" -- "$tool" tessellate -u 8 -o "$work/t.obj" "$data/tea
 check "grep -q '2082 vertices, 4032 triangles' '$work/out'" "uniform 8 counts"
 check "[ \$(grep -c '^v ' '$work/t.obj') -eq 2082 ] && [ \$(grep -c '^f ' '$work/t.obj') -eq 4032 ]" "OBJ lines"
 check "[ \$(grep -c '^vn ' '$work/t.obj') -eq 2082 ] && [ \$(grep -c '^vt ' '$work/t.obj') -eq 2082 ]" "OBJ vn/vt"
+# --reverse: the teapot's patches face into the pot (negative signed volume); reversed, its mesh
+# faces outwards: each face's last two corners swapped, each normal negated, the volume positive.
+vol() {
+    awk '/^v /{n++; x[n]=$2; y[n]=$3; z[n]=$4}
+         /^f /{split($2,a,"/"); split($3,b,"/"); split($4,c,"/"); i=a[1]; j=b[1]; k=c[1]
+               s+=x[i]*(y[j]*z[k]-z[j]*y[k])-y[i]*(x[j]*z[k]-z[j]*x[k])+z[i]*(x[j]*y[k]-y[j]*x[k])}
+         END{printf "%.3f\n", s/6}' "$1"
+}
+expect 0 "tessellate reverse" -- "$tool" tessellate -u 8 --reverse -o "$work/r.obj" "$data/teapot.bpt"
+check "grep -q '2082 vertices, 4032 triangles' '$work/out'" "reversed counts"
+vt=$(vol "$work/t.obj") vr=$(vol "$work/r.obj")
+check "[ \"$vt\" = \"-$vr\" ] && [ \"${vr#-}\" = \"$vr\" ]" "signed volumes $vt plain, $vr reversed"
+awk '/^f /{print $1, $2, $4, $3}' "$work/t.obj" >"$work/faces.want"
+awk '/^vn /{print -$2, -$3, -$4}' "$work/t.obj" >"$work/vn.want"
+check "grep '^f ' '$work/r.obj' | cmp -s - '$work/faces.want'" "reversed faces"
+check "awk '/^vn /{print \$2+0, \$3+0, \$4+0}' '$work/r.obj' | cmp -s - '$work/vn.want'" "negated normals"
 expect 0 "tessellate stl" -- "$tool" tessellate -u 8 -o "$work/t.stl"
 check "[ \$(wc -c <'$work/t.stl') -eq \$((84 + 50 * 4032)) ]" "STL size"
 expect 0 "tessellate ply" -- "$tool" tessellate -u 4x6 -o "$work/t.ply" -b teacup

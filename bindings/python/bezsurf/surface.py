@@ -413,14 +413,17 @@ class Surface(Handle):
 
     # ---- tessellation --------------------------------------------------------------------------
     def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False,
-                   max_vertices: int = 0, max_triangles: int = 0, threads: int = 1) -> Mesh:
+                   max_vertices: int = 0, max_triangles: int = 0, threads: int = 1,
+                   reverse: bool = False) -> Mesh:
         """A crack-free triangle mesh with nu x nv segments per patch (nv defaults to nu);
         ``strips`` also builds triangle strips. ``max_vertices`` and ``max_triangles`` (0: no
         limit) are budgets: a larger mesh raises SizeError before anything large is allocated.
         ``threads`` threads sample the vertices (0: one per CPU; since 1.1); the mesh is the same
-        bit for bit whatever their number."""
+        bit for bit whatever their number. ``reverse`` (since 1.2, BS_TESS_REVERSE) reverses the
+        triangles' winding and negates the normals: the built-in teapot's patches face into the
+        pot, ``reverse=True`` makes its mesh face outwards."""
         args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, max_vertices,
-                               max_triangles, threads)
+                               max_triangles, threads, reverse)
         if not (max_vertices or max_triangles) and args[7] == 1:
             return Mesh._tessellate(self.clone(), "uniform", (args[2], args[3], args[1]))
         return Mesh._tessellate(self.clone(), "options", args)
@@ -428,30 +431,33 @@ class Surface(Handle):
     def tessellate_adaptive(self, tolerance: float, *, relative: bool = False,
                             strips: bool = False, subdivide: bool = False,
                             max_vertices: int = 0, max_triangles: int = 0,
-                            threads: int = 1) -> Mesh:
+                            threads: int = 1, reverse: bool = False) -> Mesh:
         """A crack-free mesh whose triangles lie within ``tolerance`` of the surface (a distance,
         or with ``relative`` a fraction of the control points' bounding-box diagonal). One
         segment count per patch, or with ``subdivide`` a quadtree of sub-patches refined only
-        where the surface curves (since 1.1). Budgets and threads as in :meth:`tessellate`."""
+        where the surface curves (since 1.1). Budgets, threads and ``reverse`` as in
+        :meth:`tessellate`."""
         method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
         args = self._tess_args(method, 16, 16, tolerance, relative, strips, max_vertices,
-                               max_triangles, threads)
+                               max_triangles, threads, reverse)
         if method == TessMethod.PER_PATCH and not (max_vertices or max_triangles) and args[7] == 1:
             return Mesh._tessellate(self.clone(), "adaptive", (args[4], args[1]))
         return Mesh._tessellate(self.clone(), "options", args)
 
     def tessellate_count(self, nu: Optional[int] = None, nv: Optional[int] = None, *,
                          tolerance: Optional[float] = None, relative: bool = False,
-                         strips: bool = False, subdivide: bool = False) -> Tuple[int, int]:
+                         strips: bool = False, subdivide: bool = False,
+                         reverse: bool = False) -> Tuple[int, int]:
         """(vertices, triangles) of the mesh :meth:`tessellate` (nu, nv) or
         :meth:`tessellate_adaptive` (tolerance) would make, computed without building it."""
         if (nu is None) == (tolerance is None):
             raise ValueError("give either nu (uniform) or tolerance (adaptive)")
         if nu is not None:
-            args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, 0, 0)
+            args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, 0, 0, 1,
+                                   reverse)
         else:
             method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
-            args = self._tess_args(method, 16, 16, tolerance, relative, strips, 0, 0)
+            args = self._tess_args(method, 16, 16, tolerance, relative, strips, 0, 0, 1, reverse)
         nverts = ctypes.c_size_t()
         ntris = ctypes.c_size_t()
         LIB.bs_surface_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
@@ -460,11 +466,12 @@ class Surface(Handle):
 
     @staticmethod
     def _tess_args(method: int, nu: Any, nv: Any, tolerance: Any, relative: bool, strips: bool,
-                   max_vertices: Any, max_triangles: Any, threads: Any = 1) -> Tuple[Any, ...]:
+                   max_vertices: Any, max_triangles: Any, threads: Any = 1,
+                   reverse: bool = False) -> Tuple[Any, ...]:
         """The checked fields of a bs_tess_options, in the order tess_options() takes them."""
         nu = A.integer(nu, "nu")
         nv = nu if nv is None else A.integer(nv, "nv")
-        flags = (1 if relative else 0) | (2 if strips else 0)
+        flags = (1 if relative else 0) | (2 if strips else 0) | (4 if reverse else 0)
         return (int(method), flags, nu, nv, A.real(tolerance, "tolerance"),
                 A.integer(max_vertices, "max_vertices"), A.integer(max_triangles, "max_triangles"),
                 A.integer(threads, "threads"))

@@ -24,6 +24,10 @@ impl TessFlags {
     pub const RELATIVE: TessFlags = TessFlags(sys::BS_TESS_RELATIVE);
     /// Also build triangle strips (`BS_TESS_STRIPS`).
     pub const STRIPS: TessFlags = TessFlags(sys::BS_TESS_STRIPS);
+    /// Face the mesh the other way: every triangle's winding reversed and every normal negated
+    /// (`BS_TESS_REVERSE`, since 1.2). The built-in teapot's patches face into the pot; with
+    /// this flag its mesh faces outwards.
+    pub const REVERSE: TessFlags = TessFlags(sys::BS_TESS_REVERSE);
 
     /// The C flag bits.
     pub fn bits(self) -> i32 {
@@ -112,7 +116,7 @@ impl TessOptions {
         self
     }
 
-    /// [`TessFlags::RELATIVE`] and/or [`TessFlags::STRIPS`].
+    /// [`TessFlags::RELATIVE`], [`TessFlags::STRIPS`] and/or [`TessFlags::REVERSE`].
     pub fn flags(mut self, flags: TessFlags) -> TessOptions {
         self.flags = flags;
         self
