@@ -426,6 +426,7 @@ bs_status bs_surface_read_obj(const char *text, size_t len, bs_parse_error *err,
         *out = NULL;
     if (out == NULL || (text == NULL && len > 0))
         return BS_ERR_INVALID_ARG;
+    len = bsi_text_len(text, len);
     obj o;
     memset(&o, 0, sizeof o);
     o.text = text;
