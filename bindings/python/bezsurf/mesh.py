@@ -21,6 +21,21 @@ if TYPE_CHECKING:
 FORMATS = {f.name.lower(): f for f in Format}
 
 FormatArg = Union[Format, int, str]
+
+#: Formats of :meth:`Mesh.write` by file extension (lower case), as ``bezsurf tessellate``.
+EXTENSIONS = {".obj": Format.OBJ, ".ply": Format.PLY, ".stl": Format.STL}
+
+
+def format_of_path(path: A.PathArg) -> Format:
+    """The mesh format a file name's extension names (:data:`EXTENSIONS`); ValueError for
+    another one."""
+    ext = os.path.splitext(os.fsdecode(path))[1].lower()
+    try:
+        return EXTENSIONS[ext]
+    except KeyError:
+        known = ", ".join(EXTENSIONS)
+        raise ValueError(f"path {os.fsdecode(path)!r}: unknown mesh extension {ext or '(none)'!r}; "
+                         f"use one of {known} or pass format=") from None
 OutArray = Optional["npt.NDArray[Any]"]
 
 
@@ -167,12 +182,15 @@ class Mesh(Handle):
         flat, offsets = idx.result(), start.result()
         return [flat[offsets[k]:offsets[k + 1]] for k in range(nstart - 1)]
 
-    def write(self, path: A.PathArg, format: FormatArg = Format.OBJ) -> None:
+    def write(self, path: A.PathArg, format: Optional[FormatArg] = None) -> None:
         """Write the mesh to a file: Format.OBJ ("obj", Wavefront OBJ), Format.PLY ("ply",
         binary little-endian), Format.PLY_ASCII ("ply_ascii") or Format.STL ("stl", binary).
-        Raises BezsurfIOError (an OSError with ``errno`` and ``filename``) on failure."""
-        fmt = A.mesh_format(format)
+        Without ``format``, the format follows the file's extension as ``bezsurf tessellate``
+        does: .obj, .ply (binary) or .stl, in any case; another extension raises ValueError
+        (1.2: 1.1 wrote OBJ whatever the name). Raises BezsurfIOError (an OSError with
+        ``errno`` and ``filename``) on failure."""
         name = A.path(path)
+        fmt = format_of_path(name) if format is None else A.mesh_format(format)
         ctypes.set_errno(0)
         try:
             LIB.bs_mesh_write(self._ptr, fmt, name)

@@ -149,7 +149,7 @@ class ArgumentErrorTest(unittest.TestCase):
             ("patch", lambda: s.add(NET)), ("name", lambda: bezsurf.Surface.builtin(3)),
             ("text", lambda: bezsurf.Surface.from_bpt(3)), ("path", lambda: s.save(3)),
             ("path", lambda: bezsurf.Surface.load(None)), ("path", lambda: m.write(1.5)),
-            ("format", lambda: m.to_bytes(1.5)), ("format", lambda: m.write("x.obj", None)),
+            ("format", lambda: m.to_bytes(1.5)), ("format", lambda: m.write("x.obj", 1.5)),
             ("u", lambda: p.eval("abc", [0.5])), ("v", lambda: p.eval([0.5], [None])),
             ("u", lambda: p.eval_grid({"a": 1}, [0.5])), ("ids", lambda: s.eval("0", 0.5, 0.5)),
             ("ids", lambda: s.eval([0.5], [0.5], [0.5])), ("code", lambda: bezsurf.status_string("x")),

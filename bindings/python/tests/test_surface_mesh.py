@@ -167,6 +167,18 @@ class MeshTest(PlainTestCase):
             m.write(path, "stl")
             with open(path, "rb") as f:
                 self.assertEqual(f.read(), stl)
+            # without a format, the extension's (any case), as `bezsurf tessellate`
+            for name, fmt in (("a.ply", "ply"), ("b.PLY", "ply"), ("c.obj", "obj"), ("d.Stl", "stl")):
+                m.write(os.path.join(d, name))
+                with open(os.path.join(d, name), "rb") as f:
+                    self.assertEqual(f.read(), m.to_bytes(fmt), name)
+            for name in ("e.txt", "noext", "f.ply.gz"):
+                with self.assertRaisesRegex(ValueError, "unknown mesh extension"):
+                    m.write(os.path.join(d, name))
+                self.assertFalse(os.path.exists(os.path.join(d, name)))
+            m.write(os.path.join(d, "g.txt"), "ply_ascii")  # an explicit format wins
+            with open(os.path.join(d, "g.txt"), "rb") as f:
+                self.assertEqual(f.read(), m.to_bytes("ply_ascii"))
         with self.assertRaises(ValueError):
             m.to_bytes("dxf")
         with self.assertRaises(bezsurf.InvalidArgumentError):

@@ -191,6 +191,36 @@ impl From<MeshFormat> for i32 {
 }
 
 impl MeshFormat {
+    /// The format a file name's extension names, as `bezsurf tessellate` reads it: `.obj`,
+    /// `.ply` (binary) or `.stl`, in any case. Another extension, or none, is an `InvalidArg`
+    /// error naming the path.
+    ///
+    /// ```
+    /// use bezsurf::MeshFormat;
+    ///
+    /// assert_eq!(MeshFormat::from_path("pot.PLY")?, MeshFormat::Ply);
+    /// assert!(MeshFormat::from_path("pot.txt").is_err());
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn from_path(path: impl AsRef<Path>) -> Result<MeshFormat> {
+        let path = path.as_ref();
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("obj") => Ok(MeshFormat::Obj),
+            Some("ply") => Ok(MeshFormat::Ply),
+            Some("stl") => Ok(MeshFormat::Stl),
+            _ => Err(Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "path",
+                format!(
+                    "{}: unknown mesh extension {}; use .obj, .ply or .stl, or Mesh::write with a MeshFormat",
+                    path.display(),
+                    ext.map_or_else(|| "(none)".to_string(), |e| format!(".{e}"))
+                ),
+            )),
+        }
+    }
+
     fn raw(self) -> i32 {
         match self {
             MeshFormat::Obj => sys::BS_MESH_OBJ,
@@ -482,6 +512,13 @@ impl Mesh {
         let path = c_path(path.as_ref())?;
         // SAFETY: path is NUL-terminated.
         check(unsafe { sys::bs_mesh_write(self.as_ptr(), format.raw(), path.as_ptr()) })
+    }
+
+    /// Writes the mesh to a file in the format its extension names ([`MeshFormat::from_path`]:
+    /// `.obj`, `.ply`, `.stl`); an unknown extension is `InvalidArg` and nothing is written.
+    pub fn save(&self, path: impl AsRef<Path>) -> Result<()> {
+        let format = MeshFormat::from_path(path.as_ref())?;
+        self.write(format, path)
     }
 
     /// The bytes [`write`](Mesh::write) would put in a file (`bs_mesh_write_memory`).

@@ -139,6 +139,20 @@ fn export_formats() {
     let _ = std::fs::remove_file(&path);
     let bad = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("no-such-dir/x.obj");
     assert_eq!(mesh.write(MeshFormat::Obj, &bad).unwrap_err().kind(), ErrorKind::Io);
+    // save: the format from the extension, any case, as `bezsurf tessellate`; others refused
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    for (name, format) in [("s.ply", MeshFormat::Ply), ("s.OBJ", MeshFormat::Obj), ("s.Stl", MeshFormat::Stl)]
+    {
+        mesh.save(dir.join(name)).unwrap();
+        assert_eq!(std::fs::read(dir.join(name)).unwrap(), mesh.to_bytes(format).unwrap(), "{name}");
+        let _ = std::fs::remove_file(dir.join(name));
+    }
+    for name in ["s.txt", "noext"] {
+        let err = mesh.save(dir.join(name)).unwrap_err();
+        assert_eq!((err.kind(), err.argument()), (ErrorKind::InvalidArg, Some("path")));
+        assert!(err.to_string().contains("unknown mesh extension"), "{err}");
+        assert!(!dir.join(name).exists());
+    }
 }
 
 #[test]
