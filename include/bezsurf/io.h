@@ -111,7 +111,9 @@ BS_API bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path
  * gives one patch per segment; a B-spline surface one patch per knot span (through
  * bs_surface_add_bspline()) of its `surf` parameter range (spans the range cuts are cut). Polygons, groups, display and rendering statements, curves and
  * trimming statements are skipped (a trimmed surface is read whole). docs/formats.md gives the
- * exact subset. A text without surfaces gives an empty surface. One final NUL is ignored (since
+ * exact subset. A text without surfaces gives an empty surface, unless it has polygons or
+ * curves (f, l, p, curv, curv2): then, since 1.2, BS_ERR_UNSUPPORTED with err saying how many of
+ * each it holds and where the first is (1.1 gave an empty surface). One final NUL is ignored (since
  * 1.2: so the size bs_surface_write_obj() reports, which counts it, can be passed as len).
  * @param[in]  text  the bytes; may be NULL only when len is 0.
  * @param[in]  len   number of bytes.
@@ -123,7 +125,8 @@ BS_API bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path
  * @return BS_ERR_PARSE if the text is malformed (bad numbers or indices, counts that do not match
  *         the degree and the parameter values, a NUL byte before the last one, non-positive weights of a rational
  *         surface, ...).
- * @return BS_ERR_UNSUPPORTED for a surface of another curve type (bmatrix, cardinal, taylor).
+ * @return BS_ERR_UNSUPPORTED for a surface of another curve type (bmatrix, cardinal, taylor), or
+ *         polygons or curves without any surface (since 1.2).
  * @return BS_ERR_NO_MEMORY if allocation fails.
  * @since 1.1
  */
