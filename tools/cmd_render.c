@@ -19,7 +19,8 @@ static const char usage[] =
     "usage: bezsurf render [options] [FILE]\n"
     "Render a surface from a .bpt FILE ('-': standard input; default: the built-in teapot)\n"
     "to a PNG picture.\n"
-    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .png)\n"
+    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .png);\n"
+    "                        '-': standard output (the report goes to stderr)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
     "      --size WxH        picture size in pixels (default 800x600, each 16..8192)\n"
     "  -a, --azimuth DEG     camera azimuth around the up axis (default -60)\n"
@@ -365,15 +366,17 @@ static int render(const render_opts *o, const bs_surface *s)
         if (o->curvature)
             legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
         if (png_write_rgb(o->output, rgb, o->w, o->h) != 0)
-            rc = cli_fail_write("render", o->output);
+            rc = cli_fail_write("render", strcmp(o->output, "-") == 0 ? "standard output" : o->output);
     }
     if (rc == CLI_OK) {
+        FILE *report = strcmp(o->output, "-") == 0 ? stderr : stdout; /* not into the picture */
+        const char *name = report == stderr ? "<stdout>" : o->output;
         if (o->rays)
-            printf("%s: %zux%zu, %zu rays, %zu hits\n", o->output, o->w, o->h, r.W * r.H, hits);
+            fprintf(report, "%s: %zux%zu, %zu rays, %zu hits\n", name, o->w, o->h, r.W * r.H, hits);
         else
-            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+            fprintf(report, "%s: %zux%zu, %zu triangles\n", name, o->w, o->h, nt);
         if (o->curvature)
-            printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
+            fprintf(report, "%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
                    o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
         rc = cli_finish("render");
     }
@@ -435,7 +438,7 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
+    render_opts o = {{NULL, "teapot", 0, NULL, 0}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
                      {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
@@ -452,7 +455,7 @@ int cmd_render(int argc, char **argv)
     if (o.w * o.h * o.ss * o.ss > RENDER_MAX_SAMPLES) /* each at most 8192 and 4: no overflow */
         return cli_usage_error("render", "--size W x H times --ss N squared exceeds 67108864 samples (1 GiB)",
                                NULL);
-    rc = cli_check_output("render", o.output); /* before the work, not after it */
+    rc = strcmp(o.output, "-") == 0 ? CLI_OK : cli_check_output("render", o.output); /* before the work */
     if (rc != CLI_OK)
         return rc;
     bs_surface *s = NULL;
