@@ -68,6 +68,25 @@ def builtin_names() -> List[str]:
         names.append(name.decode("ascii"))
 
 
+#: Surface file formats by extension (lower case), as the ``bezsurf`` tool reads them.
+_SURFACE_EXTENSIONS = {".bpt": "bpt", ".obj": "obj", ".igs": "iges", ".iges": "iges"}
+
+
+def _surface_format(path: Any, format: Optional[str], default: str) -> str:
+    """The format named by ``format`` ("bpt", "obj", "iges", "igs"), else by the extension of
+    ``path``, else ``default``."""
+    if format is None:
+        try:
+            ext = os.path.splitext(os.fsdecode(path))[1].lower()
+        except TypeError:
+            raise TypeError(f"path must be a str, bytes or os.PathLike, not "
+                            f"{type(path).__name__}") from None
+        return _SURFACE_EXTENSIONS.get(ext, default)
+    if not isinstance(format, str) or format.lower() not in ("bpt", "obj", "iges", "igs"):
+        raise ValueError(f"format must be one of 'bpt', 'obj', 'iges', not {format!r}")
+    return "iges" if format.lower() == "igs" else format.lower()
+
+
 def _located(exc: BezsurfError, err: CParseError, filename: Optional[str] = None) -> BezsurfError:
     """The parse or I/O error with the library's position and reason, and the file, attached."""
     reason = err.message.decode("utf-8", "replace") or None
@@ -179,20 +198,34 @@ class Surface(Handle):
         return cls._read_text(LIB.bs_surface_read_bpt, text)
 
     @classmethod
-    def load(cls, path: A.PathArg) -> "Surface":
-        """Read a .bpt file. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``,
-        e.g. a FileNotFoundError) when it cannot be read and ParseError (with line, column and
+    def load(cls, path: A.PathArg, format: Optional[str] = None) -> "Surface":
+        """Read a surface file in the format its extension names, as the ``bezsurf`` tool does:
+        .obj (:meth:`load_obj`), .igs or .iges (:meth:`load_iges`), any other .bpt; ``format``
+        ("bpt", "obj", "iges" or "igs") overrides the extension (1.2: 1.1 read .bpt whatever
+        the name). Raises BezsurfIOError (an OSError with ``errno`` and ``filename``, e.g. a
+        FileNotFoundError) when it cannot be read and ParseError (with line, column and
         filename) when it is malformed."""
-        return cls._read_file(LIB.bs_surface_read_bpt_file, path)
+        fmt = _surface_format(path, format, "bpt")
+        reader = {"bpt": LIB.bs_surface_read_bpt_file, "obj": LIB.bs_surface_read_obj_file,
+                  "iges": LIB.bs_surface_read_iges_file}[fmt]
+        return cls._read_file(reader, path)
 
     def to_bpt(self) -> str:
         """The surface as .bpt text; numbers read back bit for bit (3-D patches only)."""
         return self._write_text(LIB.bs_surface_write_bpt)
 
-    def save(self, path: A.PathArg) -> None:
-        """Write the surface as a .bpt file (created or truncated). Raises BezsurfIOError (an
-        OSError with ``errno`` and ``filename``) when the file cannot be written."""
-        self._write_file(LIB.bs_surface_write_bpt_file, path)
+    def save(self, path: A.PathArg, format: Optional[str] = None) -> None:
+        """Write the surface file (created or truncated) in the format its extension names, as
+        the ``bezsurf`` tool does: .obj (:meth:`save_obj`), any other .bpt; ``format`` ("bpt"
+        or "obj") overrides it; IGES is read only (ValueError). 1.1 wrote .bpt whatever the
+        name. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``) when the file
+        cannot be written."""
+        fmt = _surface_format(path, format, "bpt")
+        if fmt == "iges":
+            raise ValueError(f"path {os.fsdecode(path)!r}: IGES is read, not written; "
+                             f"use format='bpt' or 'obj'")
+        self._write_file(LIB.bs_surface_write_obj_file if fmt == "obj"
+                         else LIB.bs_surface_write_bpt_file, path)
 
     @classmethod
     def read_obj(cls, text: Union[str, bytes]) -> "Surface":
