@@ -10,11 +10,12 @@ from . import _args as A
 from . import _buffers as B
 from ._buffers import Point, PointOrPoints, Points
 from ._enums import SIDES, Side, TessMethod
-from ._errors import BezsurfError, BezsurfIOError, ParseError, UnsupportedError, io_error
+from ._errors import (BezsurfError, BezsurfIOError, DomainError, InvalidArgumentError,
+                      ParseError, UnsupportedError, io_error, with_detail)
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
-from .mesh import Mesh, tess_options
+from .mesh import Mesh, explain_tessellation, tess_options
 from .query import Locator
 from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
 
@@ -141,7 +142,12 @@ class Surface(Handle):
         if not isinstance(name, str):
             raise TypeError(f"name must be a str, not {type(name).__name__}")
         out = ctypes.c_void_p()
-        LIB.bs_surface_create_builtin(name.encode("utf-8"), ctypes.byref(out))
+        try:
+            LIB.bs_surface_create_builtin(name.encode("utf-8"), ctypes.byref(out))
+        except InvalidArgumentError as exc:
+            names = ", ".join(builtin_names())
+            raise with_detail(exc, f"name {name!r} is not a built-in surface (names are "
+                                   f"case-sensitive: {names})") from None
         return cls._wrap(out.value)
 
     @classmethod
@@ -399,20 +405,34 @@ class Surface(Handle):
             nrm = call.output(3, normal_out, "normal_out")
             kinds = call.kinds(kind_out)
         call.check_disjoint()
-        if normals:  # first, so that a failure leaves every output untouched
-            assert nrm is not None and kinds is not None
-            LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
-                                       None if derivatives else pos.views, nrm.views,
-                                       kinds.address)
-        if derivatives or not normals:
-            LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
-                                   dus.views if dus else None, dvs.views if dvs else None,
-                                   threads)
+        try:
+            if normals:  # first, so that a failure leaves every output untouched
+                assert nrm is not None and kinds is not None
+                LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
+                                           None if derivatives else pos.views, nrm.views,
+                                           kinds.address)
+            if derivatives or not normals:
+                LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
+                                       dus.views if dus else None, dvs.views if dvs else None,
+                                       threads)
+        except InvalidArgumentError as exc:
+            raise self._bad_id(exc, id_addr, nid) from None
         del keep
         if not derivatives and not normals:
             return call.finish(pos.result())
         return Evaluation(*(call.finish(x.result() if x is not None else None)
                             for x in (pos, dus, dvs, nrm, kinds)))
+
+    def _bad_id(self, exc: InvalidArgumentError, id_addr: int, nid: int) -> BezsurfError:
+        """``exc`` naming the first id that is not a patch of this surface, if one is not."""
+        count = len(self)
+        ids: List[int] = list((ctypes.c_uint32 * nid).from_address(id_addr)) if nid else []
+        for k, i in enumerate(ids):
+            if i >= count:
+                limit = f"0..{count - 1}" if count else "none: the surface is empty"
+                return with_detail(exc, f"ids[{k}] = {i} is not a patch of this surface "
+                                        f"(patch ids {limit})")
+        return exc
 
     def eval_normal(self, ids: Ids, u: Params, v: Params, *, out: OutArray = None,
                     normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
@@ -493,8 +513,11 @@ class Surface(Handle):
             args = self._tess_args(method, 16, 16, tolerance, relative, strips, 0, 0, 1, reverse)
         nverts = ctypes.c_size_t()
         ntris = ctypes.c_size_t()
-        LIB.bs_surface_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
-                                        ctypes.byref(nverts), ctypes.byref(ntris))
+        try:
+            LIB.bs_surface_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
+                                            ctypes.byref(nverts), ctypes.byref(ntris))
+        except DomainError as exc:
+            raise explain_tessellation(exc, self, "options", args) from None
         return int(nverts.value), int(ntris.value)
 
     @staticmethod
