@@ -298,6 +298,7 @@ impl Surface {
     pub fn tessellate_uniform(&self, nu: usize, nv: usize, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_uniform(self.as_ptr(), nu, nv, flags.0, out) })
+            .map_err(|e| self.explain_tess(e, &TessOptions::new(TessMethod::Uniform { nu, nv }).flags(flags)))
     }
 
     /// Tessellates a 3-D surface so that every triangle lies within `tolerance` of the surface
@@ -319,6 +320,51 @@ impl Surface {
     pub fn tessellate_adaptive(&self, tolerance: f64, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_adaptive(self.as_ptr(), tolerance, flags.0, out) })
+            .map_err(|e| {
+                self.explain_tess(
+                    e,
+                    &TessOptions::new(TessMethod::PerPatch).tolerance(tolerance).flags(flags),
+                )
+            })
+    }
+
+    /// A tessellator's error naming the argument, its value and the limit it broke.
+    fn explain_tess(&self, e: Error, o: &TessOptions) -> Error {
+        match (e.kind(), o.method) {
+            (ErrorKind::Domain, TessMethod::Uniform { nu, nv }) => {
+                match [("nu", nu), ("nv", nv)].into_iter().find(|&(_, r)| r == 0 || r > TESS_MAX_RATE) {
+                    Some((name, rate)) => e.with_argument(
+                        name,
+                        format!(
+                            "is {rate} segments per patch, outside 1..={TESS_MAX_RATE} (BS_TESS_MAX_RATE)"
+                        ),
+                    ),
+                    None => e,
+                }
+            }
+            (ErrorKind::Domain, _) => {
+                e.with_argument("tolerance", format!("is {}; it must be finite and > 0", o.tolerance))
+            }
+            (ErrorKind::Size, _) => {
+                let unlimited = TessOptions { max_vertices: 0, max_triangles: 0, ..*o };
+                let Ok((nv, nt)) = self.tessellate_count(&unlimited) else { return e };
+                let (name, over) = if o.max_vertices != 0 && nv > o.max_vertices {
+                    ("max_vertices", format!("the budget of {} vertices", o.max_vertices))
+                } else if o.max_triangles != 0 && nt > o.max_triangles {
+                    ("max_triangles", format!("the budget of {} triangles", o.max_triangles))
+                } else {
+                    (
+                        "options",
+                        "the 32-bit index limit (4294967294 vertices, 1431655765 triangles)".to_string(),
+                    )
+                };
+                e.with_argument(
+                    name,
+                    format!("is exceeded: the mesh would have {nv} vertices and {nt} triangles, over {over}"),
+                )
+            }
+            _ => e,
+        }
     }
 }
 
@@ -329,6 +375,7 @@ impl Surface {
         let o = options.raw();
         // SAFETY: self is live; o is a filled options struct; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate(self.as_ptr(), &o, out) })
+            .map_err(|e| self.explain_tess(e, options))
     }
 
     /// The (vertices, triangles) [`Surface::tessellate`] would give with `options`, computed
@@ -337,7 +384,8 @@ impl Surface {
         let o = options.raw();
         let (mut nv, mut nt) = (0usize, 0usize);
         // SAFETY: self is live; o is a filled options struct; both outputs are valid.
-        check(unsafe { sys::bs_surface_tessellate_count(self.as_ptr(), &o, &mut nv, &mut nt) })?;
+        check(unsafe { sys::bs_surface_tessellate_count(self.as_ptr(), &o, &mut nv, &mut nt) })
+            .map_err(|e| if e.kind() == ErrorKind::Domain { self.explain_tess(e, options) } else { e })?;
         Ok((nv, nt))
     }
 }
@@ -509,9 +557,11 @@ impl Mesh {
 
     /// Writes the mesh to a file (`bs_mesh_write`); `Io` on failure.
     pub fn write(&self, format: MeshFormat, path: impl AsRef<Path>) -> Result<()> {
-        let path = c_path(path.as_ref())?;
-        // SAFETY: path is NUL-terminated.
-        check(unsafe { sys::bs_mesh_write(self.as_ptr(), format.raw(), path.as_ptr()) })
+        let path = path.as_ref();
+        let cpath = c_path(path)?;
+        // SAFETY: cpath is NUL-terminated.
+        check(unsafe { sys::bs_mesh_write(self.as_ptr(), format.raw(), cpath.as_ptr()) })
+            .map_err(|e| e.with_path(path))
     }
 
     /// Writes the mesh to a file in the format its extension names ([`MeshFormat::from_path`]:
