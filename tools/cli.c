@@ -46,9 +46,14 @@ static int take_builtin(const char *cmd, int argc, char **argv, int *i, cli_inpu
     return 1;
 }
 
-int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in)
+/* The options every command shares; CLI_NOT_COMMON for another option. */
+static int common_option(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in)
 {
     const char *a = argv[*i];
+    if (strcmp(a, "--") == 0) { /* the usual end of the options */
+        in->end_of_options = 1;
+        return CLI_NEXT;
+    }
     int b = take_builtin(cmd, argc, argv, i, in);
     if (b != 0)
         return b > 0 ? CLI_NEXT : CLI_USAGE;
@@ -64,8 +69,14 @@ int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, in
         in->format = argv[++*i];
         return CLI_NEXT;
     }
-    if (a[0] == '-' && a[1] != '\0')
-        return CLI_NOT_COMMON;
+    return CLI_NOT_COMMON;
+}
+
+int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in)
+{
+    const char *a = argv[*i];
+    if (!in->end_of_options && a[0] == '-' && a[1] != '\0')
+        return common_option(cmd, usage, argc, argv, i, in);
     if (in->given)
         return cli_usage_error(cmd, "more than one input (a FILE and --builtin, or two of them)", a);
     in->path = a; /* "-" included: standard input */
@@ -165,6 +176,18 @@ int cli_load(const char *cmd, const cli_input *in, bs_surface **out)
     if (st != BS_OK)
         return cli_fail(cmd, CLI_INTERNAL, "%s: %s", in->path, bs_status_string(st));
     return CLI_OK;
+}
+
+int cli_parse_number(const char *text, double *out)
+{
+    char *end = NULL;
+    double x = strtod(text, &end);
+    if (end == text || *end != '\0')
+        return 0;
+    if (!isfinite(x))
+        return -1;
+    *out = x;
+    return 1;
 }
 
 int cli_parse_double(const char *text, double *out)

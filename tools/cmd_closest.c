@@ -19,11 +19,15 @@ static const char usage[] =
 int cmd_closest(int argc, char **argv)
 {
     const char *cmd = argv[0];
-    cli_input in = {NULL, "teapot", 0, NULL};
+    cli_input in = {NULL, "teapot", 0, NULL, 0};
     double q[3];
     int nq = 0;
     for (int i = 1; i < argc; i++) {
-        if (nq < 3 && cli_parse_double(argv[i], &q[nq])) { /* "-1.5" is a coordinate, not an option */
+        int num = nq < 3 ? cli_parse_number(argv[i], &q[nq]) : 0; /* "-1.5" is a coordinate, not an option */
+        if (num < 0)
+            return cli_fail(cmd, CLI_USAGE, "%c is not a finite number: %s (try 'bezsurf %s --help')", "XYZ"[nq],
+                            argv[i], cmd);
+        if (num > 0) {
             nq++;
             continue;
         }

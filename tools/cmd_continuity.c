@@ -18,7 +18,7 @@ static const char usage[] =
 int cmd_continuity(int argc, char **argv)
 {
     const char *cmd = argv[0];
-    cli_input in = {NULL, "teapot", 0, NULL};
+    cli_input in = {NULL, "teapot", 0, NULL, 0};
     double tol = 1e-9;
     size_t samples = 32;
     for (int i = 1; i < argc; i++) {

@@ -41,8 +41,18 @@ int cmd_convert(int argc, char **argv)
 {
     const char *cmd = argv[0], *pos[2] = {NULL, NULL}, *to = NULL;
     size_t npos = 0;
-    cli_input in = {NULL, "teapot", 0, NULL};
+    cli_input in = {NULL, "teapot", 0, NULL, 0};
     for (int i = 1; i < argc; i++) {
+        /* operands: IN and OUT ("-" included), and everything after "--" */
+        if (in.end_of_options || strcmp(argv[i], "--") == 0 || argv[i][0] != '-' || argv[i][1] == '\0') {
+            if (!in.end_of_options && strcmp(argv[i], "--") == 0)
+                in.end_of_options = 1;
+            else if (npos == 2)
+                return cli_usage_error(cmd, "more than IN and OUT", argv[i]);
+            else
+                pos[npos++] = argv[i];
+            continue;
+        }
         if (cli_is_help(argv[i])) {
             fputs(usage, stdout);
             return cli_finish(cmd);
@@ -56,12 +66,8 @@ int cmd_convert(int argc, char **argv)
             int r = cli_common_arg(cmd, usage, argc, argv, &i, &in);
             if (r != CLI_NEXT)
                 return r;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_usage_error(cmd, "unknown option", argv[i]);
-        } else if (npos == 2) {
-            return cli_usage_error(cmd, "more than IN and OUT", argv[i]);
         } else {
-            pos[npos++] = argv[i];
+            return cli_usage_error(cmd, "unknown option", argv[i]);
         }
     }
     size_t need = in.given ? 1 : 2; /* a built-in takes IN's place */

@@ -17,7 +17,7 @@ static const char usage[] =
 int cmd_eval(int argc, char **argv)
 {
     const char *cmd = argv[0];
-    cli_input in = {NULL, "teapot", 0, NULL};
+    cli_input in = {NULL, "teapot", 0, NULL, 0};
     int normals = 0;
     size_t n = 0, maxn = (size_t)argc / 4 + 1;
     uint32_t *ids = malloc(maxn * sizeof(uint32_t));

@@ -47,7 +47,7 @@ static void print_model(const bs_model *m)
 int cmd_info(int argc, char **argv)
 {
     const char *cmd = argv[0];
-    cli_input in = {NULL, "teapot", 0, NULL};
+    cli_input in = {NULL, "teapot", 0, NULL, 0};
     double tol = 1e-9;
     for (int i = 1; i < argc; i++) {
         int r = cli_common_arg(cmd, usage, argc, argv, &i, &in);

@@ -19,7 +19,8 @@ static const char usage[] =
     "usage: bezsurf render [options] [FILE]\n"
     "Render a surface from a .bpt FILE ('-': standard input; default: the built-in teapot)\n"
     "to a PNG picture.\n"
-    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .png)\n"
+    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .png);\n"
+    "                        '-': standard output (the report goes to stderr)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
     "      --size WxH        picture size in pixels (default 800x600, each 16..8192)\n"
     "  -a, --azimuth DEG     camera azimuth around the up axis (default -60)\n"
@@ -256,6 +257,31 @@ static void draw_wire(raster *r, const double *pos, const uint32_t *tri, size_t 
                         0.6, ink);
 }
 
+/* Face the mesh outwards where it encloses a negative signed volume (the teapot's patches face
+ * into the pot): the triangles reversed and the normals negated, as BS_TESS_REVERSE would (the
+ * curvatures keep the sign of the patches' normals, as bs_patch_eval_curvature gives them).
+ * Returns 1 when it did. */
+static int face_outwards(const double *pos, double *nrm, size_t nv, uint32_t *tri, size_t nt)
+{
+    double vol = 0.0;
+    for (size_t t = 0; t < nt; t++) {
+        const double *p = pos + 3 * (size_t)tri[3 * t], *q = pos + 3 * (size_t)tri[3 * t + 1],
+                     *w = pos + 3 * (size_t)tri[3 * t + 2];
+        vol += p[0] * (q[1] * w[2] - q[2] * w[1]) - p[1] * (q[0] * w[2] - q[2] * w[0]) +
+               p[2] * (q[0] * w[1] - q[1] * w[0]);
+    }
+    if (!(vol < 0.0))
+        return 0;
+    for (size_t t = 0; t < nt; t++) {
+        uint32_t b = tri[3 * t + 1];
+        tri[3 * t + 1] = tri[3 * t + 2];
+        tri[3 * t + 2] = b;
+    }
+    for (size_t k = 0; k < 3 * nv; k++)
+        nrm[k] = -nrm[k];
+    return 1;
+}
+
 /* The tessellated surface into r (framed already), coloured by o->color or by curvature (then *cr
  * holds the range); *ntri receives the triangle count. CLI_OK or the exit code after a message. */
 static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_t *ntri, curvature_range *cr)
@@ -279,7 +305,8 @@ static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_
     if (!(pos && nrm && tri && bs_mesh_copy_positions(m, pv) == BS_OK && bs_mesh_copy_normals(m, nvw) == BS_OK &&
           bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK))
         cli_fail("render", CLI_INTERNAL, "out of memory");
-    else if (!o->curvature || (vcol = curvature_vertex_colors(o, s, m, pos, tri, cr, &rc)) != NULL)
+    else if (face_outwards(pos, nrm, nv, tri, nt) >= 0 &&
+             (!o->curvature || (vcol = curvature_vertex_colors(o, s, m, pos, tri, cr, &rc)) != NULL))
         rc = CLI_OK;
     if (rc == CLI_OK) {
         raster_mesh(r, pos, nrm, vcol, tri, nt, o->color);
@@ -339,15 +366,17 @@ static int render(const render_opts *o, const bs_surface *s)
         if (o->curvature)
             legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
         if (png_write_rgb(o->output, rgb, o->w, o->h) != 0)
-            rc = cli_fail_write("render", o->output);
+            rc = cli_fail_write("render", strcmp(o->output, "-") == 0 ? "standard output" : o->output);
     }
     if (rc == CLI_OK) {
+        FILE *report = strcmp(o->output, "-") == 0 ? stderr : stdout; /* not into the picture */
+        const char *name = report == stderr ? "<stdout>" : o->output;
         if (o->rays)
-            printf("%s: %zux%zu, %zu rays, %zu hits\n", o->output, o->w, o->h, r.W * r.H, hits);
+            fprintf(report, "%s: %zux%zu, %zu rays, %zu hits\n", name, o->w, o->h, r.W * r.H, hits);
         else
-            printf("%s: %zux%zu, %zu triangles\n", o->output, o->w, o->h, nt);
+            fprintf(report, "%s: %zux%zu, %zu triangles\n", name, o->w, o->h, nt);
         if (o->curvature)
-            printf("%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
+            fprintf(report, "%s curvature: colours over -%.6g..%.6g; at the vertices from %.6g to %.6g, %zu undefined\n",
                    o->curvature == 2 ? "Gaussian" : "mean", cr.range, cr.range, cr.min, cr.max, cr.undefined);
         rc = cli_finish("render");
     }
@@ -409,7 +438,7 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 
 int cmd_render(int argc, char **argv)
 {
-    render_opts o = {{NULL, "teapot", 0, NULL}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
+    render_opts o = {{NULL, "teapot", 0, NULL, 0}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
                      {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
@@ -426,7 +455,7 @@ int cmd_render(int argc, char **argv)
     if (o.w * o.h * o.ss * o.ss > RENDER_MAX_SAMPLES) /* each at most 8192 and 4: no overflow */
         return cli_usage_error("render", "--size W x H times --ss N squared exceeds 67108864 samples (1 GiB)",
                                NULL);
-    rc = cli_check_output("render", o.output); /* before the work, not after it */
+    rc = strcmp(o.output, "-") == 0 ? CLI_OK : cli_check_output("render", o.output); /* before the work */
     if (rc != CLI_OK)
         return rc;
     bs_surface *s = NULL;

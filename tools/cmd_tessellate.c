@@ -3,13 +3,15 @@
 
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char usage[] =
     "usage: bezsurf tessellate [options] [FILE]\n"
     "Tessellate a surface from a .bpt FILE ('-': standard input; default: the built-in\n"
     "teapot) into a triangle mesh file.\n"
-    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .obj)\n"
+    "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .obj);\n"
+    "                        '-': standard output (OBJ unless -f; the counts go to stderr)\n"
     "  -f, --format FMT      obj, ply (binary), ply-ascii or stl (default: from the output's\n"
     "                        extension .obj, .ply or .stl; else obj)\n"
     "  -u, --uniform N[xM]   N x M segments per patch (1..1024)\n"
@@ -20,6 +22,8 @@ static const char usage[] =
     "                        (a quadtree of sub-patches in each patch, fewer triangles)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
     "  -s, --strips          also build triangle strips (reported, not written)\n"
+    "      --reverse         reverse the triangles' winding and the normals (the built-in\n"
+    "                        teapot's patches face into the pot: --reverse faces it outwards)\n"
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
     "                        (default 10000000, about 0.5 GB of memory; 0: no limit)\n"
     "  -h, --help            this text\n"
@@ -49,9 +53,26 @@ static int format_of_path(const char *path)
     return format;
 }
 
+/* The mesh file's bytes to standard output: BS_OK, BS_ERR_IO (errno set) or a library status. */
+static bs_status write_stdout(const bs_mesh *m, int format)
+{
+    size_t size = 0;
+    bs_status st = bs_mesh_write_memory(m, format, NULL, 0, &size);
+    char *buf = st == BS_OK ? malloc(size + 1) : NULL;
+    if (st == BS_OK && buf == NULL)
+        st = BS_ERR_NO_MEMORY;
+    if (st == BS_OK)
+        st = bs_mesh_write_memory(m, format, buf, size + 1, &size);
+    errno = 0;
+    if (st == BS_OK && (fwrite(buf, 1, size, stdout) != size || fflush(stdout) != 0))
+        st = BS_ERR_IO;
+    free(buf);
+    return st;
+}
+
 int cmd_tessellate(int argc, char **argv)
 {
-    cli_input in = {NULL, "teapot", 0, NULL};
+    cli_input in = {NULL, "teapot", 0, NULL, 0};
     const char *output = NULL;
     int format = -1, mode = 0 /* 0 relative, 1 absolute, 2 uniform */, flags = 0;
     double tol = 1e-3;
@@ -66,6 +87,10 @@ int cmd_tessellate(int argc, char **argv)
         const char *a = argv[i];
         if (strcmp(a, "-s") == 0 || strcmp(a, "--strips") == 0) {
             flags |= BS_TESS_STRIPS;
+            continue;
+        }
+        if (strcmp(a, "--reverse") == 0) {
+            flags |= BS_TESS_REVERSE;
             continue;
         }
         if (i + 1 >= argc)
@@ -118,7 +143,8 @@ int cmd_tessellate(int argc, char **argv)
     }
     if (format < 0)
         format = format_of_path(output);
-    int rc = cli_check_output("tessellate", output); /* before the work, not after it */
+    int to_stdout = strcmp(output, "-") == 0;
+    int rc = to_stdout ? CLI_OK : cli_check_output("tessellate", output); /* before the work */
     if (rc != CLI_OK)
         return rc;
     bs_surface *s = NULL;
@@ -137,18 +163,21 @@ int cmd_tessellate(int argc, char **argv)
     bs_surface_destroy(s);
     if (rc != CLI_OK)
         return rc;
-    bs_status st = bs_mesh_write(m, format, output);
+    bs_status st = to_stdout ? write_stdout(m, format) : bs_mesh_write(m, format, output);
     if (st != BS_OK) {
         int e = errno;
         bs_mesh_destroy(m);
         errno = e;
-        return st == BS_ERR_IO ? cli_fail_write("tessellate", output)
-                               : cli_fail("tessellate", CLI_OUTPUT, "cannot write %s: %s", output, bs_status_string(st));
+        const char *name = to_stdout ? "standard output" : output;
+        return st == BS_ERR_IO ? cli_fail_write("tessellate", name)
+                               : cli_fail("tessellate", CLI_OUTPUT, "cannot write %s: %s", name, bs_status_string(st));
     }
-    printf("%s: %zu vertices, %zu triangles", output, bs_mesh_vertex_count(m), bs_mesh_triangle_count(m));
+    FILE *report = to_stdout ? stderr : stdout; /* not into the mesh */
+    fprintf(report, "%s: %zu vertices, %zu triangles", to_stdout ? "<stdout>" : output, bs_mesh_vertex_count(m),
+            bs_mesh_triangle_count(m));
     if (flags & BS_TESS_STRIPS)
-        printf(", %zu strips", bs_mesh_strip_count(m));
-    printf("\n");
+        fprintf(report, ", %zu strips", bs_mesh_strip_count(m));
+    fprintf(report, "\n");
     bs_mesh_destroy(m);
     return cli_finish("tessellate");
 }

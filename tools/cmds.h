@@ -55,6 +55,7 @@ typedef struct cli_input {
     const char *builtin; /* used when path is NULL; "teapot" by default */
     int given;           /* a FILE or --builtin was given (a second one is a usage error) */
     const char *format;  /* --from FORMAT; NULL: the file's extension (.bpt when none matches) */
+    int end_of_options;  /* after "--": every argument is an operand */
 } cli_input;
 
 /* 1 if arg is -h or --help. */
@@ -67,7 +68,8 @@ int cli_usage_error(const char *cmd, const char *msg, const char *arg);
 #define CLI_NEXT       (-1) /* argv[*i] (and its value) taken: go on with argv[*i + 1] */
 #define CLI_NOT_COMMON (-2) /* argv[*i] is an option of the subcommand's own */
 /* The arguments every subcommand takes: --builtin NAME (-b NAME), --from FORMAT, -h/--help
- * (prints usage to stdout) and the input FILE (an argument not starting with '-', or "-"; at most one). Returns
+ * (prints usage to stdout), "--" (every later argument is an operand, even one starting with '-')
+ * and the input FILE (an argument not starting with '-', or "-"; at most one). Returns
  * CLI_NEXT, CLI_NOT_COMMON, or else the exit code the subcommand must return at once. */
 int cli_common_arg(const char *cmd, const char *usage, int argc, char **argv, int *i, cli_input *in);
 /* Default output name: the input file's name without directory and extension, or the built-in's
@@ -82,6 +84,9 @@ int cli_load_model(const char *cmd, const cli_input *in, bs_model **out);
 const char *cli_input_name(const cli_input *in);
 /* Parse a finite number / a non-negative integer; 1 on success. */
 int cli_parse_double(const char *text, double *out);
+/* 1 if text is a whole number that is a finite double (into *out), -1 if it is a whole number
+ * that is not (nan, inf, 1e400), 0 if it is not a number. */
+int cli_parse_number(const char *text, double *out);
 int cli_parse_size(const char *text, size_t *out);
 /* Print "bezsurf CMD: message" to stderr; returns code. */
 int cli_fail(const char *cmd, int code, const char *fmt, ...);

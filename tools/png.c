@@ -135,8 +135,15 @@ int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h
     ihdr[12] = 0; /* no interlace */
     static const unsigned char sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
     out_file o;
-    int rc = out_open(path, &o);
-    if (rc == 0) {
+    int rc = 0;
+    if (strcmp(path, "-") == 0) { /* standard output */
+        errno = 0;
+        int ok = fwrite(sig, 1, 8, stdout) == 8 && chunk(stdout, "IHDR", ihdr, 13) && chunk(stdout, "IDAT", z, k) &&
+                 chunk(stdout, "IEND", NULL, 0) && fflush(stdout) == 0;
+        rc = ok ? 0 : -1;
+        if (!ok && errno == 0)
+            errno = EIO;
+    } else if ((rc = out_open(path, &o)) == 0) {
         errno = 0;
         int ok = fwrite(sig, 1, 8, o.f) == 8 && chunk(o.f, "IHDR", ihdr, 13) && chunk(o.f, "IDAT", z, k) &&
                  chunk(o.f, "IEND", NULL, 0);

@@ -15,6 +15,6 @@ uint32_t png_adler32(uint32_t adler, const unsigned char *p, size_t n);
 /* Write w x h pixels, 3 bytes (R, G, B) each, row by row from the top, replacing path atomically
  * (tools/outfile.h: the old file stays as it was unless the whole new one was written). 0 on
  * success, -1 with errno set if the file cannot be written (EINVAL: the size is out of range). */
-int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h);
+int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h); /* "-": stdout */
 
 #endif

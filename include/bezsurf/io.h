@@ -30,7 +30,9 @@ typedef struct bs_parse_error {
 
 /**
  * @brief Parse .bpt text held in memory into a new surface of 3-D patches.
- * The text need not be NUL-terminated; a NUL byte inside it is an error. Numbers are read in the
+ * The text need not be NUL-terminated; one final NUL is ignored (since 1.2: so the size
+ * bs_surface_write_bpt() reports, which counts it, can be passed as len), a NUL byte elsewhere is
+ * an error. Numbers are read in the
  * C notation whatever the process locale. See docs/bpt-format.md for the grammar, the rational
  * extension and the limits (degrees up to BS_MAX_DEGREE, counts consistent with the input length,
  * finite coordinates, positive finite weights, numbers of at most 400 characters).
@@ -109,7 +111,10 @@ BS_API bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path
  * gives one patch per segment; a B-spline surface one patch per knot span (through
  * bs_surface_add_bspline()) of its `surf` parameter range (spans the range cuts are cut). Polygons, groups, display and rendering statements, curves and
  * trimming statements are skipped (a trimmed surface is read whole). docs/formats.md gives the
- * exact subset. A text without surfaces gives an empty surface.
+ * exact subset. A text without surfaces gives an empty surface, unless it has polygons or
+ * curves (f, l, p, curv, curv2): then, since 1.2, BS_ERR_UNSUPPORTED with err saying how many of
+ * each it holds and where the first is (1.1 gave an empty surface). One final NUL is ignored (since
+ * 1.2: so the size bs_surface_write_obj() reports, which counts it, can be passed as len).
  * @param[in]  text  the bytes; may be NULL only when len is 0.
  * @param[in]  len   number of bytes.
  * @param[out] err   NULL, or receives the position and reason of the first error on BS_ERR_PARSE
@@ -118,9 +123,10 @@ BS_API bs_status bs_surface_write_bpt_file(const bs_surface *s, const char *path
  * @return BS_OK on success.
  * @return BS_ERR_INVALID_ARG if out is NULL, or text is NULL with len > 0.
  * @return BS_ERR_PARSE if the text is malformed (bad numbers or indices, counts that do not match
- *         the degree and the parameter values, a NUL byte, non-positive weights of a rational
+ *         the degree and the parameter values, a NUL byte before the last one, non-positive weights of a rational
  *         surface, ...).
- * @return BS_ERR_UNSUPPORTED for a surface of another curve type (bmatrix, cardinal, taylor).
+ * @return BS_ERR_UNSUPPORTED for a surface of another curve type (bmatrix, cardinal, taylor), or
+ *         polygons or curves without any surface (since 1.2).
  * @return BS_ERR_NO_MEMORY if allocation fails.
  * @since 1.1
  */

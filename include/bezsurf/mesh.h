@@ -28,6 +28,12 @@ typedef struct bs_mesh bs_mesh;
 #define BS_TESS_RELATIVE 1
 /** Tessellation flag: also build triangle strips (see bs_mesh_copy_strips()). @since 1.0 */
 #define BS_TESS_STRIPS 2
+/** Tessellation flag: face the mesh the other way. Every vertex normal is negated and every
+ *  triangle's winding reversed (still counter-clockwise seen from the side the normals point
+ *  to), strips included; positions, parameters and ids are unchanged. The built-in tea set's
+ *  patches face into the pot (docs/surfaces.md): this flag makes its meshes face outwards.
+ *  A 1.1 library refuses it (BS_ERR_INVALID_ARG). @since 1.2 */
+#define BS_TESS_REVERSE 4
 /** Largest number of segments per patch and direction a tessellator uses. @since 1.0 */
 #define BS_TESS_MAX_RATE 1024
 
@@ -41,7 +47,8 @@ typedef struct bs_mesh bs_mesh;
  * @param[in]  s      the surface (dim 3).
  * @param[in]  nu     segments along u per patch, 1..BS_TESS_MAX_RATE.
  * @param[in]  nv     segments along v per patch, 1..BS_TESS_MAX_RATE.
- * @param[in]  flags  0 or BS_TESS_STRIPS (BS_TESS_RELATIVE is accepted and ignored).
+ * @param[in]  flags  0 or a combination of BS_TESS_STRIPS and BS_TESS_REVERSE (BS_TESS_RELATIVE is
+ *                    accepted and ignored).
  * @param[out] out    receives the mesh (NULL on failure); release with bs_mesh_destroy().
  * @return BS_OK on success.
  * @return BS_ERR_INVALID_ARG if s or out is NULL or flags has unknown bits.
@@ -66,7 +73,7 @@ BS_API bs_status bs_surface_tessellate_uniform(const bs_surface *s, size_t nu, s
  * @param[in]  s          the surface (dim 3).
  * @param[in]  tolerance  finite and > 0: a distance, or with BS_TESS_RELATIVE a fraction of the
  *                        bounding-box diagonal of all control points.
- * @param[in]  flags      0 or a combination of BS_TESS_RELATIVE and BS_TESS_STRIPS.
+ * @param[in]  flags      0 or a combination of BS_TESS_RELATIVE, BS_TESS_STRIPS and BS_TESS_REVERSE.
  * @param[out] out        receives the mesh (NULL on failure).
  * @return BS_OK on success.
  * @return BS_ERR_INVALID_ARG if s or out is NULL or flags has unknown bits.
@@ -103,7 +110,8 @@ BS_API bs_status bs_surface_tessellate_adaptive(const bs_surface *s, double tole
 typedef struct bs_tess_options {
     size_t size;          /**< sizeof(bs_tess_options), set by bs_tess_options_init() */
     int method;           /**< BS_TESS_UNIFORM (default), BS_TESS_PER_PATCH or BS_TESS_SUBDIVIDE */
-    int flags;            /**< 0 or a combination of BS_TESS_RELATIVE and BS_TESS_STRIPS */
+    int flags;            /**< 0 or a combination of BS_TESS_RELATIVE, BS_TESS_STRIPS and
+                               BS_TESS_REVERSE (from 1.2) */
     size_t nu;            /**< BS_TESS_UNIFORM: segments along u per patch, 1..BS_TESS_MAX_RATE (default 16) */
     size_t nv;            /**< BS_TESS_UNIFORM: segments along v per patch (default 16) */
     double tolerance;     /**< the other methods: as in bs_surface_tessellate_adaptive() (default

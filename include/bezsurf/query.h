@@ -144,13 +144,15 @@ BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const b
  * exact first hit. No ray whose exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or
  * answered with a later hit, including rays through shared edges, corners and poles. Tangent and
  * grazing hits may be reported or not. On a miss: patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN
- * or Inf in o, d or the range, or d = 0, is a miss with t = NaN. Normals follow the rule of
- * bs_patch_eval_normal() (limit normals at poles).
+ * or Inf in o or d, a NaN in the range, an infinite t_min, a t_max of -Inf, or d = 0, is a miss with
+ * t = NaN. A t_max of +Inf means no upper limit (since 1.2; 1.1 took it for an invalid ray, so a
+ * program for both passes DBL_MAX). Normals follow the rule of bs_patch_eval_normal() (limit
+ * normals at poles).
  * @param[in]  L       the locator (dimension 3).
  * @param[in]  n       number of rays.
  * @param[in]  org     3 views: ray origins.
  * @param[in]  dir     3 views: directions, any non-zero length.
- * @param[in]  trange  NULL for (0, +Inf), or 2 views: t_min, t_max.
+ * @param[in]  trange  NULL for (0, +Inf), or 2 views: t_min (finite), t_max (finite or +Inf).
  * @param[out] patch   NULL or n patch ids; UINT32_MAX where the ray misses.
  * @param[out] uv      NULL or 2 views.
  * @param[out] t       NULL or 1 view: the ray parameter of the hit.
@@ -196,7 +198,7 @@ BS_API bs_status bs_locator_closest_point_mt(const bs_locator *L, size_t n, cons
  * @param[in]  n        number of rays.
  * @param[in]  org      3 views: ray origins.
  * @param[in]  dir      3 views: directions, any non-zero length.
- * @param[in]  trange   NULL for (0, +Inf), or 2 views: t_min, t_max.
+ * @param[in]  trange   NULL for (0, +Inf), or 2 views: t_min (finite), t_max (finite or +Inf).
  * @param[out] patch    NULL or n patch ids; UINT32_MAX where the ray misses.
  * @param[out] uv       NULL or 2 views.
  * @param[out] t        NULL or 1 view: the ray parameter of the hit.

@@ -153,6 +153,7 @@ bs_status bs_surface_read_bpt(const char *text, size_t len, bs_parse_error *err,
         *out = NULL;
     if (out == NULL || (text == NULL && len > 0))
         return BS_ERR_INVALID_ARG;
+    len = bsi_text_len(text, len);
     reader r = {text, len, 0, 1, 0, err};
     size_t count = 0;
     bs_status st = read_count(&r, "the patch count", UINT32_MAX, &count);

@@ -24,6 +24,13 @@ size_t bsi_format_double(double x, char *buf);
 /* ---- shared by the readers and writers (lib/io/io_common.c) ---- */
 #define BSI_FILE_MAX ((size_t)256 << 20) /* largest file read into memory */
 
+/* The length of a text without its one final NUL, if it ends with one: the sizes the writers
+ * report count it, and a reader given such a size reads the text (1.2). */
+static inline size_t bsi_text_len(const char *text, size_t len)
+{
+    return len > 0 && text != NULL && text[len - 1] == '\0' ? len - 1 : len;
+}
+
 /* Fill err (when not NULL) with line, column and the formatted message; return BS_ERR_PARSE. */
 bs_status bsi_fail(bs_parse_error *err, size_t line, size_t column, const char *fmt, ...);
 bs_status bsi_vfail(bs_parse_error *err, size_t line, size_t column, const char *fmt, va_list ap);

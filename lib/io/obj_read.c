@@ -29,6 +29,8 @@ typedef struct obj {
     bsi_growing parm[2];      /* parameter values along u and v */
     int have_parm[2];
     bs_surface *s;
+    size_t surfs;             /* surf statements read */
+    size_t skipped[4], skip_line, skip_col; /* f, l, p, curv/curv2 skipped; where the first was */
 } obj;
 
 static int is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -213,6 +215,7 @@ static bs_status read_ref(obj *o, size_t start, size_t tlen)
 
 static bs_status read_surf(obj *o, size_t kw)
 {
+    o->surfs++;
     if (o->body == BODY_SURF)
         return fail_at(o, kw, "%s", "surf before the end of the previous surface");
     if (o->type == TYPE_NONE)
@@ -412,12 +415,34 @@ static bs_status statement(obj *o)
         return read_parm(o, kw);
     if (token_is(o, kw, klen, "end"))
         return read_end(o, kw);
-    if (token_is(o, kw, klen, "curv") || token_is(o, kw, klen, "curv2")) {
+    static const char *const elements[4] = {"f", "l", "p", "curv"};
+    int curve = token_is(o, kw, klen, "curv") || token_is(o, kw, klen, "curv2");
+    for (size_t e = 0; e < 4; e++)
+        if (e == 3 ? curve : token_is(o, kw, klen, elements[e])) {
+            if (o->skipped[0] + o->skipped[1] + o->skipped[2] + o->skipped[3] == 0)
+                o->skip_line = o->line, o->skip_col = kw - o->line_start + 1;
+            o->skipped[e]++;
+        }
+    if (curve) {
         if (o->body == BODY_SURF)
             return fail_at(o, kw, "%s", "curve before the end of the surface");
         o->body = BODY_OTHER;
     }
     return BS_OK; /* every other statement is skipped */
+}
+
+/* A text with polygons or curves but no surf: say what it holds instead of reading nothing. */
+static bs_status only_skipped(const obj *o)
+{
+    static const char *const what[4] = {"faces (f)", "lines (l)", "points (p)", "curves"};
+    char msg[96] = "no surface (surf) to read, only ";
+    for (size_t e = 0, n = 0; e < 4; e++)
+        if (o->skipped[e] > 0) {
+            size_t at = strlen(msg);
+            snprintf(msg + at, sizeof msg - at, "%s%zu %s", n++ ? ", " : "", o->skipped[e], what[e]);
+        }
+    (void)bsi_fail(o->err, o->skip_line, o->skip_col, "%s", msg);
+    return BS_ERR_UNSUPPORTED;
 }
 
 bs_status bs_surface_read_obj(const char *text, size_t len, bs_parse_error *err, bs_surface **out)
@@ -426,6 +451,7 @@ bs_status bs_surface_read_obj(const char *text, size_t len, bs_parse_error *err,
         *out = NULL;
     if (out == NULL || (text == NULL && len > 0))
         return BS_ERR_INVALID_ARG;
+    len = bsi_text_len(text, len);
     obj o;
     memset(&o, 0, sizeof o);
     o.text = text;
@@ -447,6 +473,8 @@ bs_status bs_surface_read_obj(const char *text, size_t len, bs_parse_error *err,
     }
     if (st == BS_OK && o.body == BODY_SURF)
         st = bsi_fail(err, o.surf_line, o.surf_col, "%s", "surface without end");
+    if (st == BS_OK && o.surfs == 0 && o.skipped[0] + o.skipped[1] + o.skipped[2] + o.skipped[3] > 0)
+        st = only_skipped(&o);
     free(o.verts.data);
     free(o.refs.data);
     free(o.parm[0].data);

@@ -136,6 +136,7 @@ bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t 
     t.s = s;
     t.np = sd.np;
     t.strips = (flags & BS_TESS_STRIPS) != 0;
+    t.reverse = (flags & BS_TESS_REVERSE) != 0;
     if (st == BS_OK)
         st = allocate(&t, &sd);
     if (st == BS_OK)

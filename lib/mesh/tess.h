@@ -7,7 +7,8 @@
  *   3. plan    (tess_plan.c)    sides sampled into slots, shared slots merged, vertex ids
  *   4. sample  (tess_sample.c)  parameters, positions and normals of every vertex
  *   5. emit    (tess_emit.c)    triangles, strips and the corners that keep their own (u,v)
- *   6. finish  (tess_sample.c, tess_emit.c)  normals repaired, corner list trimmed
+ *   6. finish  (tess_sample.c, tess_emit.c, tess_reverse.c)  normals repaired, corner list
+ *      trimmed, faced the other way for BS_TESS_REVERSE
  * The entry points with options and budgets are in tess_options.c.
  * Not installed.
  */
@@ -53,6 +54,7 @@ typedef struct tess {
     size_t *parent;     /* union-find over slots; the root of a set is its lowest slot */
     uint32_t *slot_vert;
     int strips;
+    int reverse;        /* BS_TESS_REVERSE: faced the other way by bsi_tess_finish */
     /* output */
     size_t nvert;
     double *pos, *nrm, *uv;
@@ -180,6 +182,9 @@ bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out);
 bs_status bsi_tess_triangulate(tess *t);
 /* The emission of bsi_tess_triangulate on `workers` threads, into reserved arrays. */
 bs_status bsi_tess_emit_parallel(tess *t, size_t workers);
+/* Face a finished tessellation the other way: normals, triangles, corners and strips
+ * (tess_reverse.c; BS_ERR_NO_MEMORY, or BS_ERR_SIZE past 32-bit strip indices). */
+bs_status bsi_tess_reverse(tess *t);
 /* Shrink the corner list to the corners actually listed. */
 bs_status bsi_tess_trim_corners(tess *t);
 

@@ -64,7 +64,7 @@ void bsi_tess_free(tess *t)
 
 bs_status bsi_tess_check(const bs_surface *s, int flags)
 {
-    if (s == NULL || (flags & ~(BS_TESS_RELATIVE | BS_TESS_STRIPS)) != 0)
+    if (s == NULL || (flags & ~(BS_TESS_RELATIVE | BS_TESS_STRIPS | BS_TESS_REVERSE)) != 0)
         return BS_ERR_INVALID_ARG;
     if (bs_surface_count(s) > 0 && bs_surface_dim(s) != 3)
         return BS_ERR_DIMENSION;
@@ -104,6 +104,8 @@ bs_status bsi_tess_finish(tess *t, bs_status st, bs_mesh **out)
     bs_mesh *m = NULL;
     if (st == BS_OK && t->strips)
         UPUT(t->sstart, (uint32_t)t->sidx.n);
+    if (st == BS_OK && t->reverse)
+        st = bsi_tess_reverse(t);
     if (st == BS_OK && (m = calloc(1, sizeof(*m))) == NULL)
         st = BS_ERR_NO_MEMORY;
     if (st != BS_OK) {
@@ -161,6 +163,7 @@ static bs_status tess_init(tess *t, const bs_surface *s, int flags)
     t->s = s;
     t->np = bs_surface_count(s);
     t->strips = (flags & BS_TESS_STRIPS) != 0;
+    t->reverse = (flags & BS_TESS_REVERSE) != 0;
     t->threads = 1;
     t->plan = calloc(t->np ? t->np : 1, sizeof(patch_plan));
     return t->plan ? BS_OK : BS_ERR_NO_MEMORY;

@@ -19,8 +19,9 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
                     double *len)
 {
     double scale = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
-    if (!bsi_all_finite(o, 3) || !bsi_all_finite(d, 3) || (range && !bsi_all_finite(range, 2)) ||
-        scale == 0.0)
+    /* t_max = +Inf is "no limit" (1.2); t_min stays finite */
+    if (!bsi_all_finite(o, 3) || !bsi_all_finite(d, 3) ||
+        (range && !(isfinite(range[0]) && (isfinite(range[1]) || range[1] == INFINITY))) || scale == 0.0)
         return 0;
     double dd[3] = {d[0] / scale, d[1] / scale, d[2] / scale}, l = sqrt(bsi_dot3(dd, dd));
     *len = scale * l;

@@ -47,6 +47,15 @@ expect 1 "two coordinates" -- "$tool" closest 1 2
 check "grep -q 'three coordinates' '$work/err'" "two coordinates: message"
 expect 1 "a word for a coordinate" -- "$tool" closest 1 2 x3
 expect 1 "not finite" -- "$tool" closest 1 2 1e999
+check "grep -q 'Z is not a finite number: 1e999' '$work/err'" "not finite: which coordinate, not 'three are needed'"
+for bad in "1 2 nan" "1e400 0 0" "0 -inf 0"; do
+    expect 1 "closest $bad" -- "$tool" closest $bad
+    check "grep -q 'is not a finite number' '$work/err' && ! grep -q 'three coordinates' '$work/err'" "closest $bad: message"
+done
+# "--" ends the options: a file whose name starts with '-', coordinates after it
+"$tool" convert -b teacup "$work/cup.bpt" >/dev/null && mv "$work/cup.bpt" "$work/-cup.bpt"
+expect 0 "closest --" -- sh -c "cd '$work' && '$tool' closest -- 0.5 2 0.1 -cup.bpt"
+expect 0 "closest -- without file" -- "$tool" closest -- -1 2 3
 expect 1 "unknown option" -- "$tool" closest --bogus 1 2 3
 expect 2 "missing file" -- "$tool" closest 1 2 3 "$work/missing.bpt"
 expect 2 "unknown built-in" -- "$tool" closest -b kettle 1 2 3

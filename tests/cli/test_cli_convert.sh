@@ -53,6 +53,13 @@ check "grep -q 'taylor.obj:4:.*taylor' '$work/err'" "the line of the unsupported
 printf 'v 0 0 0\nsurf 0 1 0 1 1 2\n' > "$work/broken.obj"
 expect 2 "broken OBJ" -- "$tool" info "$work/broken.obj"
 check "grep -q 'broken.obj:2:' '$work/err'" "the line of the OBJ error"
+# a polygon mesh: refused, saying what it holds (it read as 0 patches, then closest said
+# "the surface is not 3-D")
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 1\n' >"$work/polygons.obj"
+for cmd in info "closest 1 2 3"; do
+    expect 2 "polygon OBJ, $cmd" -- "$tool" $cmd "$work/polygons.obj"
+    has err "polygons.obj:4:1: no surface (surf) to read, only 2 faces (f)" "polygon OBJ, $cmd: what it holds"
+done
 expect 2 "a .bpt read as IGES" -- "$tool" info --from iges "$work/teapot.bpt"
 
 echo "test_cli_convert: $checks checks, $fails failures"

@@ -26,6 +26,36 @@ expect 0 "tessellate obj" -- "$tool" tessellate -u 8 -o "$work/t.obj" "$data/tea
 check "grep -q '2082 vertices, 4032 triangles' '$work/out'" "uniform 8 counts"
 check "[ \$(grep -c '^v ' '$work/t.obj') -eq 2082 ] && [ \$(grep -c '^f ' '$work/t.obj') -eq 4032 ]" "OBJ lines"
 check "[ \$(grep -c '^vn ' '$work/t.obj') -eq 2082 ] && [ \$(grep -c '^vt ' '$work/t.obj') -eq 2082 ]" "OBJ vn/vt"
+# --reverse: the teapot's patches face into the pot (negative signed volume); reversed, its mesh
+# faces outwards: each face's last two corners swapped, each normal negated, the volume positive.
+vol() {
+    awk '/^v /{n++; x[n]=$2; y[n]=$3; z[n]=$4}
+         /^f /{split($2,a,"/"); split($3,b,"/"); split($4,c,"/"); i=a[1]; j=b[1]; k=c[1]
+               s+=x[i]*(y[j]*z[k]-z[j]*y[k])-y[i]*(x[j]*z[k]-z[j]*x[k])+z[i]*(x[j]*y[k]-y[j]*x[k])}
+         END{printf "%.3f\n", s/6}' "$1"
+}
+expect 0 "tessellate reverse" -- "$tool" tessellate -u 8 --reverse -o "$work/r.obj" "$data/teapot.bpt"
+check "grep -q '2082 vertices, 4032 triangles' '$work/out'" "reversed counts"
+vt=$(vol "$work/t.obj") vr=$(vol "$work/r.obj")
+check "[ \"$vt\" = \"-$vr\" ] && [ \"${vr#-}\" = \"$vr\" ]" "signed volumes $vt plain, $vr reversed"
+awk '/^f /{print $1, $2, $4, $3}' "$work/t.obj" >"$work/faces.want"
+awk '/^vn /{print -$2, -$3, -$4}' "$work/t.obj" >"$work/vn.want"
+check "grep '^f ' '$work/r.obj' | cmp -s - '$work/faces.want'" "reversed faces"
+check "awk '/^vn /{print \$2+0, \$3+0, \$4+0}' '$work/r.obj' | cmp -s - '$work/vn.want'" "negated normals"
+# -o -: the mesh (or picture) to standard output, the report to stderr, no file named '-'
+expect 0 "tessellate -o -" -- sh -c "cd '$work' && '$tool' tessellate -u 8 -o - '$data/teapot.bpt'"
+check "cmp -s '$work/out' '$work/t.obj'" "tessellate -o -: the OBJ bytes of -o t.obj"
+check "grep -q '^<stdout>: 2082 vertices, 4032 triangles' '$work/err'" "tessellate -o -: counts on stderr"
+check "[ ! -e '$work/-' ]" "tessellate -o -: no file named -"
+expect 0 "tessellate -o - -f stl" -- "$tool" tessellate -u 8 -f stl -o - "$data/teapot.bpt"
+check "[ \$(wc -c <'$work/out') -eq \$((84 + 50 * 4032)) ]" "STL to stdout"
+expect 0 "render -o -" -- sh -c "cd '$work' && '$tool' render --size 48x32 --ss 1 -o -"
+check "head -c 4 '$work/out' | od -c | grep -q 'P   N   G'" "render -o -: a PNG on stdout"
+check "grep -q '^<stdout>: 48x32' '$work/err' && [ ! -e '$work/-' ]" "render -o -: report on stderr"
+# "--" ends the options: an input whose name starts with '-'
+cp "$data/teacup.bpt" "$work/-cup.bpt"
+expect 0 "tessellate --" -- sh -c "cd '$work' && '$tool' tessellate -u 2 -o cup2.obj -- -cup.bpt"
+check "grep -q '^cup2.obj: ' '$work/out'" "tessellate -- -cup.bpt"
 expect 0 "tessellate stl" -- "$tool" tessellate -u 8 -o "$work/t.stl"
 check "[ \$(wc -c <'$work/t.stl') -eq \$((84 + 50 * 4032)) ]" "STL size"
 expect 0 "tessellate ply" -- "$tool" tessellate -u 4x6 -o "$work/t.ply" -b teacup

@@ -24,9 +24,13 @@ static int round_trips(const bs_surface *s)
     size_t size2 = 0;
     int ok = buf && bs_surface_write_bpt(s, buf, size, &size2) == BS_OK && size2 == size &&
              buf[size - 1] == '\0' && strlen(buf) == size - 1;
-    bs_surface *back = NULL;
-    ok = ok && bs_surface_read_bpt(buf, size - 1, NULL, &back) == BS_OK && surface_same_bits(s, back);
+    /* the size the writer reports, final NUL included, is what a user passes back (1.2); the
+     * text without its NUL reads the same */
+    bs_surface *back = NULL, *back2 = NULL;
+    ok = ok && bs_surface_read_bpt(buf, size, NULL, &back) == BS_OK && surface_same_bits(s, back);
+    ok = ok && bs_surface_read_bpt(buf, size - 1, NULL, &back2) == BS_OK && surface_same_bits(s, back2);
     bs_surface_destroy(back);
+    bs_surface_destroy(back2);
     free(buf);
     return ok;
 }
@@ -193,6 +197,15 @@ static void test_errors(void)
     CHECK_STATUS(bs_surface_read_bpt(ok, 10, &err, &s), BS_ERR_PARSE);
     CHECK_STATUS(bs_surface_read_bpt(ok, strlen(ok), &err, &s), BS_OK);
     bs_surface_destroy(s);
+    /* One final NUL (the writer's size counts it) is the end of the text; two are an error. */
+    CHECK_STATUS(bs_surface_read_bpt(ok, strlen(ok) + 1, &err, &s), BS_OK);
+    CHECK(s != NULL && bs_surface_count(s) == 1);
+    bs_surface_destroy(s);
+    CHECK_STATUS(bs_surface_read_bpt("0\n\0", 3, &err, &s), BS_OK);
+    bs_surface_destroy(s);
+    CHECK_STATUS(bs_surface_read_bpt("\0", 1, &err, &s), BS_ERR_PARSE); /* nothing before it: no count */
+    CHECK_STATUS(bs_surface_read_bpt("1\n0 0\n1 2 3\n\0\0", 14, &err, &s), BS_ERR_PARSE);
+    CHECK(s == NULL && err.line == 4 && err.column == 1);
     /* Whitespace of every kind, a rational patch, an empty surface. */
     CHECK_STATUS(parse("\t1\r\n0\v1\fw 1 2 3 0.5\n4 5 6 2", NULL, &s), BS_OK);
     CHECK(s && bs_surface_count(s) == 1 && bs_patch_is_rational(bs_surface_get(s, 0)));

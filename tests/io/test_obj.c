@@ -39,7 +39,13 @@ static int round_trips(const bs_surface *s)
     char *t = write_text(s);
     bs_surface *back = NULL;
     bs_parse_error err = {0, 0, ""};
-    int ok = t != NULL && parse(t, &err, &back) == BS_OK && surface_same_bits(s, back);
+    /* as a user writes it: the size the writer reports (final NUL included) passed back (1.2) */
+    size_t size = 0;
+    int ok = t != NULL && bs_surface_write_obj(s, NULL, 0, &size) == BS_OK &&
+             bs_surface_read_obj(t, size, &err, &back) == BS_OK && surface_same_bits(s, back);
+    bs_surface_destroy(back);
+    back = NULL;
+    ok = ok && parse(t, &err, &back) == BS_OK && surface_same_bits(s, back);
     if (!ok)
         fprintf(stderr, "round trip: %zu:%zu %s\n", err.line, err.column, err.message);
     bs_surface_destroy(back);
@@ -311,6 +317,26 @@ static void test_errors(void)
     expect("v 0 0 0\nv 1 0\0 0\n", BS_ERR_PARSE, 2, 6, "NUL byte");
     bs_parse_error err;
     bs_surface *s = (bs_surface *)&err;
+    /* polygons or curves without any surface: what the text holds, not an empty surface (1.2) */
+    CHECK_STATUS(parse("# mesh\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\nl 1 2\np 1\n", &err, &s), BS_ERR_UNSUPPORTED);
+    CHECKF(s == NULL && err.line == 5 && err.column == 1 &&
+               strcmp(err.message, "no surface (surf) to read, only 2 faces (f), 1 lines (l), 1 points (p)") == 0,
+           "%zu:%zu %s", err.line, err.column, err.message);
+    CHECK_STATUS(parse("v 0 0 0\n  curv 0 1 1 1\nend\n", &err, &s), BS_ERR_UNSUPPORTED);
+    CHECKF(s == NULL && err.line == 2 && err.column == 3 && strstr(err.message, "only 1 curves") != NULL, "%s",
+           err.message);
+    /* vertices and comments only, or polygons beside a surface: read as before */
+    CHECK_STATUS(parse("# nothing\nv 0 0 0\nvn 0 0 1\n", &err, &s), BS_OK);
+    CHECK(s != NULL && bs_surface_count(s) == 0);
+    bs_surface_destroy(s);
+    CHECK_STATUS(parse(V4 "f 1 2 3\ncstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\nend\n", &err, &s), BS_OK);
+    CHECK(s != NULL && bs_surface_count(s) == 1);
+    bs_surface_destroy(s);
+    /* one final NUL is the end of the text (the writer's size counts it); two are an error */
+    CHECK_STATUS(bs_surface_read_obj("v 0 0 0\n\0", 9, &err, &s), BS_OK);
+    bs_surface_destroy(s);
+    CHECK_STATUS(bs_surface_read_obj("v 0 0 0\n\0\0", 10, &err, &s), BS_ERR_PARSE);
+    CHECK(s == NULL && err.line == 2 && err.column == 1);
     CHECK_STATUS(bs_surface_read_obj("v 0 0 0\nv 1 0\0 0\n", 17, &err, &s), BS_ERR_PARSE);
     CHECK(s == NULL && err.line == 2 && err.column == 6);
     CHECK_STATUS(bs_surface_read_obj(V4 "cstype cardinal\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\nend\n", 64, &err, &s),

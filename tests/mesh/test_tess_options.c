@@ -299,7 +299,7 @@ static void errors(void)
     o.method = -1;
     CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv, &nt), BS_ERR_INVALID_ARG);
     bs_tess_options_init(&o);
-    o.flags = 4;
+    o.flags = 8;
     CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_INVALID_ARG);
     bs_tess_options_init(&o);
     CHECK_STATUS(bs_surface_tessellate(flat, &o, &m), BS_ERR_DIMENSION);

@@ -436,7 +436,7 @@ static void errors(void)
         CHECK(nv == 7 && nt == 7);
     }
     o.tolerance = 1e-3;
-    o.flags = 4;
+    o.flags = 8;
     CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_INVALID_ARG);
     o.flags = 0;
     CHECK_STATUS(bs_surface_tessellate(NULL, &o, &m), BS_ERR_INVALID_ARG);

@@ -315,7 +315,7 @@ static void errors(void)
     CHECK_STATUS(bs_surface_tessellate_uniform(flat, 4, 4, 0, &m), BS_ERR_DIMENSION);
     CHECK_STATUS(bs_surface_tessellate_adaptive(flat, 0.1, 0, &m), BS_ERR_DIMENSION);
     CHECK_STATUS(bs_surface_tessellate_adaptive(NULL, 0.1, 0, &m), BS_ERR_INVALID_ARG);
-    CHECK_STATUS(bs_surface_tessellate_adaptive(s, 0.1, 4, &m), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_surface_tessellate_adaptive(s, 0.1, 8, &m), BS_ERR_INVALID_ARG);
     CHECK_STATUS(bs_surface_tessellate_adaptive(s, 0.0, 0, &m), BS_ERR_DOMAIN);
     CHECK_STATUS(bs_surface_tessellate_adaptive(s, -1.0, 0, &m), BS_ERR_DOMAIN);
     CHECK_STATUS(bs_surface_tessellate_adaptive(s, NAN, 0, &m), BS_ERR_DOMAIN);

@@ -139,22 +139,30 @@ static void invalid_rays(const bs_locator *L)
                    !memcmp(&one.u[0], &b.u[k], sizeof(double)),
                "ray %zu alone differs", k);
     }
-    /* a range with a NaN or an infinity: (NaN, 1e30), (0, +Inf), (0, NaN) */
-    double ox[3][3], dx[3][3], g0[3] = {NAN, 0, 0}, g1[3] = {1e30, INFINITY, NAN}, t[3];
-    uint32_t id[3];
-    bs_cview ov[3], dv[3], gv[2] = {{g0, 3, 0}, {g1, 3, 0}};
+    /* ranges with a NaN or an infinity: (NaN, 1e30), (0, NaN), (-Inf, 1e30), (+Inf, +Inf),
+     * (0, -Inf) make the ray invalid; (0, +Inf) and (1, +Inf) have no upper limit (1.2) */
+    double ox[3][7], dx[3][7], t[7], tn[7];
+    double g0[7] = {NAN, 0, -INFINITY, INFINITY, 0, 0, 1}, g1[7] = {1e30, NAN, 1e30, INFINITY, -INFINITY, INFINITY, INFINITY};
+    uint32_t id[7], idn[7];
+    bs_cview ov[3], dv[3], gv[2] = {{g0, 7, 0}, {g1, 7, 0}};
     for (int c = 0; c < 3; c++) {
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 7; k++) {
             ox[c][k] = c == 0 ? 5 : c == 2 ? 1 : 0;
             dx[c][k] = c == 0 ? -1 : 0;
         }
-        ov[c] = (bs_cview){ox[c], 3, 0};
-        dv[c] = (bs_cview){dx[c], 3, 0};
+        ov[c] = (bs_cview){ox[c], 7, 0};
+        dv[c] = (bs_cview){dx[c], 7, 0};
     }
-    bs_view tv = {t, 3, 0};
-    CHECK_STATUS(bs_locator_intersect(L, 3, ov, dv, gv, id, NULL, &tv, NULL), BS_OK);
-    CHECK(id[0] == UINT32_MAX && isnan(t[0]) && id[1] == UINT32_MAX && isnan(t[1]) &&
-          id[2] == UINT32_MAX && isnan(t[2]));
+    bs_view tv = {t, 7, 0}, tnv = {tn, 7, 0};
+    CHECK_STATUS(bs_locator_intersect(L, 7, ov, dv, gv, id, NULL, &tv, NULL), BS_OK);
+    CHECK_STATUS(bs_locator_intersect(L, 7, ov, dv, NULL, idn, NULL, &tnv, NULL), BS_OK);
+    for (int k = 0; k < 5; k++)
+        CHECKF(id[k] == UINT32_MAX && isnan(t[k]), "range (%g, %g): patch %u, t %g", g0[k], g1[k], id[k], t[k]);
+    CHECKF(idn[5] != UINT32_MAX && id[5] == idn[5] && t[5] == tn[5] && id[6] == idn[6] && t[6] == tn[6],
+           "range (0, +Inf): patch %u, t %g; (1, +Inf): patch %u, t %g; no range: patch %u, t %g", id[5], t[5],
+           id[6], t[6], idn[5], tn[5]);
+    CHECK_STATUS(bs_locator_intersect_mt(L, 7, ov, dv, gv, id, NULL, &tv, NULL, 2), BS_OK);
+    CHECK(id[5] == idn[5] && t[5] == tn[5] && id[4] == UINT32_MAX && isnan(t[4]));
 }
 
 /* Rays from very far away, or with huge or tiny directions, end (the rounding of P - o then

@@ -146,6 +146,12 @@ _IO_CLASSES: Dict[int, Type[BezsurfIOError]] = {
 }
 
 
+def with_detail(exc: BezsurfError, detail: str) -> BezsurfError:
+    """``exc`` again (same class, status and function) with ``detail`` saying which argument,
+    which value and which limit: what the bare status cannot tell."""
+    return type(exc)(exc.code, exc.message, exc.function, detail)
+
+
 def io_error(code: int, message: str, function: Optional[str], detail: Optional[str],
              errno: Optional[int], filename: Optional[str]) -> BezsurfIOError:
     """The BezsurfIOError subclass for errno, carrying errno and filename."""

@@ -8,7 +8,7 @@ from . import _args as A
 from . import _buffers as B
 from ._buffers import IdRows, Ids, Points
 from ._enums import Format
-from ._errors import BezsurfIOError, io_error
+from ._errors import BezsurfError, BezsurfIOError, DomainError, SizeError, io_error, with_detail
 from ._handle import Handle
 from ._lib import LIB, CTessOptions
 
@@ -21,6 +21,23 @@ if TYPE_CHECKING:
 FORMATS = {f.name.lower(): f for f in Format}
 
 FormatArg = Union[Format, int, str]
+
+#: Formats of :meth:`Mesh.write` by file extension (lower case), as ``bezsurf tessellate``.
+EXTENSIONS = {".obj": Format.OBJ, ".ply": Format.PLY, ".stl": Format.STL}
+
+
+def format_of_path(path: A.PathArg) -> Format:
+    """The mesh format a file name's extension names (:data:`EXTENSIONS`); ValueError for
+    another one."""
+    ext = os.path.splitext(os.fsdecode(path))[1].lower()
+    try:
+        return EXTENSIONS[ext]
+    except KeyError:
+        known = ", ".join(EXTENSIONS)
+        raise ValueError(f"path {os.fsdecode(path)!r}: unknown mesh extension {ext or '(none)'!r}; "
+                         f"use one of {known} or pass format=") from None
+
+
 OutArray = Optional["npt.NDArray[Any]"]
 
 
@@ -33,6 +50,42 @@ def tess_options(method: int, flags: int, nu: int, nv: int, tolerance: float,
     o.tolerance, o.max_vertices, o.max_triangles = tolerance, max_vertices, max_triangles
     o.threads = threads
     return o
+
+
+#: The tessellators' largest rate per patch and direction (BS_TESS_MAX_RATE).
+TESS_MAX_RATE = 1024
+
+
+def explain_tessellation(exc: BezsurfError, surface: "Surface", method: str, args: Tuple[Any, ...]) -> BezsurfError:
+    """A tessellator's error with the argument, its value and the limit it broke."""
+    if method == "uniform":
+        args = (0, args[2], args[0], args[1], 1e-3, 0, 0)
+    elif method == "adaptive":
+        args = (1, args[1], 16, 16, args[0], 0, 0)
+    kind, flags, nu, nv, tol, max_v, max_t = args[:7]
+    if isinstance(exc, DomainError):
+        for name, rate in (("nu", nu), ("nv", nv)):
+            if kind == 0 and not 1 <= rate <= TESS_MAX_RATE:
+                return with_detail(exc, f"{name} = {rate} segments per patch is outside "
+                                        f"1..{TESS_MAX_RATE} (BS_TESS_MAX_RATE)")
+        if kind != 0:
+            return with_detail(exc, f"tolerance = {tol!r} must be finite and > 0")
+    if isinstance(exc, SizeError):
+        nverts, ntris = ctypes.c_size_t(), ctypes.c_size_t()
+        try:
+            LIB.bs_surface_tessellate_count(surface._ptr, ctypes.byref(
+                tess_options(kind, flags, nu, nv, tol, 0, 0)), ctypes.byref(nverts),
+                ctypes.byref(ntris))
+        except BezsurfError:
+            return exc
+        over = [f"{n} = {limit}" for n, limit, have in (("max_vertices", max_v, nverts.value),
+                                                        ("max_triangles", max_t, ntris.value))
+                if limit and have > limit]
+        return with_detail(exc, f"the mesh would have {nverts.value} vertices and {ntris.value} "
+                                f"triangles, over " + (" and ".join(over) if over else
+                                "the 32-bit index limit (4294967294 vertices, 1431655765 "
+                                "triangles)"))
+    return exc
 
 
 class Mesh(Handle):
@@ -60,15 +113,18 @@ class Mesh(Handle):
     def _tessellate(cls, surface: "Surface", method: str, args: Tuple[Any, ...]) -> "Mesh":
         """Tessellate ``surface`` (a copy the mesh keeps as its recipe)."""
         out = ctypes.c_void_p()
-        if method == "uniform":
-            LIB.bs_surface_tessellate_uniform(surface._ptr, *args, ctypes.byref(out))
-        elif method == "adaptive":
-            LIB.bs_surface_tessellate_adaptive(surface._ptr, *args, ctypes.byref(out))
-        elif method == "options":
-            LIB.bs_surface_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
-                                      ctypes.byref(out))
-        else:
-            raise ValueError(f"unknown tessellation method {method!r}")
+        try:
+            if method == "uniform":
+                LIB.bs_surface_tessellate_uniform(surface._ptr, *args, ctypes.byref(out))
+            elif method == "adaptive":
+                LIB.bs_surface_tessellate_adaptive(surface._ptr, *args, ctypes.byref(out))
+            elif method == "options":
+                LIB.bs_surface_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
+                                          ctypes.byref(out))
+            else:
+                raise ValueError(f"unknown tessellation method {method!r}")
+        except (DomainError, SizeError) as exc:
+            raise explain_tessellation(exc, surface, method, args) from None
         m = cls.__new__(cls)
         m._adopt(out.value)  # type: ignore[arg-type]
         m._recipe = (surface, method, args)
@@ -167,12 +223,15 @@ class Mesh(Handle):
         flat, offsets = idx.result(), start.result()
         return [flat[offsets[k]:offsets[k + 1]] for k in range(nstart - 1)]
 
-    def write(self, path: A.PathArg, format: FormatArg = Format.OBJ) -> None:
+    def write(self, path: A.PathArg, format: Optional[FormatArg] = None) -> None:
         """Write the mesh to a file: Format.OBJ ("obj", Wavefront OBJ), Format.PLY ("ply",
         binary little-endian), Format.PLY_ASCII ("ply_ascii") or Format.STL ("stl", binary).
-        Raises BezsurfIOError (an OSError with ``errno`` and ``filename``) on failure."""
-        fmt = A.mesh_format(format)
+        Without ``format``, the format follows the file's extension as ``bezsurf tessellate``
+        does: .obj, .ply (binary) or .stl, in any case; another extension raises ValueError
+        (1.2: 1.1 wrote OBJ whatever the name). Raises BezsurfIOError (an OSError with
+        ``errno`` and ``filename``) on failure."""
         name = A.path(path)
+        fmt = format_of_path(name) if format is None else A.mesh_format(format)
         ctypes.set_errno(0)
         try:
             LIB.bs_mesh_write(self._ptr, fmt, name)

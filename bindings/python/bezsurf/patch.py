@@ -9,6 +9,7 @@ from . import _args as A
 from . import _buffers as B
 from ._buffers import KindOrKinds, Point, PointOrPoints, Points
 from ._enums import CurvatureKind, Direction, NormalKind
+from ._errors import DegreeError, DimensionError, with_detail
 from ._handle import Handle
 from ._lib import LIB, CCurve
 
@@ -102,6 +103,10 @@ def _squeeze(value: Any) -> Any:
     return value[0]
 
 
+_MAX_DEGREE = 64  # BS_MAX_DEGREE
+_MAX_DIM = 8      # BS_MAX_DIM
+
+
 class Patch(Handle):
     """A rectangular tensor-product Bezier patch (immutable).
 
@@ -133,7 +138,14 @@ class Patch(Handle):
     def __init__(self, net: Nested, weights: Optional[Nested] = None) -> None:
         rows, cols, dim, keep, ctrl, w = B.flat_net(net, weights)
         handle = ctypes.c_void_p()
-        LIB.bs_patch_create(rows - 1, cols - 1, dim, ctrl, w, ctypes.byref(handle))
+        try:
+            LIB.bs_patch_create(rows - 1, cols - 1, dim, ctrl, w, ctypes.byref(handle))
+        except DegreeError as exc:
+            raise with_detail(exc, f"a net of {rows} x {cols} points has degrees {rows - 1} x "
+                                   f"{cols - 1}, above the limit {_MAX_DEGREE} (BS_MAX_DEGREE)") from None
+        except DimensionError as exc:
+            raise with_detail(exc, f"points of dimension {dim}, outside 1..{_MAX_DIM} "
+                                   f"(BS_MAX_DIM)") from None
         del keep
         self._adopt(handle.value)  # type: ignore[arg-type]
 
@@ -467,7 +479,11 @@ class Patch(Handle):
         ru = A.integer(raise_u, "raise_u")
         rv = A.integer(raise_v, "raise_v")
         out = ctypes.c_void_p()
-        LIB.bs_patch_elevate(self._ptr, ru, rv, ctypes.byref(out))
+        try:
+            LIB.bs_patch_elevate(self._ptr, ru, rv, ctypes.byref(out))
+        except DegreeError as exc:
+            raise with_detail(exc, f"degrees {self.degree_u} + {ru} x {self.degree_v} + {rv} would "
+                                   f"be above the limit {_MAX_DEGREE} (BS_MAX_DEGREE)") from None
         return Patch._wrap(out.value)
 
     def derivative(self, ku: int, kv: int) -> "Patch":

@@ -2,7 +2,7 @@
 and ray intersection over a whole surface)."""
 
 import ctypes
-import sys
+import math
 from typing import TYPE_CHECKING, Any, Dict, NamedTuple, Optional, Tuple
 
 from . import _args as A
@@ -124,8 +124,9 @@ class Locator(Handle):
     def intersect(self, origins: Any, directions: Any, t_min: Optional[Any] = None,
                   t_max: Optional[Any] = None, *, threads: int = 1) -> RayHits:
         """The first hit of each ray o + t d with t in [t_min, t_max] (default (0, inf); either
-        bound may be one number or n numbers, finite: an infinite bound makes the ray invalid,
-        t NaN). 3-D surfaces only. ``threads`` threads trace the rays (0: one per CPU; since
+        bound may be one number or n numbers; t_min finite, t_max finite or ``inf`` for no
+        limit (since 1.2); a NaN or another infinite bound makes the ray invalid, t NaN). 3-D
+        surfaces only. ``threads`` threads trace the rays (0: one per CPU; since
         1.1), with the same results."""
         threads = A.integer(threads, "threads")
         org = B.PointsIn(origins, 3, "origins")
@@ -138,8 +139,8 @@ class Locator(Handle):
         keep = []
         if t_min is not None or t_max is not None:
             trange = (CView * 2)()
-            # the library takes finite bounds only (an infinite one makes the ray invalid)
-            for i, (bound, default) in enumerate(((t_min, 0.0), (t_max, sys.float_info.max))):
+            # t_max = inf is "no limit" (1.2)
+            for i, (bound, default) in enumerate(((t_min, 0.0), (t_max, math.inf))):
                 value = default if bound is None else bound
                 if B.is_scalar(value):
                     value = [A.real(value, "t_min" if i == 0 else "t_max")] * max(n, 1)

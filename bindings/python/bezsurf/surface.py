@@ -10,11 +10,12 @@ from . import _args as A
 from . import _buffers as B
 from ._buffers import Point, PointOrPoints, Points
 from ._enums import SIDES, Side, TessMethod
-from ._errors import BezsurfError, BezsurfIOError, ParseError, UnsupportedError, io_error
+from ._errors import (BezsurfError, BezsurfIOError, DomainError, InvalidArgumentError,
+                      ParseError, UnsupportedError, io_error, with_detail)
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
-from .mesh import Mesh, tess_options
+from .mesh import Mesh, explain_tessellation, tess_options
 from .query import Locator
 from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
 
@@ -66,6 +67,25 @@ def builtin_names() -> List[str]:
         if name is None:
             return names
         names.append(name.decode("ascii"))
+
+
+#: Surface file formats by extension (lower case), as the ``bezsurf`` tool reads them.
+_SURFACE_EXTENSIONS = {".bpt": "bpt", ".obj": "obj", ".igs": "iges", ".iges": "iges"}
+
+
+def _surface_format(path: Any, format: Optional[str], default: str) -> str:
+    """The format named by ``format`` ("bpt", "obj", "iges", "igs"), else by the extension of
+    ``path``, else ``default``."""
+    if format is None:
+        try:
+            ext = os.path.splitext(os.fsdecode(path))[1].lower()
+        except TypeError:
+            raise TypeError(f"path must be a str, bytes or os.PathLike, not "
+                            f"{type(path).__name__}") from None
+        return _SURFACE_EXTENSIONS.get(ext, default)
+    if not isinstance(format, str) or format.lower() not in ("bpt", "obj", "iges", "igs"):
+        raise ValueError(f"format must be one of 'bpt', 'obj', 'iges', not {format!r}")
+    return "iges" if format.lower() == "igs" else format.lower()
 
 
 def _located(exc: BezsurfError, err: CParseError, filename: Optional[str] = None) -> BezsurfError:
@@ -122,7 +142,12 @@ class Surface(Handle):
         if not isinstance(name, str):
             raise TypeError(f"name must be a str, not {type(name).__name__}")
         out = ctypes.c_void_p()
-        LIB.bs_surface_create_builtin(name.encode("utf-8"), ctypes.byref(out))
+        try:
+            LIB.bs_surface_create_builtin(name.encode("utf-8"), ctypes.byref(out))
+        except InvalidArgumentError as exc:
+            names = ", ".join(builtin_names())
+            raise with_detail(exc, f"name {name!r} is not a built-in surface (names are "
+                                   f"case-sensitive: {names})") from None
         return cls._wrap(out.value)
 
     @classmethod
@@ -179,20 +204,34 @@ class Surface(Handle):
         return cls._read_text(LIB.bs_surface_read_bpt, text)
 
     @classmethod
-    def load(cls, path: A.PathArg) -> "Surface":
-        """Read a .bpt file. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``,
-        e.g. a FileNotFoundError) when it cannot be read and ParseError (with line, column and
+    def load(cls, path: A.PathArg, format: Optional[str] = None) -> "Surface":
+        """Read a surface file in the format its extension names, as the ``bezsurf`` tool does:
+        .obj (:meth:`load_obj`), .igs or .iges (:meth:`load_iges`), any other .bpt; ``format``
+        ("bpt", "obj", "iges" or "igs") overrides the extension (1.2: 1.1 read .bpt whatever
+        the name). Raises BezsurfIOError (an OSError with ``errno`` and ``filename``, e.g. a
+        FileNotFoundError) when it cannot be read and ParseError (with line, column and
         filename) when it is malformed."""
-        return cls._read_file(LIB.bs_surface_read_bpt_file, path)
+        fmt = _surface_format(path, format, "bpt")
+        reader = {"bpt": LIB.bs_surface_read_bpt_file, "obj": LIB.bs_surface_read_obj_file,
+                  "iges": LIB.bs_surface_read_iges_file}[fmt]
+        return cls._read_file(reader, path)
 
     def to_bpt(self) -> str:
         """The surface as .bpt text; numbers read back bit for bit (3-D patches only)."""
         return self._write_text(LIB.bs_surface_write_bpt)
 
-    def save(self, path: A.PathArg) -> None:
-        """Write the surface as a .bpt file (created or truncated). Raises BezsurfIOError (an
-        OSError with ``errno`` and ``filename``) when the file cannot be written."""
-        self._write_file(LIB.bs_surface_write_bpt_file, path)
+    def save(self, path: A.PathArg, format: Optional[str] = None) -> None:
+        """Write the surface file (created or truncated) in the format its extension names, as
+        the ``bezsurf`` tool does: .obj (:meth:`save_obj`), any other .bpt; ``format`` ("bpt"
+        or "obj") overrides it; IGES is read only (ValueError). 1.1 wrote .bpt whatever the
+        name. Raises BezsurfIOError (an OSError with ``errno`` and ``filename``) when the file
+        cannot be written."""
+        fmt = _surface_format(path, format, "bpt")
+        if fmt == "iges":
+            raise ValueError(f"path {os.fsdecode(path)!r}: IGES is read, not written; "
+                             f"use format='bpt' or 'obj'")
+        self._write_file(LIB.bs_surface_write_obj_file if fmt == "obj"
+                         else LIB.bs_surface_write_bpt_file, path)
 
     @classmethod
     def read_obj(cls, text: Union[str, bytes]) -> "Surface":
@@ -366,20 +405,34 @@ class Surface(Handle):
             nrm = call.output(3, normal_out, "normal_out")
             kinds = call.kinds(kind_out)
         call.check_disjoint()
-        if normals:  # first, so that a failure leaves every output untouched
-            assert nrm is not None and kinds is not None
-            LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
-                                       None if derivatives else pos.views, nrm.views,
-                                       kinds.address)
-        if derivatives or not normals:
-            LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
-                                   dus.views if dus else None, dvs.views if dvs else None,
-                                   threads)
+        try:
+            if normals:  # first, so that a failure leaves every output untouched
+                assert nrm is not None and kinds is not None
+                LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
+                                           None if derivatives else pos.views, nrm.views,
+                                           kinds.address)
+            if derivatives or not normals:
+                LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
+                                       dus.views if dus else None, dvs.views if dvs else None,
+                                       threads)
+        except InvalidArgumentError as exc:
+            raise self._bad_id(exc, id_addr, nid) from None
         del keep
         if not derivatives and not normals:
             return call.finish(pos.result())
         return Evaluation(*(call.finish(x.result() if x is not None else None)
                             for x in (pos, dus, dvs, nrm, kinds)))
+
+    def _bad_id(self, exc: InvalidArgumentError, id_addr: int, nid: int) -> BezsurfError:
+        """``exc`` naming the first id that is not a patch of this surface, if one is not."""
+        count = len(self)
+        ids: List[int] = list((ctypes.c_uint32 * nid).from_address(id_addr)) if nid else []
+        for k, i in enumerate(ids):
+            if i >= count:
+                limit = f"0..{count - 1}" if count else "none: the surface is empty"
+                return with_detail(exc, f"ids[{k}] = {i} is not a patch of this surface "
+                                        f"(patch ids {limit})")
+        return exc
 
     def eval_normal(self, ids: Ids, u: Params, v: Params, *, out: OutArray = None,
                     normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
@@ -413,14 +466,17 @@ class Surface(Handle):
 
     # ---- tessellation --------------------------------------------------------------------------
     def tessellate(self, nu: int, nv: Optional[int] = None, *, strips: bool = False,
-                   max_vertices: int = 0, max_triangles: int = 0, threads: int = 1) -> Mesh:
+                   max_vertices: int = 0, max_triangles: int = 0, threads: int = 1,
+                   reverse: bool = False) -> Mesh:
         """A crack-free triangle mesh with nu x nv segments per patch (nv defaults to nu);
         ``strips`` also builds triangle strips. ``max_vertices`` and ``max_triangles`` (0: no
         limit) are budgets: a larger mesh raises SizeError before anything large is allocated.
         ``threads`` threads sample the vertices (0: one per CPU; since 1.1); the mesh is the same
-        bit for bit whatever their number."""
+        bit for bit whatever their number. ``reverse`` (since 1.2, BS_TESS_REVERSE) reverses the
+        triangles' winding and negates the normals: the built-in teapot's patches face into the
+        pot, ``reverse=True`` makes its mesh face outwards."""
         args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, max_vertices,
-                               max_triangles, threads)
+                               max_triangles, threads, reverse)
         if not (max_vertices or max_triangles) and args[7] == 1:
             return Mesh._tessellate(self.clone(), "uniform", (args[2], args[3], args[1]))
         return Mesh._tessellate(self.clone(), "options", args)
@@ -428,43 +484,50 @@ class Surface(Handle):
     def tessellate_adaptive(self, tolerance: float, *, relative: bool = False,
                             strips: bool = False, subdivide: bool = False,
                             max_vertices: int = 0, max_triangles: int = 0,
-                            threads: int = 1) -> Mesh:
+                            threads: int = 1, reverse: bool = False) -> Mesh:
         """A crack-free mesh whose triangles lie within ``tolerance`` of the surface (a distance,
         or with ``relative`` a fraction of the control points' bounding-box diagonal). One
         segment count per patch, or with ``subdivide`` a quadtree of sub-patches refined only
-        where the surface curves (since 1.1). Budgets and threads as in :meth:`tessellate`."""
+        where the surface curves (since 1.1). Budgets, threads and ``reverse`` as in
+        :meth:`tessellate`."""
         method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
         args = self._tess_args(method, 16, 16, tolerance, relative, strips, max_vertices,
-                               max_triangles, threads)
+                               max_triangles, threads, reverse)
         if method == TessMethod.PER_PATCH and not (max_vertices or max_triangles) and args[7] == 1:
             return Mesh._tessellate(self.clone(), "adaptive", (args[4], args[1]))
         return Mesh._tessellate(self.clone(), "options", args)
 
     def tessellate_count(self, nu: Optional[int] = None, nv: Optional[int] = None, *,
                          tolerance: Optional[float] = None, relative: bool = False,
-                         strips: bool = False, subdivide: bool = False) -> Tuple[int, int]:
+                         strips: bool = False, subdivide: bool = False,
+                         reverse: bool = False) -> Tuple[int, int]:
         """(vertices, triangles) of the mesh :meth:`tessellate` (nu, nv) or
         :meth:`tessellate_adaptive` (tolerance) would make, computed without building it."""
         if (nu is None) == (tolerance is None):
             raise ValueError("give either nu (uniform) or tolerance (adaptive)")
         if nu is not None:
-            args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, 0, 0)
+            args = self._tess_args(TessMethod.UNIFORM, nu, nv, 1e-3, False, strips, 0, 0, 1,
+                                   reverse)
         else:
             method = TessMethod.SUBDIVIDE if subdivide else TessMethod.PER_PATCH
-            args = self._tess_args(method, 16, 16, tolerance, relative, strips, 0, 0)
+            args = self._tess_args(method, 16, 16, tolerance, relative, strips, 0, 0, 1, reverse)
         nverts = ctypes.c_size_t()
         ntris = ctypes.c_size_t()
-        LIB.bs_surface_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
-                                        ctypes.byref(nverts), ctypes.byref(ntris))
+        try:
+            LIB.bs_surface_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
+                                            ctypes.byref(nverts), ctypes.byref(ntris))
+        except DomainError as exc:
+            raise explain_tessellation(exc, self, "options", args) from None
         return int(nverts.value), int(ntris.value)
 
     @staticmethod
     def _tess_args(method: int, nu: Any, nv: Any, tolerance: Any, relative: bool, strips: bool,
-                   max_vertices: Any, max_triangles: Any, threads: Any = 1) -> Tuple[Any, ...]:
+                   max_vertices: Any, max_triangles: Any, threads: Any = 1,
+                   reverse: bool = False) -> Tuple[Any, ...]:
         """The checked fields of a bs_tess_options, in the order tess_options() takes them."""
         nu = A.integer(nu, "nu")
         nv = nu if nv is None else A.integer(nv, "nv")
-        flags = (1 if relative else 0) | (2 if strips else 0)
+        flags = (1 if relative else 0) | (2 if strips else 0) | (4 if reverse else 0)
         return (int(method), flags, nu, nv, A.real(tolerance, "tolerance"),
                 A.integer(max_vertices, "max_vertices"), A.integer(max_triangles, "max_triangles"),
                 A.integer(threads, "threads"))

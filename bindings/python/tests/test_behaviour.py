@@ -149,7 +149,7 @@ class ArgumentErrorTest(unittest.TestCase):
             ("patch", lambda: s.add(NET)), ("name", lambda: bezsurf.Surface.builtin(3)),
             ("text", lambda: bezsurf.Surface.from_bpt(3)), ("path", lambda: s.save(3)),
             ("path", lambda: bezsurf.Surface.load(None)), ("path", lambda: m.write(1.5)),
-            ("format", lambda: m.to_bytes(1.5)), ("format", lambda: m.write("x.obj", None)),
+            ("format", lambda: m.to_bytes(1.5)), ("format", lambda: m.write("x.obj", 1.5)),
             ("u", lambda: p.eval("abc", [0.5])), ("v", lambda: p.eval([0.5], [None])),
             ("u", lambda: p.eval_grid({"a": 1}, [0.5])), ("ids", lambda: s.eval("0", 0.5, 0.5)),
             ("ids", lambda: s.eval([0.5], [0.5], [0.5])), ("code", lambda: bezsurf.status_string("x")),
@@ -200,6 +200,51 @@ class ArgumentErrorTest(unittest.TestCase):
         with self.assertRaises(ValueError) as cm:
             bezsurf.Patch.ruled(bezsurf.Curve([[0, 0, 0], [1, 0, 0]], [1]), [[0, 1, 0], [1, 1, 0]])
         self.assertIn("c0.weights", str(cm.exception))
+
+
+class LibraryErrorDetailTest(unittest.TestCase):
+    """Errors of the library's calls name the argument, its value and the limit it broke."""
+
+    def test_unknown_builtin_lists_the_names(self):
+        with self.assertRaises(bezsurf.InvalidArgumentError) as cm:
+            bezsurf.Surface.builtin("kettle")
+        self.assertIn("'kettle' is not a built-in surface", str(cm.exception))
+        self.assertIn("teapot, teacup, teaspoon", str(cm.exception))
+
+    def test_patch_id_out_of_range(self):
+        pot = bezsurf.Surface.builtin("teapot")
+        for call in (lambda: pot.eval([0, 32], [0.5, 0.5], [0.5, 0.5]),
+                     lambda: pot.eval([32], [0.5], [0.5], normals=True),
+                     lambda: pot.eval_normal([1, 2, 40], [0.5] * 3, [0.5] * 3)):
+            with self.assertRaises(bezsurf.InvalidArgumentError) as cm:
+                call()
+            self.assertRegex(str(cm.exception), r"ids\[\d\] = (32|40) is not a patch of this "
+                                                r"surface \(patch ids 0\.\.31\)")
+
+    def test_rates_tolerances_and_budgets(self):
+        pot = bezsurf.Surface.builtin("teapot")
+        for call, text in ((lambda: pot.tessellate(0), "nu = 0 segments per patch is outside 1..1024"),
+                           (lambda: pot.tessellate(4, 2000, strips=True), "nv = 2000"),
+                           (lambda: pot.tessellate(4, 2000, threads=2), "nv = 2000"),
+                           (lambda: pot.tessellate_count(1025), "nu = 1025"),
+                           (lambda: pot.tessellate_adaptive(-1.0), "tolerance = -1.0 must be")):
+            with self.assertRaises(bezsurf.DomainError) as cm:
+                call()
+            self.assertIn(text, str(cm.exception))
+        with self.assertRaises(bezsurf.SizeError) as cm:
+            pot.tessellate(16, max_triangles=1000)
+        self.assertIn("the mesh would have 8258 vertices and 16256 triangles, over "
+                      "max_triangles = 1000", str(cm.exception))
+
+    def test_degree_limit(self):
+        net = [[[i, j, 0.0] for j in range(2)] for i in range(66)]
+        with self.assertRaises(bezsurf.DegreeError) as cm:
+            bezsurf.Patch(net)
+        self.assertIn("degrees 65 x 1, above the limit 64", str(cm.exception))
+        p = bezsurf.Patch([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]])
+        with self.assertRaises(bezsurf.DegreeError) as cm:
+            p.elevate(64, 0)
+        self.assertIn("degrees 1 + 64 x 1 + 0 would be above the limit 64", str(cm.exception))
 
 
 class IOErrorTest(unittest.TestCase):

@@ -58,6 +58,31 @@ class BptTest(PlainTestCase):
             s.save(path)
             self.assertEqual(bezsurf.Surface.load(path)[0].ctrl, s[0].ctrl)
 
+    def test_load_and_save_by_extension(self):
+        # as the tool: .obj and .igs/.iges by their readers, any other name .bpt; format= wins
+        pot = bezsurf.Surface.builtin("teapot")
+        iges = DATA_DIR.parent / "tests" / "io" / "data" / "iges" / "nurbs_cylinder.igs"
+        self.assertEqual(len(bezsurf.Surface.load(iges)), len(bezsurf.Surface.load_iges(iges)))
+        with tempfile.TemporaryDirectory() as d:
+            for name, text in (("p.obj", pot.to_obj()), ("p.OBJ", pot.to_obj()),
+                               ("p.bpt", pot.to_bpt()), ("p.txt", pot.to_bpt())):
+                path = os.path.join(d, name)
+                pot.save(path)
+                with open(path) as f:
+                    self.assertEqual(f.read(), text, name)
+                self.assertEqual(bezsurf.Surface.load(path).to_bpt(), pot.to_bpt(), name)
+            path = os.path.join(d, "p.dat")
+            pot.save(path, format="obj")
+            with open(path) as f:
+                self.assertEqual(f.read(), pot.to_obj())
+            self.assertEqual(bezsurf.Surface.load(path, format="obj").to_bpt(), pot.to_bpt())
+            with self.assertRaises(bezsurf.ParseError):
+                bezsurf.Surface.load(path)  # .dat: read as .bpt
+            with self.assertRaisesRegex(ValueError, "IGES is read, not written"):
+                pot.save(os.path.join(d, "p.igs"))
+            with self.assertRaisesRegex(ValueError, "format must be one of"):
+                bezsurf.Surface.load(path, format="step")
+
     def test_parse_error_location(self):
         with self.assertRaises(bezsurf.ParseError) as cm:
             bezsurf.Surface.from_bpt("1\n1 1\n0 0 0\n0 x 0\n1 0 0\n1 1 1\n")

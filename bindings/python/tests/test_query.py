@@ -100,6 +100,14 @@ class LocatorTest(PlainTestCase):
         self.assertTrue(math.isnan(plain(hits.t)[2]))
         short = self.loc.intersect((0, 0, 100.0), (0, 0, -1.0), t_max=1.0)   # one ray
         self.assertEqual(short.patch, bezsurf.NO_PATCH)
+        # t_max = inf is "no limit" (1.2): the hit of the default range, not an invalid ray
+        free = self.loc.intersect((0, 0, 100.0), (0, 0, -1.0))
+        for t_min, t_max in ((None, math.inf), (0.0, math.inf), (1.0, [math.inf])):
+            hit = self.loc.intersect([(0, 0, 100.0)], [(0, 0, -1.0)], t_min=t_min, t_max=t_max)
+            self.assertEqual(plain(hit.patch)[0], free.patch)
+            self.assertEqual(plain(hit.t)[0], free.t)
+        bad = self.loc.intersect((0, 0, 100.0), (0, 0, -1.0), t_min=-math.inf, t_max=math.inf)
+        self.assertTrue(math.isnan(bad.t))
         with self.assertRaises(ValueError):
             self.loc.intersect([(0, 0, 1.0)], [(0, 0, 1.0), (0, 0, 1.0)])
 

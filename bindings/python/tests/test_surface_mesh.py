@@ -130,6 +130,28 @@ class MeshTest(PlainTestCase):
             want.add(t[k:] + t[:k])
         self.assertEqual(tris, want)
 
+    def test_reverse_faces_the_teapot_outwards(self):
+        pot = bezsurf.Surface.builtin("teapot")
+
+        def volume(m):
+            p = plain(m.positions())
+            v = 0.0
+            for a, b, c in plain(m.triangles()):
+                (x0, y0, z0), (x1, y1, z1), (x2, y2, z2) = p[a], p[b], p[c]
+                v += x0 * (y1 * z2 - z1 * y2) - y0 * (x1 * z2 - z1 * x2) + z0 * (x1 * y2 - y1 * x2)
+            return v / 6
+
+        for make in (lambda **k: pot.tessellate(4, **k),
+                     lambda **k: pot.tessellate_adaptive(0.01, relative=True, subdivide=True, **k)):
+            m, r = make(), make(reverse=True)
+            self.assertLess(volume(m), -24.0)  # the patches face into the pot
+            self.assertGreater(volume(r), 24.0)
+            self.assertEqual(plain(r.positions()), plain(m.positions()))
+            self.assertEqual(plain(r.triangles()), [(a, c, b) for a, b, c in plain(m.triangles())])
+            self.assertEqual(plain(r.normals()),
+                             [(-x, -y, -z) for x, y, z in plain(m.normals())])
+        self.assertEqual(pot.tessellate_count(3, reverse=True), pot.tessellate_count(3))
+
     def test_export(self):
         m = bezsurf.Surface([square(0)]).tessellate(1)
         obj = m.to_bytes("obj").decode()
@@ -145,6 +167,18 @@ class MeshTest(PlainTestCase):
             m.write(path, "stl")
             with open(path, "rb") as f:
                 self.assertEqual(f.read(), stl)
+            # without a format, the extension's (any case), as `bezsurf tessellate`
+            for name, fmt in (("a.ply", "ply"), ("b.PLY", "ply"), ("c.obj", "obj"), ("d.Stl", "stl")):
+                m.write(os.path.join(d, name))
+                with open(os.path.join(d, name), "rb") as f:
+                    self.assertEqual(f.read(), m.to_bytes(fmt), name)
+            for name in ("e.txt", "noext", "f.ply.gz"):
+                with self.assertRaisesRegex(ValueError, "unknown mesh extension"):
+                    m.write(os.path.join(d, name))
+                self.assertFalse(os.path.exists(os.path.join(d, name)))
+            m.write(os.path.join(d, "g.txt"), "ply_ascii")  # an explicit format wins
+            with open(os.path.join(d, "g.txt"), "rb") as f:
+                self.assertEqual(f.read(), m.to_bytes("ply_ascii"))
         with self.assertRaises(ValueError):
             m.to_bytes("dxf")
         with self.assertRaises(bezsurf.InvalidArgumentError):

@@ -2,6 +2,7 @@
 
 use std::ffi::CStr;
 use std::fmt;
+use std::path::{Path, PathBuf};
 
 use crate::sys;
 
@@ -64,12 +65,13 @@ pub struct Error {
     argument: Option<&'static str>,
     position: Option<(usize, usize)>,
     detail: Option<String>,
+    path: Option<PathBuf>,
 }
 
 impl Error {
     /// The error for a status code, with its text from `bs_status_string`.
     pub fn from_code(code: i32) -> Error {
-        Error { code, message: status_string(code), argument: None, position: None, detail: None }
+        Error { code, message: status_string(code), argument: None, position: None, detail: None, path: None }
     }
 
     /// The error for a status code caused by the argument `name`, with an explanation.
@@ -84,6 +86,12 @@ impl Error {
         self
     }
 
+    /// This error, about the file `path` (readers and writers of files).
+    pub(crate) fn with_path(mut self, path: &Path) -> Error {
+        self.path = Some(path.to_path_buf());
+        self
+    }
+
     /// The error for a status code with what a reader reported in its `bs_parse_error`.
     pub(crate) fn with_parse_error(code: i32, err: &sys::bs_parse_error) -> Error {
         let mut e = Error::from_code(code);
@@ -95,6 +103,11 @@ impl Error {
             e.detail = Some(String::from_utf8_lossy(&bytes).into_owned());
         }
         e
+    }
+
+    /// The file a reader or writer of files failed on (since 1.2).
+    pub fn path(&self) -> Option<&Path> {
+        self.path.as_deref()
     }
 
     /// For parse errors: the 1-based line and byte column of the first error.
@@ -146,6 +159,9 @@ impl Error {
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.message)?;
+        if let Some(path) = &self.path {
+            write!(f, ": {}", path.display())?;
+        }
         if let Some(name) = self.argument {
             write!(f, ": argument `{name}`")?;
             if let Some(detail) = &self.detail {

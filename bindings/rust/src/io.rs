@@ -75,9 +75,9 @@ fn read_text(reader: TextReader, text: &[u8]) -> Result<Surface> {
 }
 
 fn read_file(reader: FileReader, path: &Path) -> Result<Surface> {
-    let path = c_path(path)?;
-    // SAFETY: path is NUL-terminated; err and out are valid.
-    read_with(|err, out| unsafe { reader(path.as_ptr(), err, out) })
+    let cpath = c_path(path)?;
+    // SAFETY: cpath is NUL-terminated; err and out are valid.
+    read_with(|err, out| unsafe { reader(cpath.as_ptr(), err, out) }).map_err(|e| e.with_path(path))
 }
 
 impl Surface {
@@ -94,9 +94,9 @@ impl Surface {
     }
 
     fn write_file(&self, writer: FileWriter, path: &Path) -> Result<()> {
-        let path = c_path(path)?;
-        // SAFETY: self is live; path is NUL-terminated.
-        check(unsafe { writer(self.as_ptr(), path.as_ptr()) })
+        let cpath = c_path(path)?;
+        // SAFETY: self is live; cpath is NUL-terminated.
+        check(unsafe { writer(self.as_ptr(), cpath.as_ptr()) }).map_err(|e| e.with_path(path))
     }
 
     /// Parses .bpt text (`bs_surface_read_bpt`) into a surface of 3-D patches. `Parse` errors
@@ -185,6 +185,7 @@ impl Surface {
     /// One of the built-in surfaces (`bs_surface_create_builtin`): "teapot", "teacup" or
     /// "teaspoon" (see [`builtin_names`]). An unknown name is `InvalidArg`.
     pub fn builtin(name: &str) -> Result<Surface> {
+        let given = name;
         let name = CString::new(name).map_err(|e| {
             Error::argument_error(
                 sys::BS_ERR_INVALID_ARG,
@@ -194,7 +195,18 @@ impl Surface {
         })?;
         let mut out = ptr::null_mut();
         // SAFETY: name is NUL-terminated; out is valid.
-        check(unsafe { sys::bs_surface_create_builtin(name.as_ptr(), &mut out) })?;
+        check(unsafe { sys::bs_surface_create_builtin(name.as_ptr(), &mut out) }).map_err(|e| {
+            if e.kind() != crate::ErrorKind::InvalidArg {
+                return e;
+            }
+            e.with_argument(
+                "name",
+                format!(
+                    "{given:?} is not a built-in surface (names are case-sensitive: {})",
+                    builtin_names().join(", ")
+                ),
+            )
+        })?;
         // SAFETY: on success out is a new surface that we now own.
         Ok(unsafe { Surface::from_raw(out) })
     }

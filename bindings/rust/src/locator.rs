@@ -54,15 +54,16 @@ pub struct Ray {
     pub dir: [f64; 3],
     /// Smallest t accepted.
     pub t_min: f64,
-    /// Largest t accepted (finite).
+    /// Largest t accepted: finite, or `f64::INFINITY` for no limit (since 1.2).
     pub t_max: f64,
 }
 
 impl Ray {
-    /// The ray from `origin` along `dir` with t in [0, `f64::MAX`] (the range must be finite:
-    /// an infinite bound makes the ray invalid, a miss with t NaN).
+    /// The ray from `origin` along `dir` with t in [0, +inf) (`t_max` = `f64::INFINITY`: no
+    /// limit, since 1.2; a NaN bound, an infinite `t_min` or a `t_max` of -inf makes the ray
+    /// invalid, a miss with t NaN).
     pub fn new(origin: [f64; 3], dir: [f64; 3]) -> Ray {
-        Ray { origin, dir, t_min: 0.0, t_max: f64::MAX }
+        Ray { origin, dir, t_min: 0.0, t_max: f64::INFINITY }
     }
 }
 

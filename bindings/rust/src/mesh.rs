@@ -24,6 +24,10 @@ impl TessFlags {
     pub const RELATIVE: TessFlags = TessFlags(sys::BS_TESS_RELATIVE);
     /// Also build triangle strips (`BS_TESS_STRIPS`).
     pub const STRIPS: TessFlags = TessFlags(sys::BS_TESS_STRIPS);
+    /// Face the mesh the other way: every triangle's winding reversed and every normal negated
+    /// (`BS_TESS_REVERSE`, since 1.2). The built-in teapot's patches face into the pot; with
+    /// this flag its mesh faces outwards.
+    pub const REVERSE: TessFlags = TessFlags(sys::BS_TESS_REVERSE);
 
     /// The C flag bits.
     pub fn bits(self) -> i32 {
@@ -112,7 +116,7 @@ impl TessOptions {
         self
     }
 
-    /// [`TessFlags::RELATIVE`] and/or [`TessFlags::STRIPS`].
+    /// [`TessFlags::RELATIVE`], [`TessFlags::STRIPS`] and/or [`TessFlags::REVERSE`].
     pub fn flags(mut self, flags: TessFlags) -> TessOptions {
         self.flags = flags;
         self
@@ -187,6 +191,36 @@ impl From<MeshFormat> for i32 {
 }
 
 impl MeshFormat {
+    /// The format a file name's extension names, as `bezsurf tessellate` reads it: `.obj`,
+    /// `.ply` (binary) or `.stl`, in any case. Another extension, or none, is an `InvalidArg`
+    /// error naming the path.
+    ///
+    /// ```
+    /// use bezsurf::MeshFormat;
+    ///
+    /// assert_eq!(MeshFormat::from_path("pot.PLY")?, MeshFormat::Ply);
+    /// assert!(MeshFormat::from_path("pot.txt").is_err());
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn from_path(path: impl AsRef<Path>) -> Result<MeshFormat> {
+        let path = path.as_ref();
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("obj") => Ok(MeshFormat::Obj),
+            Some("ply") => Ok(MeshFormat::Ply),
+            Some("stl") => Ok(MeshFormat::Stl),
+            _ => Err(Error::argument_error(
+                sys::BS_ERR_INVALID_ARG,
+                "path",
+                format!(
+                    "{}: unknown mesh extension {}; use .obj, .ply or .stl, or Mesh::write with a MeshFormat",
+                    path.display(),
+                    ext.map_or_else(|| "(none)".to_string(), |e| format!(".{e}"))
+                ),
+            )),
+        }
+    }
+
     fn raw(self) -> i32 {
         match self {
             MeshFormat::Obj => sys::BS_MESH_OBJ,
@@ -264,6 +298,7 @@ impl Surface {
     pub fn tessellate_uniform(&self, nu: usize, nv: usize, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_uniform(self.as_ptr(), nu, nv, flags.0, out) })
+            .map_err(|e| self.explain_tess(e, &TessOptions::new(TessMethod::Uniform { nu, nv }).flags(flags)))
     }
 
     /// Tessellates a 3-D surface so that every triangle lies within `tolerance` of the surface
@@ -285,6 +320,51 @@ impl Surface {
     pub fn tessellate_adaptive(&self, tolerance: f64, flags: TessFlags) -> Result<Mesh> {
         // SAFETY: self is live; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate_adaptive(self.as_ptr(), tolerance, flags.0, out) })
+            .map_err(|e| {
+                self.explain_tess(
+                    e,
+                    &TessOptions::new(TessMethod::PerPatch).tolerance(tolerance).flags(flags),
+                )
+            })
+    }
+
+    /// A tessellator's error naming the argument, its value and the limit it broke.
+    fn explain_tess(&self, e: Error, o: &TessOptions) -> Error {
+        match (e.kind(), o.method) {
+            (ErrorKind::Domain, TessMethod::Uniform { nu, nv }) => {
+                match [("nu", nu), ("nv", nv)].into_iter().find(|&(_, r)| r == 0 || r > TESS_MAX_RATE) {
+                    Some((name, rate)) => e.with_argument(
+                        name,
+                        format!(
+                            "is {rate} segments per patch, outside 1..={TESS_MAX_RATE} (BS_TESS_MAX_RATE)"
+                        ),
+                    ),
+                    None => e,
+                }
+            }
+            (ErrorKind::Domain, _) => {
+                e.with_argument("tolerance", format!("is {}; it must be finite and > 0", o.tolerance))
+            }
+            (ErrorKind::Size, _) => {
+                let unlimited = TessOptions { max_vertices: 0, max_triangles: 0, ..*o };
+                let Ok((nv, nt)) = self.tessellate_count(&unlimited) else { return e };
+                let (name, over) = if o.max_vertices != 0 && nv > o.max_vertices {
+                    ("max_vertices", format!("the budget of {} vertices", o.max_vertices))
+                } else if o.max_triangles != 0 && nt > o.max_triangles {
+                    ("max_triangles", format!("the budget of {} triangles", o.max_triangles))
+                } else {
+                    (
+                        "options",
+                        "the 32-bit index limit (4294967294 vertices, 1431655765 triangles)".to_string(),
+                    )
+                };
+                e.with_argument(
+                    name,
+                    format!("is exceeded: the mesh would have {nv} vertices and {nt} triangles, over {over}"),
+                )
+            }
+            _ => e,
+        }
     }
 }
 
@@ -295,6 +375,7 @@ impl Surface {
         let o = options.raw();
         // SAFETY: self is live; o is a filled options struct; out is valid.
         new_mesh(|out| unsafe { sys::bs_surface_tessellate(self.as_ptr(), &o, out) })
+            .map_err(|e| self.explain_tess(e, options))
     }
 
     /// The (vertices, triangles) [`Surface::tessellate`] would give with `options`, computed
@@ -303,7 +384,8 @@ impl Surface {
         let o = options.raw();
         let (mut nv, mut nt) = (0usize, 0usize);
         // SAFETY: self is live; o is a filled options struct; both outputs are valid.
-        check(unsafe { sys::bs_surface_tessellate_count(self.as_ptr(), &o, &mut nv, &mut nt) })?;
+        check(unsafe { sys::bs_surface_tessellate_count(self.as_ptr(), &o, &mut nv, &mut nt) })
+            .map_err(|e| if e.kind() == ErrorKind::Domain { self.explain_tess(e, options) } else { e })?;
         Ok((nv, nt))
     }
 }
@@ -475,9 +557,18 @@ impl Mesh {
 
     /// Writes the mesh to a file (`bs_mesh_write`); `Io` on failure.
     pub fn write(&self, format: MeshFormat, path: impl AsRef<Path>) -> Result<()> {
-        let path = c_path(path.as_ref())?;
-        // SAFETY: path is NUL-terminated.
-        check(unsafe { sys::bs_mesh_write(self.as_ptr(), format.raw(), path.as_ptr()) })
+        let path = path.as_ref();
+        let cpath = c_path(path)?;
+        // SAFETY: cpath is NUL-terminated.
+        check(unsafe { sys::bs_mesh_write(self.as_ptr(), format.raw(), cpath.as_ptr()) })
+            .map_err(|e| e.with_path(path))
+    }
+
+    /// Writes the mesh to a file in the format its extension names ([`MeshFormat::from_path`]:
+    /// `.obj`, `.ply`, `.stl`); an unknown extension is `InvalidArg` and nothing is written.
+    pub fn save(&self, path: impl AsRef<Path>) -> Result<()> {
+        let format = MeshFormat::from_path(path.as_ref())?;
+        self.write(format, path)
     }
 
     /// The bytes [`write`](Mesh::write) would put in a file (`bs_mesh_write_memory`).

@@ -104,7 +104,21 @@ impl PatchRef {
     /// The same surface with its degrees raised by `raise_u` and `raise_v` (`bs_patch_elevate`).
     pub fn elevate(&self, raise_u: usize, raise_v: usize) -> Result<Patch> {
         // SAFETY: self is live; out is valid.
-        new_patch(|out| unsafe { sys::bs_patch_elevate(self.as_ptr(), raise_u, raise_v, out) })
+        new_patch(|out| unsafe { sys::bs_patch_elevate(self.as_ptr(), raise_u, raise_v, out) }).map_err(|e| {
+            if e.kind() != crate::ErrorKind::Degree {
+                return e;
+            }
+            let (du, dv) = (self.degree_u(), self.degree_v());
+            let (name, raise, d) = if du.saturating_add(raise_u) > sys::BS_MAX_DEGREE {
+                ("raise_u", raise_u, du)
+            } else {
+                ("raise_v", raise_v, dv)
+            };
+            e.with_argument(
+                name,
+                format!("is {raise}: degree {d} + {raise} is above the limit {}", sys::BS_MAX_DEGREE),
+            )
+        })
     }
 
     /// The hodograph patch of d^(ku+kv) S / du^ku dv^kv (`bs_patch_derivative`); polynomial

@@ -1,6 +1,6 @@
 //! Evaluation of scattered points across a surface: point k on patch `ids[k]` at (u[k], v[k]).
 
-use crate::error::{check, Result};
+use crate::error::{check, Error, ErrorKind, Result};
 use crate::eval::{check_ids, kind_ptr, name_short_output, not_computed, scattered, CPoints, Outputs};
 use crate::strided::Strided;
 use crate::surface::Surface;
@@ -69,7 +69,7 @@ impl Surface {
                 threads,
             )
         })
-        .map_err(|e| name_short_output(e, n, &[&pos, &du, &dv]))
+        .map_err(|e| name_bad_id(name_short_output(e, n, &[&pos, &du, &dv]), ids, self.len()))
     }
 
     /// Positions, unit normals and normal kinds at n scattered points of a 3-D surface
@@ -106,6 +106,23 @@ impl Surface {
                 kind,
             )
         })
-        .map_err(|e| name_short_output(e, n, &[&pos, &nrm]))
+        .map_err(|e| name_bad_id(name_short_output(e, n, &[&pos, &nrm]), ids, self.len()))
+    }
+}
+
+/// An `InvalidArg` of a surface evaluator naming the first id that is not a patch of the surface.
+fn name_bad_id(e: Error, ids: &[u32], count: usize) -> Error {
+    if e.kind() != ErrorKind::InvalidArg {
+        return e;
+    }
+    match ids.iter().position(|&i| i as usize >= count) {
+        Some(k) if count == 0 => {
+            e.with_argument("ids", format!("[{k}] is {}, but the surface is empty", ids[k]))
+        }
+        Some(k) => e.with_argument(
+            "ids",
+            format!("[{k}] is {}, not a patch of this surface (patch ids 0..={})", ids[k], count - 1),
+        ),
+        None => e,
     }
 }

@@ -81,6 +81,8 @@ pub const BS_SIDE_U0: c_int = 3;
 pub const BS_TESS_RELATIVE: c_int = 1;
 /// Tessellation flag: also build triangle strips.
 pub const BS_TESS_STRIPS: c_int = 2;
+/// Tessellation flag: reverse the triangles' winding and the normals (since 1.2).
+pub const BS_TESS_REVERSE: c_int = 4;
 /// Largest number of segments per patch and direction of a uniform tessellation.
 pub const BS_TESS_MAX_RATE: usize = 1024;
 /// Tessellation method: nu x nv segments per patch (since 1.1).

@@ -1,7 +1,10 @@
 //! Errors found by the binding name the argument they are about and say what is wrong; errors
 //! the library reports about an output that is too small name that output.
 
-use bezsurf::{Curve, Dir, ErrorKind, Outputs, Patch, Strided, StridedMut, Surface};
+use bezsurf::{
+    Curve, Dir, ErrorKind, MeshFormat, Outputs, Patch, Strided, StridedMut, Surface, TessFlags, TessMethod,
+    TessOptions,
+};
 
 fn plane() -> Patch {
     Patch::new(1, 1, 3, &[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 0.]).unwrap()
@@ -221,4 +224,47 @@ fn zero_points_need_no_room_and_short_buffers_are_named() {
     let mut s = Surface::new().unwrap();
     s.add(&p).unwrap();
     s.eval(&[], &none, &none, Outputs::new().pos(&mut empty)).unwrap();
+}
+
+#[test]
+fn library_errors_name_the_argument_the_value_and_the_limit() {
+    let err = Surface::builtin("kettle").unwrap_err();
+    assert_eq!((err.kind(), err.argument()), (ErrorKind::InvalidArg, Some("name")));
+    assert!(err.to_string().contains("\"kettle\" is not a built-in surface"), "{err}");
+    assert!(err.to_string().contains("teapot, teacup, teaspoon"), "{err}");
+
+    let pot = Surface::builtin("teapot").unwrap();
+    let mut pos = [0.0; 6];
+    let err = pot.eval(&[0, 32], &[0.5, 0.5], &[0.5, 0.5], Outputs::new().pos(&mut pos)).unwrap_err();
+    assert_eq!(err.argument(), Some("ids"));
+    assert!(err.to_string().contains("[1] is 32, not a patch of this surface (patch ids 0..=31)"), "{err}");
+
+    let err = pot.tessellate_uniform(0, 4, TessFlags::NONE).unwrap_err();
+    assert_eq!((err.kind(), err.argument()), (ErrorKind::Domain, Some("nu")));
+    assert!(err.to_string().contains("is 0 segments per patch, outside 1..=1024"), "{err}");
+    let err = pot.tessellate_adaptive(-1.0, TessFlags::NONE).unwrap_err();
+    assert_eq!(err.argument(), Some("tolerance"));
+    let opts = TessOptions::new(TessMethod::Uniform { nu: 16, nv: 16 }).max_triangles(1000);
+    let err = pot.tessellate(&opts).unwrap_err();
+    assert_eq!((err.kind(), err.argument()), (ErrorKind::Size, Some("max_triangles")));
+    assert!(
+        err.to_string()
+            .contains("the mesh would have 8258 vertices and 16256 triangles, over the budget of 1000"),
+        "{err}"
+    );
+
+    let square = Patch::new(1, 1, 3, &[0., 0., 0., 0., 1., 0., 1., 0., 0., 1., 1., 1.]).unwrap();
+    let err = square.elevate(64, 0).unwrap_err();
+    assert_eq!((err.kind(), err.argument()), (ErrorKind::Degree, Some("raise_u")));
+    assert!(err.to_string().contains("degree 1 + 64 is above the limit 64"), "{err}");
+
+    // file errors name the file
+    let missing = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("no-such-dir/missing.bpt");
+    let err = Surface::read_bpt_file(&missing).unwrap_err();
+    assert_eq!(err.path(), Some(missing.as_path()));
+    assert!(err.to_string().contains("no-such-dir/missing.bpt"), "{err}");
+    let err = pot.write_obj_file(&missing).unwrap_err();
+    assert_eq!(err.path(), Some(missing.as_path()));
+    let mesh = pot.tessellate_uniform(1, 1, TessFlags::NONE).unwrap();
+    assert_eq!(mesh.write(MeshFormat::Obj, &missing).unwrap_err().path(), Some(missing.as_path()));
 }

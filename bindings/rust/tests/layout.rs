@@ -54,7 +54,7 @@ int main(void)
     CONST(BS_DIR_U); CONST(BS_DIR_V);
     CONST(BS_CURV_REGULAR); CONST(BS_CURV_LIMIT); CONST(BS_CURV_UNDEFINED);
     CONST(BS_SIDE_V0); CONST(BS_SIDE_U1); CONST(BS_SIDE_V1); CONST(BS_SIDE_U0);
-    CONST(BS_TESS_RELATIVE); CONST(BS_TESS_STRIPS); CONST(BS_TESS_MAX_RATE);
+    CONST(BS_TESS_RELATIVE); CONST(BS_TESS_STRIPS); CONST(BS_TESS_REVERSE); CONST(BS_TESS_MAX_RATE);
     CONST(BS_TESS_UNIFORM); CONST(BS_TESS_PER_PATCH); CONST(BS_TESS_SUBDIVIDE);
     SIZE(bs_tess_options); OFF(bs_tess_options, size); OFF(bs_tess_options, method);
     OFF(bs_tess_options, flags); OFF(bs_tess_options, nu); OFF(bs_tess_options, nv);
@@ -200,7 +200,7 @@ fn sys_matches_the_c_header() {
         ("const BS_TRIM_INSIDE", sys::BS_TRIM_INSIDE as i64),
         ("const BS_TRIM_ON", sys::BS_TRIM_ON as i64),
     ];
-    let consts: [(&str, i64); 36] = [
+    let consts: [(&str, i64); 37] = [
         ("BS_OK", sys::BS_OK as i64),
         ("BS_ERR_INVALID_ARG", sys::BS_ERR_INVALID_ARG as i64),
         ("BS_ERR_NO_MEMORY", sys::BS_ERR_NO_MEMORY as i64),
@@ -229,6 +229,7 @@ fn sys_matches_the_c_header() {
         ("BS_SIDE_U0", sys::BS_SIDE_U0 as i64),
         ("BS_TESS_RELATIVE", sys::BS_TESS_RELATIVE as i64),
         ("BS_TESS_STRIPS", sys::BS_TESS_STRIPS as i64),
+        ("BS_TESS_REVERSE", sys::BS_TESS_REVERSE as i64),
         ("BS_TESS_MAX_RATE", sys::BS_TESS_MAX_RATE as i64),
         ("BS_TESS_UNIFORM", sys::BS_TESS_UNIFORM as i64),
         ("BS_TESS_PER_PATCH", sys::BS_TESS_PER_PATCH as i64),

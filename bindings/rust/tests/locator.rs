@@ -68,6 +68,14 @@ fn misses_ranges_and_invalid_rays() {
     assert_eq!(hits[2].patch, None);
     assert!(hits[2].t.is_nan());
     assert!(loc.intersect(&[]).unwrap().is_empty());
+    // t_max = +inf is "no limit" (1.2), also set by hand after a finite range
+    let free = loc.intersect(&[Ray::new([0., 0., 100.], [0., 0., -1.])]).unwrap()[0];
+    assert!(free.patch.is_some() && free.t.is_finite());
+    let mut unlimited = short;
+    unlimited.t_max = f64::INFINITY;
+    assert_eq!(loc.intersect(&[unlimited]).unwrap()[0], free);
+    unlimited.t_min = f64::NEG_INFINITY;
+    assert!(loc.intersect(&[unlimited]).unwrap()[0].t.is_nan());
 }
 
 #[test]

@@ -139,6 +139,20 @@ fn export_formats() {
     let _ = std::fs::remove_file(&path);
     let bad = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("no-such-dir/x.obj");
     assert_eq!(mesh.write(MeshFormat::Obj, &bad).unwrap_err().kind(), ErrorKind::Io);
+    // save: the format from the extension, any case, as `bezsurf tessellate`; others refused
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
+    for (name, format) in [("s.ply", MeshFormat::Ply), ("s.OBJ", MeshFormat::Obj), ("s.Stl", MeshFormat::Stl)]
+    {
+        mesh.save(dir.join(name)).unwrap();
+        assert_eq!(std::fs::read(dir.join(name)).unwrap(), mesh.to_bytes(format).unwrap(), "{name}");
+        let _ = std::fs::remove_file(dir.join(name));
+    }
+    for name in ["s.txt", "noext"] {
+        let err = mesh.save(dir.join(name)).unwrap_err();
+        assert_eq!((err.kind(), err.argument()), (ErrorKind::InvalidArg, Some("path")));
+        assert!(err.to_string().contains("unknown mesh extension"), "{err}");
+        assert!(!dir.join(name).exists());
+    }
 }
 
 #[test]
@@ -167,4 +181,32 @@ fn float_read_back_is_the_doubles_rounded() {
     assert_eq!(m.positions_f32(), round(m.positions()));
     assert_eq!(m.normals_f32(), round(m.normals()));
     assert_eq!(m.uv_f32(), round(m.uv()));
+}
+
+#[test]
+fn reverse_faces_the_teapot_outwards() {
+    let teapot = Surface::builtin("teapot").unwrap();
+    let volume = |m: &bezsurf::Mesh| {
+        let p = m.positions();
+        let v = |i: u32, c: usize| p[3 * i as usize + c];
+        m.triangles()
+            .chunks(3)
+            .map(|t| {
+                let (a, b, c) = (t[0], t[1], t[2]);
+                v(a, 0) * (v(b, 1) * v(c, 2) - v(b, 2) * v(c, 1))
+                    - v(a, 1) * (v(b, 0) * v(c, 2) - v(b, 2) * v(c, 0))
+                    + v(a, 2) * (v(b, 0) * v(c, 1) - v(b, 1) * v(c, 0))
+            })
+            .sum::<f64>()
+            / 6.0
+    };
+    let plain = teapot.tessellate_uniform(4, 4, TessFlags::NONE).unwrap();
+    let rev = teapot.tessellate_uniform(4, 4, TessFlags::REVERSE).unwrap();
+    // The patches face into the pot: the plain mesh encloses a negative volume.
+    assert!(volume(&plain) < -24.0 && volume(&rev) > 24.0);
+    assert_eq!(plain.positions(), rev.positions());
+    let swapped: Vec<u32> = plain.triangles().chunks(3).flat_map(|t| [t[0], t[2], t[1]]).collect();
+    assert_eq!(rev.triangles(), swapped);
+    let negated: Vec<f64> = plain.normals().iter().map(|x| -x).collect();
+    assert_eq!(rev.normals(), negated);
 }
