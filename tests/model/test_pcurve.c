@@ -722,6 +722,17 @@ static void test_other_surfaces(void)
             set_hom(&e, 0, i, (const double[]){rhs[0][i], rhs[1][i], rhs[2][i]}, 1.0);
     }
     run_other(&bd, bspline_at, &e, "bspline  line of (u, v) in a span");
+    {
+        /* the same with the face's box given, swapped */
+        bsi_trim t;
+        double box[4] = {0.0, 3.0, 0.0, 3.0};
+        CHECK(bsi_pcurve_project_def(&bd, 1, box, NULL, &e, TOL, &t) == BS_OK);
+        double uv0[2], uv1[2];
+        trim_ends(&t, uv0, uv1);
+        CHECKF(fabs(uv0[1] - 1.1) < 1e-6 && fabs(uv0[0] - 0.2) < 1e-6, "uv %g %g", uv0[0], uv0[1]);
+        CHECKF(fabs(uv1[1] - 1.9) < 1e-6 && fabs(uv1[0] - 1.4) < 1e-6, "uv %g %g", uv1[0], uv1[1]);
+        bsi_curve_free(&t.uv);
+    }
     bsi_curve_free(&e);
 
     /* an extruded arc and a line along the sweep */
@@ -1022,6 +1033,39 @@ static void test_close_loop(void)
 
 /* The seam of a closed B-spline (first and last rows alike), not periodic: trims on it are put on
  * the side where the loop goes on. */
+static void closed_seam(const bsi_surface_def *d, double w)
+{
+    for (int swap = 0; swap < 2; swap++) {
+        /* (u0 u1 v0 v1): bottom 0 -> w at v = 0, seam up (wrongly at u = 0), top back at v = 1,
+         * seam down (wrongly at u = w) */
+        double q[4][4] = {{0, w, 0, 0}, {0, 0, 0, 1}, {w, 0, 1, 1}, {w, w, 1, 0}};
+        bsi_trim t[4];
+        for (int k = 0; k < 4; k++) {
+            memset(&t[k], 0, sizeof t[k]);
+            bsi_axis ax;
+            CHECK(bsi_axis_make(BSI_AXIS_LINEAR, 1.0, 0.0, 1.0, NULL, 0, &ax) == BS_OK);
+            t[k].uv = alloc_curve(2, 1, ax);
+            double a[2] = {q[k][0], q[k][2]}, z[2] = {q[k][1], q[k][3]};
+            if (swap) {
+                double h = a[0];
+                a[0] = a[1], a[1] = h;
+                h = z[0];
+                z[0] = z[1], z[1] = h;
+            }
+            set_hom(&t[k].uv, 0, 0, a, 1.0);
+            set_hom(&t[k].uv, 0, 1, z, 1.0);
+        }
+        bsi_pcurve_close_loop_def(d, swap, NULL, 1e-9, t, 4);
+        double a0[2], a1[2];
+        trim_ends(&t[1], a0, a1);
+        CHECKF(a0[swap] == w && a1[swap] == w, "seam up at %g", a0[swap]);
+        trim_ends(&t[3], a0, a1);
+        CHECKF(a0[swap] == 0.0 && a1[swap] == 0.0, "seam down at %g", a0[swap]);
+        for (int k = 0; k < 4; k++)
+            bsi_curve_free(&t[k].uv);
+    }
+}
+
 static void test_closed_seam(void)
 {
     static const double ku[6] = {0, 0, 0, 1, 1, 1}, kv[4] = {0, 0, 1, 1};
@@ -1038,34 +1082,18 @@ static void test_closed_seam(void)
     memset(&d, 0, sizeof d);
     d.kind = BS_FACE_BSPLINE;
     d.bspline = &b;
-    for (int swap = 0; swap < 2; swap++) {
-        /* (u0 u1 v0 v1): bottom 0 -> 1 at v = 0, seam up (wrongly at u = 0), top back at v = 1,
-         * seam down (wrongly at u = 1) */
-        double q[4][4] = {{0, 1, 0, 0}, {0, 0, 0, 1}, {1, 0, 1, 1}, {1, 1, 1, 0}};
-        bsi_trim t[4];
-        for (int k = 0; k < 4; k++) {
-            memset(&t[k], 0, sizeof t[k]);
-            CHECK(bsi_axis_make(BSI_AXIS_LINEAR, 1.0, 0.0, 1.0, NULL, 0, &t[k].uv.axis) == BS_OK);
-            t[k].uv = alloc_curve(2, 1, t[k].uv.axis);
-            double a[2] = {q[k][0], q[k][2]}, z[2] = {q[k][1], q[k][3]};
-            if (swap) {
-                double h = a[0];
-                a[0] = a[1], a[1] = h;
-                h = z[0];
-                z[0] = z[1], z[1] = h;
-            }
-            set_hom(&t[k].uv, 0, 0, a, 1.0);
-            set_hom(&t[k].uv, 0, 1, z, 1.0);
-        }
-        bsi_pcurve_close_loop_def(&d, swap, NULL, 1e-9, t, 4);
-        double a0[2], a1[2];
-        trim_ends(&t[1], a0, a1);
-        CHECKF(a0[swap] == 1.0 && a1[swap] == 1.0, "seam up at %g", a0[swap]);
-        trim_ends(&t[3], a0, a1);
-        CHECKF(a0[swap] == 0.0 && a1[swap] == 0.0, "seam down at %g", a0[swap]);
-        for (int k = 0; k < 4; k++)
-            bsi_curve_free(&t[k].uv);
-    }
+    /* an extrusion of a closed curve (a full circle over [0, 2 pi]) */
+    bsi_surface_def ex = def_of(BS_FACE_EXTRUSION, 0.0, 0.0);
+    double c[3], x[3], y[3];
+    local_point(&ex, 0.0, 0.0, 0.0, c);
+    local_dir(&ex, 1.0, 0.0, 0.0, x);
+    local_dir(&ex, 0.0, 1.0, 0.0, y);
+    local_dir(&ex, 0.0, 0.0, 1.0, ex.dir);
+    bsi_curve loop = circle(c, x, y, 1.0, 0.0, 2.0 * PI);
+    ex.curve = &loop;
+    closed_seam(&ex, 2.0 * PI);
+    bsi_curve_free(&loop);
+    closed_seam(&d, 1.0);
 }
 
 int main(void)

@@ -144,6 +144,13 @@ static void test_cube(void)
         CHECK(bs_model_shell_closed(m, 0) == 1);
         bs_model_destroy(m);
     }
+    /* ends a rounding outside the face's box are on its side */
+    bs_model *r = cube(0, 0);
+    r->trims[1].uv.hom[0] = 1.0 + 1e-12;
+    r->trims[3].uv.hom[3] = -1e-12;
+    CHECK(bsi_model_sew(r, 1e-7) == BS_OK);
+    CHECKF(r->nedge == 12 && joined(r) == 24, "rounded ends: %zu edges", r->nedge);
+    bs_model_destroy(r);
     /* one side split in two on one face only: those three trims are not joined */
     bs_model *m = cube(1, 0);
     CHECK(bsi_model_finish(m) == BS_OK);
@@ -303,8 +310,15 @@ static void test_hole(void)
     bsi_trim plug[1] = {circle_trim(2.0, 1)};
     add_face(m, p, plug, 1, 0);
     bs_patch_destroy(p);
+    /* a plug of another plate 1 higher: its loop matches nothing */
+    const double l00[3] = {0, 0, 1}, l10[3] = {2, 0, 1}, l01[3] = {0, 2, 1}, l11[3] = {2, 2, 1.5};
+    p = bilinear(l00, l10, l01, l11);
+    bsi_trim other[1] = {circle_trim(1.0, 1)};
+    add_face(m, p, other, 1, 0);
+    bs_patch_destroy(p);
     CHECK(bsi_model_sew(m, 1e-7) == BS_OK);
     CHECKF(m->nedge == 1 && m->trims[4].edge == 0 && m->trims[5].edge == 0, "hole: %zu edges", m->nedge);
+    CHECK(m->trims[6].edge == BSI_NO_EDGE);
     bs_model_destroy(m);
 }
 
