@@ -6,6 +6,7 @@
  *   obj_model_curve.c  curv2 bodies kept as B-splines; trim and hole statements made loops
  *   obj_model_face.c   a surf body's patches and its face with its loops
  *   obj_model_write.c  the writer
+ *   obj_model_remap.c  the parameters faces with angular directions are written in
  *
  * Every array grows with the data read, never with a count the file declares; the geometry made
  * (patch and trim control points) is capped by OBJM_POINTS(len) so that memory stays bounded per
@@ -94,5 +95,14 @@ void bsi_objm_drop_loops(objm *o);
 /* ---- obj_model_face.c ---- */
 /* `end` of a surf body: its patches and its face added to the model. */
 bs_status bsi_objm_end_surf(objm *o);
+
+/* ---- obj_model_remap.c ---- */
+#define OBJM_AS_IS   0 /* a trim written with its control points (angular coordinates mapped) */
+#define OBJM_SEGMENT 1 /* a trim written as the segment between its mapped ends */
+/* Native coordinate x along direction d of face f in the written parameters: 1, or 0 when x lies
+ * outside the face's axis. */
+int bsi_objm_map(const bsi_face *f, int d, double x, double *out);
+/* How trim curve c of face f is written: OBJM_AS_IS, OBJM_SEGMENT, or -1 (not exactly). */
+int bsi_objm_trim_form(const bsi_face *f, const bsi_curve *c);
 
 #endif

@@ -11,8 +11,9 @@
  * OBJ has no face orientation: a reversed face is written with u and v exchanged (its native
  * parameters come back exchanged, its outward normal the same). Edges, shells and instances are
  * not written (the reader sews edges again). Faces with angular directions (cylinders, cones,
- * spheres, tori, revolutions) are refused with BS_ERR_UNSUPPORTED: their trims, in angles, are
- * not polynomial in the patches' parameters. */
+ * spheres, tori, revolutions) are written in the piecewise linear parameters of their patches
+ * (obj_model_remap.c): read back, such a face has the same patches but other native parameters;
+ * one with a trim those parameters cannot carry exactly is refused with BS_ERR_UNSUPPORTED. */
 #include "io/obj_model.h"
 #include "mesh/sink.h"
 
@@ -52,29 +53,49 @@ static void put_knots(bsi_sink *o, const char *dir, const double *b, size_t n, s
     bsi_sink_str(o, "\n");
 }
 
-/* A trim as the next curv2 (coordinates exchanged when swap). */
-static void put_curve(writer *wr, const bsi_curve *c, int swap)
+static void put_point(bsi_sink *o, const bsi_face *f, const double *xy, int swap)
+{
+    double p[2];
+    for (int d = 0; d < 2; d++)
+        (void)bsi_objm_map(f, d, xy[d], &p[d]); /* mappable: checked by check_model */
+    bsi_sink_str(o, "vp");
+    put_double(o, p[swap ? 1 : 0]);
+    put_double(o, p[swap ? 0 : 1]);
+}
+
+/* Trim curve c of face f as the next curv2, in the written parameters (exchanged when swap). */
+static void put_curve(writer *wr, const bsi_face *f, const bsi_curve *c, int swap)
 {
     bsi_sink *o = wr->o;
-    size_t n = c->axis.n * (c->degree + 1);
+    int segment = bsi_objm_trim_form(f, c) == OBJM_SEGMENT;
+    size_t n = segment ? 2 : c->axis.n * (c->degree + 1), degree = segment ? 1 : c->degree;
     int rat = 0;
-    for (size_t k = 0; k < n; k++)
+    for (size_t k = 0; !segment && k < n; k++)
         rat |= c->hom[3 * k + 2] != 1.0;
     for (size_t k = 0; k < n; k++) {
-        const double *h = c->hom + 3 * k;
-        bsi_sink_str(o, "vp");
-        put_double(o, h[swap ? 1 : 0] / h[2]);
-        put_double(o, h[swap ? 0 : 1] / h[2]);
+        double xy[2];
+        if (segment) {
+            bsi_curve_point(c, k ? c->axis.n - 1 : 0, k ? 1.0 : 0.0, xy);
+        } else {
+            xy[0] = c->hom[3 * k] / c->hom[3 * k + 2];
+            xy[1] = c->hom[3 * k + 1] / c->hom[3 * k + 2];
+        }
+        put_point(o, f, xy, swap);
         if (rat)
-            put_double(o, h[2]);
+            put_double(o, c->hom[3 * k + 2]);
         bsi_sink_str(o, "\n");
     }
     bsi_sink_str(o, rat ? "cstype rat bspline\ndeg " : "cstype bspline\ndeg ");
-    bsi_sink_uint(o, c->degree);
+    bsi_sink_uint(o, degree);
     bsi_sink_str(o, "\ncurv2");
     put_refs(o, wr->nvp, n);
     bsi_sink_str(o, "\n");
-    put_knots(o, "u", c->axis.breaks, c->axis.n, c->degree + 1);
+    if (segment) {
+        double ends[2] = {c->axis.breaks[0], c->axis.breaks[c->axis.n]};
+        put_knots(o, "u", ends, 1, 2);
+    } else {
+        put_knots(o, "u", c->axis.breaks, c->axis.n, c->degree + 1);
+    }
     bsi_sink_str(o, "end\n");
     wr->nvp += n;
     wr->ncurve++;
@@ -129,7 +150,7 @@ static void put_face(writer *wr, const bs_model *m, const bsi_face *f)
     size_t first_curve = wr->ncurve;
     for (size_t l = f->first_loop; l < f->first_loop + f->loop_count; l++)
         for (size_t t = m->loops[l].first_trim; t < m->loops[l].first_trim + m->loops[l].trim_count; t++)
-            put_curve(wr, &m->trims[t].uv, f->reversed);
+            put_curve(wr, f, &m->trims[t].uv, f->reversed);
     /* the OBJ net, u fastest: Bezier segments share their sides, B-spline spans do not */
     size_t step[2], cnt[2];
     for (int d = 0; d < 2; d++) {
@@ -182,13 +203,12 @@ static void put_face(writer *wr, const bs_model *m, const bsi_face *f)
     bsi_sink_str(o, "end\n");
 }
 
-/* What OBJ can hold exactly: faces of straight directions, patches of one degree, 2-D trims. */
+/* What OBJ can hold exactly: patches of one degree, 2-D trims that obj_model_remap.c writes. */
 static bs_status check_model(const bs_model *m)
 {
     for (size_t k = 0; k < m->nface; k++) {
         const bsi_face *f = &m->faces[k];
-        if (f->au.kind != BSI_AXIS_LINEAR || f->av.kind != BSI_AXIS_LINEAR || f->patch_count == 0 ||
-            f->patch_count != f->au.n * f->av.n)
+        if (f->patch_count == 0 || f->patch_count != f->au.n * f->av.n)
             return BS_ERR_UNSUPPORTED;
         const bs_patch *p0 = bs_surface_get(m->surface, f->first_patch);
         for (size_t p = 1; p < f->patch_count; p++) {
@@ -200,7 +220,8 @@ static bs_status check_model(const bs_model *m)
             return BS_ERR_UNSUPPORTED;
         for (size_t l = f->first_loop; l < f->first_loop + f->loop_count; l++)
             for (size_t t = m->loops[l].first_trim; t < m->loops[l].first_trim + m->loops[l].trim_count; t++)
-                if (m->trims[t].uv.dim != 2 || m->trims[t].uv.axis.n == 0)
+                if (m->trims[t].uv.dim != 2 || m->trims[t].uv.axis.n == 0 ||
+                    bsi_objm_trim_form(f, &m->trims[t].uv) < 0)
                     return BS_ERR_UNSUPPORTED;
     }
     return BS_OK;
