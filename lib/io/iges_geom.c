@@ -259,12 +259,12 @@ static bs_status build(igm *m, size_t s, int depth)
 bs_status bsi_igm_curve(igm *m, size_t s, int depth)
 {
     igm_slot *e = &m->slot[s];
-    if (e->state == IGM_DONE)
-        return BS_OK;
     if (e->type != 100 && e->type != 102 && e->type != 104 && e->type != 110 && e->type != 126) {
         (void)bsi_igm_fail(m, s, 1, "curve type not read");
         return BS_ERR_UNSUPPORTED;
     }
+    if (e->state == IGM_DONE)
+        return BS_OK;
     if (e->state == IGM_BUSY || depth > IGM_DEPTH)
         return bsi_igm_fail(m, s, 1, "curves nested deeper than %d or circular", IGM_DEPTH);
     e->state = IGM_BUSY;

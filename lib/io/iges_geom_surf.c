@@ -292,13 +292,13 @@ bs_status bsi_igm_surface(igm *m, size_t s, int depth)
 {
     igm_slot *e = &m->slot[s];
     long type = e->type;
-    if (e->state == IGM_DONE)
-        return BS_OK;
     if (type != 108 && type != 120 && type != 122 && type != 128 &&
         !(type >= 190 && type <= 198 && type % 2 == 0)) {
         (void)bsi_igm_fail(m, s, 1, "surface type not read");
         return BS_ERR_UNSUPPORTED;
     }
+    if (e->state == IGM_DONE)
+        return BS_OK;
     if (e->state == IGM_BUSY || depth > IGM_DEPTH)
         return bsi_igm_fail(m, s, 1, "surfaces nested deeper than %d or circular", IGM_DEPTH);
     e->state = IGM_BUSY;

@@ -207,6 +207,45 @@ static void test_spoiled_parts(void)
     spoiled("torus", "     124       3", "     124      99", BS_ERR_PARSE, "parameter data pointer outside");
 }
 
+/* Every field of the P section spoiled in turn (its first character made a letter, a 1 or a minus,
+ * the record delimiter made a parameter delimiter): a model or a clean failure, at a line. */
+static void sweep(const char *name, const char *text, size_t len)
+{
+    char *t = malloc(len + 1);
+    size_t tried = 0, failed = 0;
+    for (size_t at = 0; at < len; at++) {
+        size_t col = 0;
+        while (col < at && text[at - col - 1] != '\n')
+            col++;
+        if (col >= 64 || at + 80 - col > len || text[at - col + 72] != 'P')
+            continue;
+        int first = col == 0 || text[at - 1] == ',' || text[at - 1] == ';';
+        if (!first && text[at] != ';')
+            continue;
+        static const char subs[3] = {'X', '1', '-'};
+        for (int k = 0; k < 3; k++) {
+            char c = text[at] == ';' ? ',' : subs[k];
+            if (text[at] == ';' && k > 0)
+                break;
+            memcpy(t, text, len);
+            t[at] = c;
+            bs_parse_error err;
+            memset(&err, 0, sizeof err);
+            bs_model *m = NULL;
+            bs_status st = bs_model_read_iges(t, len, &err, &m);
+            tried++;
+            if (st != BS_OK) {
+                failed++;
+                CHECKF(m == NULL && err.line > 0 && err.column > 0, "%s: byte %zu made '%c': status %d, line %zu",
+                       name, at, c, (int)st, err.line);
+            }
+            bs_model_destroy(m);
+        }
+    }
+    printf("%s: %zu spoiled fields, %zu refused\n", name, tried, failed);
+    free(t);
+}
+
 static void test_parts(void)
 {
     static const char *const parts[] = {"sphere", "torus", "cone", "wedge", "bell", "duct", "block", "bottle"};
@@ -439,12 +478,35 @@ static void test_refusals(void)
     CHECK(bs_model_read_iges_file(BS_CAD_DIR "/missing.igs", &err, &m) == BS_ERR_IO && m == NULL);
 }
 
+static void test_sweeps(void)
+{
+    static const char *const parts[] = {"cone-brep", "sphere-brep", "sphere", "cone", "wedge-brep"};
+    for (size_t k = 0; k < sizeof parts / sizeof parts[0]; k++) {
+        char path[512];
+        (void)snprintf(path, sizeof path, "%s/%s.igs", BS_CAD_DIR, parts[k]);
+        FILE *f = fopen(path, "rb");
+        char *t = malloc(1 << 16);
+        size_t len = f != NULL && t != NULL ? fread(t, 1, 1 << 16, f) : 0;
+        if (f != NULL)
+            fclose(f);
+        CHECK(len > 0);
+        sweep(parts[k], t, len);
+        free(t);
+    }
+    size_t len;
+    char *t = iges_text(square, 8, 0, &len);
+    sweep("square", t, len);
+    free(t);
+}
+
 int main(void)
 {
     test_small();
     test_entities();
     test_refusals();
     test_spoiled_parts();
+    if (!bs_test_quick())
+        test_sweeps();
     test_parts();
     return bs_test_exit("test_iges_model");
 }
