@@ -437,6 +437,75 @@ static void test_pole(void)
     bs_model_destroy(m);
 }
 
+/* ---- faces of exact surfaces through bsi_model_add_face ---- */
+static size_t def_face(bs_model *m, const bsi_surface_def *def, bsi_trim *trims, size_t ntrim,
+                       const size_t *loop_len, size_t nloop)
+{
+    bsi_face_spec spec;
+    memset(&spec, 0, sizeof spec);
+    spec.def = def;
+    spec.trims = trims;
+    spec.ntrim = ntrim;
+    spec.loop_len = loop_len;
+    spec.nloop = nloop;
+    size_t f = SIZE_MAX;
+    CHECK_STATUS(bsi_model_add_face(m, &spec, &f), BS_OK);
+    return f;
+}
+
+static void test_exact_surfaces(void)
+{
+    bs_model *m = NULL;
+    CHECK_STATUS(bsi_model_create(&m), BS_OK);
+    bsi_surface_def def;
+    memset(&def, 0, sizeof def);
+    def.f.x[0] = def.f.y[1] = def.f.z[2] = 1.0;
+    /* a cylinder of radius 2, its loop over [-0.5, 5.5] with a hole across the seam */
+    def.kind = BS_FACE_CYLINDER;
+    def.r = 2.0;
+    bsi_trim trims[5] = {line_trim(-0.5, 0, 5.5, 0), line_trim(5.5, 0, 5.5, 3),
+                         line_trim(5.5, 3, -0.5, 3), line_trim(-0.5, 3, -0.5, 0),
+                         circle_trim(0.0, 1.5, 0.4, 0)};
+    size_t loops[2] = {4, 1};
+    size_t f = def_face(m, &def, trims, 5, loops, 2);
+    if (f < m->nface) {
+        CHECK(fabs(m->faces[f].period[0] - 2 * PI) < 1e-15 && m->faces[f].period[1] == 0.0);
+        EXPECT(m, f, 3.0, 1.5, 1e-6, BS_TRIM_INSIDE);
+        EXPECT(m, f, 0.1, 1.5, 1e-6, BS_TRIM_OUTSIDE);
+        EXPECT(m, f, 2 * PI - 0.1, 1.5, 1e-6, BS_TRIM_OUTSIDE);
+        EXPECT(m, f, 5.6, 1.5, 1e-6, BS_TRIM_OUTSIDE);
+        /* across u the 3-D distance is 2 du (radius 2) */
+        EXPECT(m, f, 0.4 + 1e-6, 1.5, 2.2e-6, BS_TRIM_ON);
+        EXPECT(m, f, 0.4 + 1e-6, 1.5, 1.8e-6, BS_TRIM_INSIDE);
+        EXPECT(m, f, 0.4 - 1e-6, 1.5, 1.8e-6, BS_TRIM_OUTSIDE);
+        EXPECT(m, f, 2 * PI - 0.4 - 1e-6, 1.5, 1.8e-6, BS_TRIM_INSIDE);
+        EXPECT(m, f, 2 * PI - 0.4 + 1e-6, 1.5, 1.8e-6, BS_TRIM_OUTSIDE);
+    }
+    /* a whole unit sphere: seams u = 0 and 2 pi, poles v = -pi / 2 and pi / 2 */
+    def.kind = BS_FACE_SPHERE;
+    def.r = 1.0;
+    bsi_trim sph[4] = {line_trim(0, -PI / 2, 0, PI / 2), line_trim(0, PI / 2, 2 * PI, PI / 2),
+                       line_trim(2 * PI, PI / 2, 2 * PI, -PI / 2),
+                       line_trim(2 * PI, -PI / 2, 0, -PI / 2)};
+    size_t four = 4;
+    size_t g = def_face(m, &def, sph, 4, &four, 1);
+    if (g < m->nface) {
+        unsigned long long seed = 11;
+        int wrong = 0;
+        for (int i = 0; i < 2000; i++) {
+            double u = bs_test_rand(&seed, -3.0, 10.0), v = bs_test_rand(&seed, -1.5, 1.5);
+            wrong += bsi_face_classify(m, g, u, v, 1e-7) != BS_TRIM_INSIDE;
+        }
+        CHECKF(wrong == 0, "%d of 2000 points of a whole sphere not inside", wrong);
+        EXPECT(m, g, 0.0, 0.3, 1e-7, BS_TRIM_INSIDE);
+        EXPECT(m, g, 1.0, PI / 2 - 1e-8, 1e-7, BS_TRIM_ON);
+        EXPECT(m, g, 1.0, -PI / 2 + 1e-8, 1e-7, BS_TRIM_ON);
+        EXPECT(m, g, 1.0, -PI / 2 + 1e-6, 1e-7, BS_TRIM_INSIDE);
+        EXPECT(m, g, 1.0, PI / 2 + 1e-6, 1e-7, BS_TRIM_OUTSIDE);
+    }
+    bs_model_destroy(m);
+}
+
 /* ---- a face without loops: its whole box ---- */
 static void test_untrimmed(void)
 {
@@ -493,6 +562,7 @@ int main(void)
     test_pole();
     test_gaps();
     test_degenerate_surface();
+    test_exact_surfaces();
     test_untrimmed();
     test_public();
     return bs_test_exit("test_classify");
