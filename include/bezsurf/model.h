@@ -246,7 +246,8 @@ BS_API const bs_surface *bs_model_surface(const bs_model *m);
  * @brief Evaluate faces at native parameters: positions and outward unit normals (the face's
  * `reversed` applied).
  * A parameter outside the face's patches' domain (outside its parameter box, widened for periodic
- * directions by whole periods) gives NaN in that point; NaN parameters give NaN.
+ * directions by whole periods, by more than 1e-9 of the box's width) gives NaN in that point; NaN
+ * parameters give NaN.
  * @param[in]  m      the model.
  * @param[in]  n      number of points.
  * @param[in]  faces  n face ids.

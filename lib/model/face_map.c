@@ -16,14 +16,21 @@ double bsi_wrap(double u, double lo, double period)
     return w < lo ? lo : w;
 }
 
-/* x brought into [lo, hi] by whole periods when it lies outside and a shift lands inside. */
+/* x brought into [lo, hi] by whole periods when it lies outside and a shift lands inside; a
+ * parameter outside by a rounding (1e-9 of the box's width: trim ends computed by the file's
+ * writer) is taken at the box's side. */
 static double into_box(double x, double lo, double hi, double period)
 {
-    if (!(period > 0.0) || (x >= lo && x <= hi) || !isfinite(x))
+    if ((x >= lo && x <= hi) || !isfinite(x))
         return x;
-    double k = round((0.5 * (lo + hi) - x) / period);
-    double shifted = x + k * period;
-    return shifted >= lo && shifted <= hi ? shifted : x;
+    if (period > 0.0) {
+        double k = round((0.5 * (lo + hi) - x) / period);
+        double shifted = x + k * period;
+        if (shifted >= lo && shifted <= hi)
+            return shifted;
+    }
+    double slack = 1e-9 * (hi - lo);
+    return x < lo && x >= lo - slack ? lo : x > hi && x <= hi + slack ? hi : x;
 }
 
 int bsi_face_locate(const bs_model *m, size_t f, double u, double v, uint32_t *patch, double *st)
