@@ -39,9 +39,7 @@ bs_status bsi_igm_name(igm *m, size_t s, bs_status st)
         msg[sizeof msg - 1] = '\0';
         char head[48];
         int n = snprintf(head, sizeof head, "entity %ld (DE %zu): ", m->slot[s].type, 2 * s + 1);
-        size_t hl = n > 0 ? (size_t)n : 0, ml = strlen(msg);
-        if (hl > sizeof head - 1)
-            hl = sizeof head - 1;
+        size_t hl = n > 0 ? (size_t)n : 0, ml = strlen(msg); /* the head fits: two numbers of 8 digits */
         if (ml > sizeof e->message - 1 - hl)
             ml = sizeof e->message - 1 - hl; /* a message cut to the buffer is fine */
         memcpy(e->message, head, hl);

@@ -351,6 +351,20 @@ static void test_entities(void)
         {124, 0, 0, "124,0.,0.,1.,0.,1.,0.,0.,0.,0.,-1.,0.,0.;"},
     };
     one_face("100", circle, 5, BS_FACE_PLANE, 16.0, NAN);
+    /* a 143 on a 128 bounded by one 141 of a model curve and its parameter curve (run backwards) */
+    static const ent b128[] = {
+        {143, 0, 0, "143,0,3,1,5;"},
+        {128, 0, 0, "128,1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,2.,2.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,"
+                    "0.,1.,0.,2.;"},
+        {141, 0, 0, "141,1,1,3,1,7,2,2,9,9;"},
+        {102, 0, 0, "102,4,11,13,15,17;"},
+        {102, 0, 0, "102,4,11,13,15,17;"},
+        {110, 0, 0, "110,0.,0.,0.,1.,0.,0.;"},
+        {110, 0, 0, "110,1.,0.,0.,1.,2.,0.;"},
+        {110, 0, 0, "110,1.,2.,0.,0.,2.,0.;"},
+        {110, 0, 0, "110,0.,2.,0.,0.,0.,0.;"},
+    };
+    one_face("143 with parameter curves", b128, 9, BS_FACE_BSPLINE, 2.0, NAN);
     /* a 128 trimmed by its own boundary (N1 = 0): its range */
     static const ent own[] = {
         {144, 0, 0, "144,3,0,0,0;"},
@@ -464,6 +478,28 @@ static void test_refusals(void)
         nest[3 + k] = (ent){102, 0, 0, pars[k - 1]};
     }
     refused(nest, 15, 0, BS_ERR_PARSE, "more pieces than the file's size allows");
+    /* the 128 bounded by its own range, spoiled */
+    static const char *const bad128[][2] = {
+        {"128,1,1,2,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;",
+         "at least the degrees"},
+        {"128,30,30,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.;", "more control points"},
+        {"128,1,1,1,1,0,0,1,0,0,0.,1.,0.,1.,0.,0.,1.,1.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;",
+         "knots must not decrease"},
+        {"128,1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,0.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;",
+         "weights must be positive"},
+        {"128,1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,2.,3.,0.,1.;",
+         "parameter range empty"},
+    };
+    for (size_t k = 0; k < sizeof bad128 / sizeof bad128[0]; k++) {
+        ent b[2] = {{144, 0, 0, "144,3,0,0,0;"}, {128, 0, 0, bad128[k][0]}};
+        refused(b, 2, 0, BS_ERR_PARSE, bad128[k][1]);
+    }
+    /* a 143 whose 141 boundary lies on another surface */
+    ent b143[9];
+    memcpy(b143, square, sizeof square);
+    b143[0] = (ent){143, 0, 0, "143,1,3,1,17;"};
+    b143[8] = (ent){141, 0, 0, "141,1,2,5,1,7,1,0;"};
+    refused(b143, 9, 0, BS_ERR_PARSE, "not DE 3 of its face");
     /* the 1.1 reader sends files of trimmed surfaces here */
     size_t len;
     char *t = iges_text(square, 8, 0, &len);
