@@ -217,11 +217,12 @@ static void sweep(const char *name, const char *text, size_t len)
         size_t col = 0;
         while (col < at && text[at - col - 1] != '\n')
             col++;
-        if (col >= 64 || at + 80 - col > len || text[at - col + 72] != 'P')
+        if (col >= 72 || at + 80 - col > len)
             continue;
+        char sec = text[at - col + 72];
         int first = col == 0 || text[at - 1] == ',' || text[at - 1] == ';';
-        if (!first && text[at] != ';')
-            continue;
+        if (sec == 'D' ? col % 8 != 7 : sec != 'P' || col >= 64 || (!first && text[at] != ';'))
+            continue; /* directory entries: the last column of each field */
         static const char subs[3] = {'X', '1', '-'};
         for (int k = 0; k < 3; k++) {
             char c = text[at] == ';' ? ',' : subs[k];
@@ -412,6 +413,8 @@ static void test_refusals(void)
 {
     static const ent lines[] = {{110, 0, 0, "110,0.,0.,0.,1.,0.,0.;"}, {116, 0, 0, "116,0.,0.,0.;"}};
     refused(lines, 2, 0, BS_ERR_PARSE, "no surface read: 2 entities of types 110, 116");
+    static const ent three[] = {lines[0], lines[1], lines[0]};
+    refused(three, 3, 0, BS_ERR_PARSE, "no surface read: 3 entities of types 110, 116");
     ent e[8];
     memcpy(e, square, sizeof e);
     refused(e, 8, 5, BS_ERR_PARSE, "back pointer");
