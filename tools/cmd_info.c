@@ -9,8 +9,8 @@ static const char usage[] =
     "usage: bezsurf info [--builtin NAME] [--from FORMAT] [--tol T] [FILE]\n"
     "Print the number of patches, their degrees, the bounds of the control points (which\n"
     "contain the surface) and the numbers of shared and open edges (sides matched when their\n"
-    "control points agree within T per coordinate, default 1e-9). For a model (a STEP, IGES or\n"
-    "OBJ file), also its faces by surface kind, its edges and its shells, open or closed.\n";
+    "control points agree within T per coordinate, default 1e-9). For a model (a STEP or IGES\n"
+    "file), also its faces by surface kind, its edges and its shells, open or closed.\n";
 
 static const char *const kind_names[] = {"bezier", "bspline", "plane", "cylinder", "cone",
                                          "sphere", "torus", "revolution", "extrusion"};
@@ -67,7 +67,9 @@ int cmd_info(int argc, char **argv)
     const cli_format *fmt = NULL;
     if (in.path != NULL && strcmp(in.path, "-") != 0)
         fmt = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
-    int rc = fmt && fmt->read_model_file ? cli_load_model(cmd, &in, &model) : cli_load(cmd, &in, &s);
+    /* STEP and IGES files are models; an OBJ file is described as its surfaces, as in 1.1 */
+    int is_model = fmt && fmt->read_model_file && strcmp(fmt->name, "obj") != 0;
+    int rc = is_model ? cli_load_model(cmd, &in, &model) : cli_load(cmd, &in, &s);
     if (rc != CLI_OK)
         return rc;
     if (model != NULL && bs_surface_clone(bs_model_surface(model), &s) != BS_OK) {

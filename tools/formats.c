@@ -4,12 +4,13 @@
 #include <ctype.h>
 #include <string.h>
 
-/* STEP and IGES files hold trimmed models: as surfaces, their faces' patches. */
-static bs_status surface_of_model(bs_status st, bs_model *m, bs_surface **out)
+/* STEP and IGES files hold trimmed models: as surfaces, their faces' patches. (The model is
+ * passed by address: it is set by the read, which must happen before it is looked at.) */
+static bs_status surface_of_model(bs_status st, bs_model **m, bs_surface **out)
 {
     if (st == BS_OK)
-        st = bs_surface_clone(bs_model_surface(m), out);
-    bs_model_destroy(m);
+        st = bs_surface_clone(bs_model_surface(*m), out);
+    bs_model_destroy(*m);
     return st;
 }
 
@@ -17,14 +18,14 @@ static bs_status step_read(const char *text, size_t len, bs_parse_error *err, bs
 {
     bs_model *m = NULL;
     *out = NULL;
-    return surface_of_model(bs_model_read_step(text, len, err, &m), m, out);
+    return surface_of_model(bs_model_read_step(text, len, err, &m), &m, out);
 }
 
 static bs_status step_read_file(const char *path, bs_parse_error *err, bs_surface **out)
 {
     bs_model *m = NULL;
     *out = NULL;
-    return surface_of_model(bs_model_read_step_file(path, err, &m), m, out);
+    return surface_of_model(bs_model_read_step_file(path, err, &m), &m, out);
 }
 
 /* IGES through the model reader (trimmed surfaces, B-reps, B-splines), the 1.1 surface reader
@@ -33,7 +34,7 @@ static bs_status iges_read(const char *text, size_t len, bs_parse_error *err, bs
 {
     bs_model *m = NULL;
     *out = NULL;
-    bs_status st = surface_of_model(bs_model_read_iges(text, len, err, &m), m, out);
+    bs_status st = surface_of_model(bs_model_read_iges(text, len, err, &m), &m, out);
     if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED) {
         bs_parse_error second;
         if (bs_surface_read_iges(text, len, &second, out) == BS_OK)
@@ -46,7 +47,7 @@ static bs_status iges_read_file(const char *path, bs_parse_error *err, bs_surfac
 {
     bs_model *m = NULL;
     *out = NULL;
-    bs_status st = surface_of_model(bs_model_read_iges_file(path, err, &m), m, out);
+    bs_status st = surface_of_model(bs_model_read_iges_file(path, err, &m), &m, out);
     if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED) {
         bs_parse_error second;
         if (bs_surface_read_iges_file(path, &second, out) == BS_OK)

@@ -18,11 +18,9 @@
 #ifndef BEZSURF_MODEL_INTERNAL_H
 #define BEZSURF_MODEL_INTERNAL_H
 
+#include "bezsurf.h"
 #include "query/internal.h"
 #include "bspline/internal.h"
-#include "bezsurf/bspline.h"
-#include "bezsurf/query.h"
-#include "bezsurf/model.h"
 
 /* ---- One direction of a face or a curve: native parameter -> (piece, local s) (axis.c) ----
  * LINEAR pieces map [b_k, b_k+1] linearly onto [0,1]. ANGULAR pieces are quadratic rational arcs
