@@ -166,15 +166,20 @@ BS_API bs_status bs_model_from_surface(const bs_surface *s, bs_model **out);
 BS_API void bs_model_destroy(bs_model *m);
 
 /**
- * @brief Write a model as OBJ free-form text: a `surf` per patch of each face, its trim and hole
- * loops as `curv2` curves, exact (shortest round-trip numbers) so that bs_model_read_obj() reads
- * the same model back.
+ * @brief Write a model as OBJ free-form text: one `surf` per face (a `bezier` surf, or a `bspline`
+ * surf whose spans are the face's patches), its trim and hole loops as `curv2` curves, numbers in
+ * their shortest exact form, so that bs_model_read_obj() reads a model written from OBJ back
+ * value for value. A face along an angular direction is written in its patches' parameters; its
+ * trims must then be exact there (constant angles, or one coordinate varying monotonically),
+ * else BS_ERR_UNSUPPORTED (docs/models.md says what OBJ cannot carry: orientation flags, shells,
+ * surface kinds).
  * @param[in]  m     the model.
  * @param[out] buf   NULL (size query) or room for cap bytes; the text is NUL-terminated.
  * @param[in]  cap   bytes of buf.
  * @param[out] size  receives the bytes needed, the final NUL not counted.
  * @return BS_OK; BS_ERR_INVALID_ARG if m or size is NULL; BS_ERR_SIZE if buf is not NULL and cap
- *         is below *size + 1 (*size is still set, nothing written); BS_ERR_NO_MEMORY.
+ *         is below *size + 1 (*size is still set, nothing written); BS_ERR_UNSUPPORTED for a
+ *         face whose trims OBJ cannot hold exactly; BS_ERR_NO_MEMORY.
  * @since 1.2
  */
 BS_API bs_status bs_model_write_obj(const bs_model *m, char *buf, size_t cap, size_t *size);
