@@ -193,6 +193,34 @@ static void spoiled(const char *part, const char *from, const char *to, bs_statu
     free(t);
 }
 
+/* The cone's B-rep with its cone (194) of form 0, unparametrised: the trims projected from the
+ * edges' 3-D curves give the same area and volume. */
+static void test_unparametrised(void)
+{
+    char path[512];
+    (void)snprintf(path, sizeof path, "%s/cone-brep.igs", BS_CAD_DIR);
+    FILE *f = fopen(path, "rb");
+    char *t = malloc(1 << 16);
+    size_t len = f != NULL && t != NULL ? fread(t, 1, (1 << 16) - 1, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    t[len] = '\0';
+    char *at = strstr(t, "     194       0       0       1       1");
+    CHECK(at != NULL);
+    if (at != NULL) {
+        at[39] = '0';
+        bs_parse_error err;
+        bs_model *m = NULL;
+        bs_status st = bs_model_read_iges(t, len, &err, &m);
+        double area = NAN, volume = NAN;
+        CHECKF(st == BS_OK && bs_model_properties(m, 1e-9, &area, &volume, NULL) == BS_OK &&
+                   fabs(area - 173.03535931497038) < 1e-6 && fabs(volume - 153.93804002589985) < 1e-6,
+               "cone of form 0: status %d (%s), area %.12g, volume %.12g", (int)st, err.message, area, volume);
+        bs_model_destroy(m);
+    }
+    free(t);
+}
+
 static void test_spoiled_parts(void)
 {
     spoiled("cone-brep", "508,4,0,17,1,0,1", "508,4,0,17,9,0,1", BS_ERR_PARSE, "edge 9 of a list of 3");
@@ -544,6 +572,7 @@ int main(void)
     test_entities();
     test_refusals();
     test_spoiled_parts();
+    test_unparametrised();
     if (!bs_test_quick())
         test_sweeps();
     test_parts();
