@@ -4,6 +4,7 @@
 #include "io/iges_model.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -211,6 +212,17 @@ static bs_status bspline_126(igm *m, size_t s, iges_stream *st, bsi_curve *out)
     return r;
 }
 
+bs_status bsi_igm_spend(igm *m, size_t s, size_t c)
+{
+    size_t cost = 1, cap = m->g.len < SIZE_MAX / 8 ? 8 * m->g.len : SIZE_MAX;
+    for (size_t k = 0; k < m->slot[c].npieces; k++)
+        cost += m->slot[c].pieces[k].axis.n * (m->slot[c].pieces[k].degree + 1);
+    if (cost > cap - m->copies)
+        return bsi_igm_fail(m, s, 1, "curves reused more often than the file's size allows");
+    m->copies += cost;
+    return BS_OK;
+}
+
 static bs_status composite_102(igm *m, size_t s, iges_stream *st, int depth)
 {
     long n;
@@ -221,9 +233,8 @@ static bs_status composite_102(igm *m, size_t s, iges_stream *st, int depth)
         if ((r = bsi_igm_ptr(m, s, st, "a curve pointer", 0, &c, NULL)) != BS_OK ||
             (r = bsi_igm_curve(m, c, depth + 1)) != BS_OK)
             return r;
-        if (m->slot[c].npieces > m->g.len / 2 - m->copies) /* nested composites reusing curves */
-            return bsi_igm_fail(m, s, 1, "composite curves of more pieces than the file's size allows");
-        m->copies += m->slot[c].npieces;
+        if ((r = bsi_igm_spend(m, s, c)) != BS_OK)
+            return r;
         for (size_t i = 0; i < m->slot[c].npieces && r == BS_OK; i++)
             if ((r = more_pieces(e)) == BS_OK && (r = bsi_curve_copy(&m->slot[c].pieces[i], &e->pieces[e->npieces])) == BS_OK)
                 e->npieces++;

@@ -46,7 +46,7 @@ typedef struct igm {
     bs_model *model;
     bsi_growing vals;      /* scratch reals */
     int named;             /* the error message names its entity */
-    size_t copies;         /* pieces copied into composites: at most half the file's bytes */
+    size_t copies;         /* control points copied into composites and trims (bsi_igm_spend) */
 } igm;
 
 /* ---- iges_model.c ---- */
@@ -72,6 +72,9 @@ bs_status bsi_igm_matrix(igm *m, size_t s, double *mat);
 void bsi_igm_move(bsi_curve *c, const double *mat);
 /* The curve of slot s (100, 102, 104, 110, 126), built once. */
 bs_status bsi_igm_curve(igm *m, size_t s, int depth);
+/* Count the control points of slot c's pieces as copied once more by entity s: BS_ERR_PARSE past
+ * 8 per byte of the file (curves reused so often that copies would outgrow the input). */
+bs_status bsi_igm_spend(igm *m, size_t s, size_t c);
 /* A 2-D curve (p -> (A p) of rows A[0..3], A[4..7]) of a 3-D piece. */
 bs_status bsi_igm_curve2(const bsi_curve *c, const double *a, bsi_curve *out);
 

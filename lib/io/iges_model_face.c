@@ -125,6 +125,8 @@ bs_status bsi_igm_trims(igm *m, size_t s, size_t ss, size_t c, int space, int re
                         igm_acc *a)
 {
     bs_status r = bsi_igm_curve(m, c, 0);
+    if (r == BS_OK)
+        r = bsi_igm_spend(m, s, c);
     if (r != BS_OK)
         return r;
     const igm_slot *ce = &m->slot[c];

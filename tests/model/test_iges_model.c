@@ -501,14 +501,14 @@ static void test_refusals(void)
         f[one[k].at] = one[k].e;
         refused(f, 9, 0, one[k].st, one[k].words);
     }
-    /* composites of composites, each holding the one before twice: 2048 pieces from 15 entities */
-    ent nest[15] = {square[0], square[1], {142, 0, 0, "142,0,3,0,29,2;"}, {110, 0, 0, "110,0.,0.,0.,1.,0.,0.;"}};
-    char pars[11][32];
-    for (int k = 1; k <= 11; k++) {
+    /* composites of composites, each holding the one before twice: 32768 lines from 19 entities */
+    ent nest[19] = {square[0], square[1], {142, 0, 0, "142,0,3,0,37,2;"}, {110, 0, 0, "110,0.,0.,0.,1.,0.,0.;"}};
+    char pars[15][32];
+    for (int k = 1; k <= 15; k++) {
         (void)snprintf(pars[k - 1], sizeof pars[k - 1], "102,2,%d,%d;", 5 + 2 * k, 5 + 2 * k);
         nest[3 + k] = (ent){102, 0, 0, pars[k - 1]};
     }
-    refused(nest, 15, 0, BS_ERR_PARSE, "more pieces than the file's size allows");
+    refused(nest, 19, 0, BS_ERR_PARSE, "curves reused more often than the file's size allows");
     /* the 128 bounded by its own range, spoiled */
     static const char *const bad128[][2] = {
         {"128,1,1,2,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;",
