@@ -4,6 +4,7 @@
 #include "io/iges_model.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -211,6 +212,18 @@ static bs_status face_box(igm *m, size_t s, igm_surface *sf, const igm_acc *a, d
     return BS_OK;
 }
 
+/* The patches a face added since `before` counted against the copies the file allows (16 points
+ * each): a large surface trimmed by many faces cannot outgrow the input either. */
+static bs_status spend_patches(igm *m, size_t s, size_t before)
+{
+    size_t added = bs_surface_count(bs_model_surface(m->model)) - before;
+    size_t cap = m->g.len < SIZE_MAX / 8 ? 8 * m->g.len : SIZE_MAX;
+    if (added > (cap - m->copies) / 16)
+        return bsi_igm_fail(m, s, 1, "surfaces reused more often than the file's size allows");
+    m->copies += 16 * added;
+    return BS_OK;
+}
+
 bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed, size_t shell)
 {
     igm_surface *sf = m->slot[ss].surf;
@@ -234,9 +247,10 @@ bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed
     spec.loop_len = a->lens.data;
     spec.nloop = a->lens.n;
     spec.box = box;
+    size_t before = bs_surface_count(bs_model_surface(m->model));
     r = bsi_model_add_face(m->model, &spec, NULL);
     a->trims.n = 0; /* moved or freed */
-    return bsi_igm_name(m, s, r);
+    return r == BS_OK ? spend_patches(m, s, before) : bsi_igm_name(m, s, r);
 }
 
 /* The loop of the surface's own boundary: its native box's four sides. */
@@ -392,5 +406,7 @@ bs_status bsi_igm_untrimmed(igm *m, size_t s, size_t shell)
     spec.shell = shell;
     spec.box = sf->box;
     m->slot[s].used = 1;
-    return bsi_igm_name(m, s, bsi_model_add_face(m->model, &spec, NULL));
+    size_t before = bs_surface_count(bs_model_surface(m->model));
+    r = bsi_model_add_face(m->model, &spec, NULL);
+    return r == BS_OK ? spend_patches(m, s, before) : bsi_igm_name(m, s, r);
 }

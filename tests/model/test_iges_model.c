@@ -531,6 +531,24 @@ static void test_refusals(void)
     b143[0] = (ent){143, 0, 0, "143,1,3,1,17;"};
     b143[8] = (ent){141, 0, 0, "141,1,2,5,1,7,1,0;"};
     refused(b143, 9, 0, BS_ERR_PARSE, "not DE 3 of its face");
+    /* a 128 of 1000 spans bounded by its own range in 40 faces: copies past 8 points per byte */
+    char *wide = malloc(64 * 1024);
+    size_t w = (size_t)sprintf(wide, "128,1000,1,1,1,0,0,1,0,0,0.,0.");
+    for (int k = 1; k < 1000; k++)
+        w += (size_t)sprintf(wide + w, ",%d.", k);
+    w += (size_t)sprintf(wide + w, ",1000.,1000.,0.,0.,1.,1.");
+    for (int k = 0; k < 2002; k++)
+        w += (size_t)sprintf(wide + w, ",1.");
+    for (int j = 0; j < 2; j++)
+        for (int k = 0; k <= 1000; k++)
+            w += (size_t)sprintf(wide + w, ",%d.,%d.,0.", k, j);
+    (void)sprintf(wide + w, ",0.,1000.,0.,1.;");
+    ent many[41];
+    many[0] = (ent){128, 0, 0, wide};
+    for (size_t k = 1; k < 41; k++)
+        many[k] = (ent){144, 0, 0, "144,1,0,0,0;"};
+    refused(many, 41, 0, BS_ERR_PARSE, "surfaces reused more often than the file's size allows");
+    free(wide);
     /* the 1.1 reader sends files of trimmed surfaces here */
     size_t len;
     char *t = iges_text(square, 8, 0, &len);
