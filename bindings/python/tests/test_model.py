@@ -32,6 +32,21 @@ def ref_values(part):
     return out
 
 
+def reference_tolerance(part, name):
+    """How closely a file's area and volume can match the kernel's: 1e-9, except where the file
+    holds fewer digits (the 144 files write about 10 significant digits) and where the kernel's
+    own value is off (docs/models.md: the duct's area and the bell's volume, ours stable to 1e-15
+    from rel_tol 1e-8 to 1e-12 and the same from every file)."""
+    rel = {"area": 1e-9, "volume": 1e-9}
+    if name.endswith(".igs") and "brep" not in name:
+        rel = {"area": 1e-7, "volume": 1e-7}
+    if part == "duct":
+        rel["area"] = 1e-7
+    if part == "bell":
+        rel["volume"] = 1e-7
+    return rel
+
+
 def cube():
     """A unit cube of six bilinear patches."""
     c = [[[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0]], [[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]],
@@ -122,8 +137,11 @@ class CadPartsTest(PlainTestCase):
                         self.assertTrue(all(m.shells), m.shells)
                     ref = ref_values(part)
                     p = m.properties(1e-10)
-                    self.assertAlmostEqual(p.area, ref["area"], delta=1e-9 * ref["area"])
-                    self.assertAlmostEqual(p.volume, ref["volume"], delta=1e-9 * ref["volume"])
+                    rel = reference_tolerance(part, name)
+                    self.assertAlmostEqual(p.area, ref["area"], delta=rel["area"] * ref["area"])
+                    if all(m.shells):
+                        self.assertAlmostEqual(p.volume, ref["volume"],
+                                               delta=rel["volume"] * ref["volume"])
 
     def test_points_of_a_sphere(self):
         m = bezsurf.Model.read(CAD_DIR / "sphere.step")
