@@ -1,18 +1,120 @@
-/* STEP reader (to be written). */
-#include "io/internal.h"
-#include "model/internal.h"
+/* Reading STEP (ISO 10303-21) B-rep models: the text parsed into instances (step_lex.c), then each
+ * shell of the file (CLOSED_SHELL, OPEN_SHELL: those of MANIFOLD_SOLID_BREP, BREP_WITH_VOIDS and
+ * SHELL_BASED_SURFACE_MODEL alike) one shell of the model, each of its faces read by step_topo.c.
+ * Instances the model does not need (product data, presentation, colours) are never looked at. */
+#include "io/step.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The extent of the file's 3-D points, and from it the tolerance of computed trims. */
+static void extent(stp *s)
+{
+    for (int c = 0; c < 3; c++) {
+        s->lo[c] = INFINITY;
+        s->hi[c] = -INFINITY;
+    }
+    for (size_t i = 0; i < s->inst.n; i++) {
+        double p[3];
+        size_t list, n;
+        if (!bsi_stp_part(s, i, "CARTESIAN_POINT", &list) || !bsi_stp_arg(s, list, 1, &n) ||
+            stp_at(s, n)->kind != STP_LIST || stp_at(s, n)->count != 3 || bsi_stp_point(s, i, 3, p) != BS_OK)
+            continue;
+        for (int c = 0; c < 3; c++) {
+            s->lo[c] = fmin(s->lo[c], p[c]);
+            s->hi[c] = fmax(s->hi[c], p[c]);
+        }
+    }
+    double d = 0.0;
+    for (int c = 0; c < 3; c++)
+        if (s->hi[c] >= s->lo[c])
+            d = hypot(d, s->hi[c] - s->lo[c]);
+    s->tol = 1e-7 * (d > 0.0 ? d : 1.0);
+}
+
+/* The faces of shell instance i as model shell `shell`. */
+static bs_status shell_faces(stp *s, size_t i, size_t shell, size_t *nface)
+{
+    size_t list, faces, n;
+    bs_status st;
+    if (!bsi_stp_part(s, i, "CLOSED_SHELL", &list) && !bsi_stp_part(s, i, "OPEN_SHELL", &list))
+        return BS_OK;
+    if ((st = bsi_stp_list(s, i, list, 1, "the faces", &faces)) != BS_OK)
+        return st;
+    for (size_t k = 0; bsi_stp_arg(s, faces, k, &n); k++) {
+        size_t f;
+        if ((st = bsi_stp_deref(s, i, n, "a face", &f)) != BS_OK)
+            return st;
+        if (bsi_stp_is(s, f, "ORIENTED_FACE"))
+            return bsi_stp_fail(s, f, "%s", "oriented faces are not supported");
+        if (!bsi_stp_is(s, f, "ADVANCED_FACE") && !bsi_stp_is(s, f, "FACE_SURFACE"))
+            return bsi_stp_fail(s, i, "#%zu is not a face", stp_inst_at(s, f)->id);
+        if ((st = bsi_stp_face(s, f, shell)) != BS_OK)
+            return st;
+        (*nface)++;
+    }
+    return BS_OK;
+}
+
+static bs_status read_model(stp *s)
+{
+    bs_status st = bsi_stp_lex(s);
+    if (st != BS_OK || (st = bsi_stp_index(s)) != BS_OK || (st = bsi_stp_units(s)) != BS_OK)
+        return st;
+    extent(s);
+    if ((st = bsi_model_create(&s->model)) != BS_OK)
+        return st;
+    size_t shells = 0, nface = 0, advanced = 0;
+    for (size_t i = 0; i < s->inst.n && st == BS_OK; i++) {
+        advanced += (size_t)bsi_stp_is(s, i, "ADVANCED_FACE");
+        if (bsi_stp_is(s, i, "CLOSED_SHELL") || bsi_stp_is(s, i, "OPEN_SHELL"))
+            st = shell_faces(s, i, shells++, &nface);
+    }
+    if (st != BS_OK)
+        return st;
+    if (nface == 0)
+        return bsi_fail(s->err, 1, 1, "no B-rep faces: %zu ADVANCED_FACE in %zu shells among %zu entities", advanced,
+                        shells, s->inst.n);
+    return bsi_model_finish(s->model);
+}
 
 bs_status bs_model_read_step(const char *text, size_t len, bs_parse_error *err, bs_model **out)
 {
-    (void)text; (void)len;
     if (out != NULL)
         *out = NULL;
-    (void)bsi_fail(err, 0, 0, "STEP files are not read yet");
-    return BS_ERR_UNSUPPORTED;
+    if (out == NULL || (text == NULL && len > 0))
+        return BS_ERR_INVALID_ARG;
+    if (len > BSI_FILE_MAX) {
+        (void)bsi_fail(err, 1, 1, "%s", "text longer than 256 MiB");
+        return BS_ERR_SIZE;
+    }
+    stp s;
+    memset(&s, 0, sizeof s);
+    s.text = text != NULL ? text : "";
+    s.len = len;
+    s.err = err;
+    bs_status st = read_model(&s);
+    if (st == BS_OK)
+        *out = s.model;
+    else
+        bs_model_destroy(s.model);
+    s.model = NULL;
+    bsi_stp_free(&s);
+    return st;
 }
 
 bs_status bs_model_read_step_file(const char *path, bs_parse_error *err, bs_model **out)
 {
-    (void)path;
-    return bs_model_read_step(NULL, 0, err, out);
+    if (out != NULL)
+        *out = NULL;
+    if (path == NULL || out == NULL)
+        return BS_ERR_INVALID_ARG;
+    char *buf = NULL;
+    size_t len = 0;
+    bs_status st = bsi_read_file(path, err, &buf, &len);
+    if (st == BS_OK)
+        st = bs_model_read_step(buf, len, err, out);
+    free(buf);
+    return st;
 }

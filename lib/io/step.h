@@ -1,0 +1,144 @@
+/*
+ * The STEP reader (ISO 10303-21), private to lib/io/:
+ *   step_lex.c      the text -> instances, their parameters stored flat (one node per value)
+ *   step_parse.c    the entity index, typed access to parameters, units
+ *   step_curve.c    curves (3-D edges and 2-D parameter-space curves) and their parameters
+ *   step_surface.c  surfaces -> bsi_surface_def
+ *   step_topo.c     faces: loops of oriented edges, their trims
+ *   step_read.c     the entry points: shells and solids of the file
+ * Memory: at most one node (24 bytes) per byte of the DATA section plus one instance record per
+ * instance; nothing is sized from a count written in the file.
+ */
+#ifndef BEZSURF_IO_STEP_H
+#define BEZSURF_IO_STEP_H
+
+#include "io/internal.h"
+#include "model/internal.h"
+
+#include <stdint.h>
+
+#define STP_NEST_MAX 32 /* deepest nesting of parameter lists accepted */
+#define STP_DEPTH 16    /* deepest chain of curve references followed (trimmed of trimmed ...) */
+
+enum { STP_INT, STP_REAL, STP_STR, STP_ENUM, STP_REF, STP_LIST, STP_UNSET, STP_DERIVED, STP_TYPED };
+
+/* One parameter value. A LIST's children follow it; a TYPED value (KEYWORD(...), also each part of
+ * a complex instance) is followed by its one LIST. */
+typedef struct stp_node {
+    unsigned char kind;
+    uint32_t span;   /* nodes of this subtree, itself included */
+    uint32_t count;  /* LIST: children */
+    uint32_t len;    /* STR, ENUM, TYPED: text length */
+    union {
+        double num;  /* INT, REAL */
+        size_t ref;  /* REF: the entity number */
+        size_t off;  /* STR, ENUM, TYPED: text offset */
+    } v;
+} stp_node;
+
+/* One instance #id = ...: root is a TYPED node (simple) or a LIST of TYPED nodes (complex). */
+typedef struct stp_inst {
+    size_t id;
+    size_t root;
+    uint32_t line, col;
+} stp_inst;
+
+typedef struct stp {
+    const char *text;
+    size_t len;
+    bs_parse_error *err;
+    bsi_growing nodes;    /* stp_node */
+    bsi_growing inst;     /* stp_inst, in file order */
+    size_t *order;        /* instance indices sorted by id */
+    /* units: radians per plane angle unit of the file */
+    double angle;
+    double tol;           /* 3-D tolerance for computed trims: 1e-7 of the points' extent */
+    double lo[3], hi[3];  /* extent of the file's 3-D points */
+    bs_model *model;
+    uint32_t *edge_id;    /* per instance: its model edge (EDGE_CURVE), BSI_NO_EDGE before use */
+    unsigned char *busy;  /* per instance: being resolved (reference cycles) */
+} stp;
+
+/* ---- step_lex.c ---- */
+/* Parse the whole text into s->nodes and s->inst (s->text, len and err set). */
+bs_status bsi_stp_lex(stp *s);
+
+/* ---- step_parse.c ---- */
+static inline const stp_node *stp_at(const stp *s, size_t n) { return (const stp_node *)s->nodes.data + n; }
+static inline const stp_inst *stp_inst_at(const stp *s, size_t i) { return (const stp_inst *)s->inst.data + i; }
+/* Sort the index; BS_ERR_PARSE for a number defined twice. */
+bs_status bsi_stp_index(stp *s);
+void bsi_stp_free(stp *s);
+/* The instance of entity number id: 1 and *i, or 0. */
+int bsi_stp_find(const stp *s, size_t id, size_t *i);
+/* 1 when instance i is (or, complex, has a part) named name. */
+int bsi_stp_is(const stp *s, size_t i, const char *name);
+/* The name of instance i (its first part's for complex ones), and its length. */
+const char *bsi_stp_name(const stp *s, size_t i, int *len);
+/* The LIST node of the part `name` of instance i (a simple instance of that name, or a part of a
+ * complex one): 1 and *list, else 0. */
+int bsi_stp_part(const stp *s, size_t i, const char *name, size_t *list);
+/* The k-th child node of LIST node list: 1 and *node, or 0 past the end. */
+int bsi_stp_arg(const stp *s, size_t list, size_t k, size_t *node);
+/* Fail at instance i's line and column, the message prefixed with "#id NAME: ". */
+bs_status bsi_stp_fail(const stp *s, size_t i, const char *fmt, ...);
+/* Argument k of list (of instance i) as a number / an entity reference (its instance) / a LIST node
+ * / an enumeration (1 .T., 0 .F.) : BS_ERR_PARSE naming `what` otherwise. */
+bs_status bsi_stp_num(const stp *s, size_t i, size_t list, size_t k, const char *what, double *x);
+bs_status bsi_stp_ref(const stp *s, size_t i, size_t list, size_t k, const char *what, size_t *ref);
+bs_status bsi_stp_list(const stp *s, size_t i, size_t list, size_t k, const char *what, size_t *node);
+bs_status bsi_stp_bool(const stp *s, size_t i, size_t list, size_t k, const char *what, int *b);
+/* The reference held by node n: 1 and its instance, 0 when n is not a reference; a reference to an
+ * undefined number fails (BS_ERR_PARSE, instance i named). */
+bs_status bsi_stp_deref(const stp *s, size_t i, size_t n, const char *what, size_t *ref);
+/* The plane angle unit of the file into s->angle (1 when none is found). */
+bs_status bsi_stp_units(stp *s);
+
+/* ---- step_curve.c ---- */
+enum { STP_LINE, STP_CONIC, STP_BSPLINE };
+/* A curve of the file in its own parameter (conics: angles in the file's unit). */
+typedef struct stp_curve {
+    int kind;
+    size_t dim;
+    double p[3], d[3];                    /* LINE: point + t d */
+    double c[3], x[3], y[3], rx, ry;      /* CONIC: c + rx cos(t a) x + ry sin(t a) y, a = s->angle */
+    size_t degree, count;
+    double *data;                         /* BSPLINE: knots (count + degree + 1), points, weights */
+    double *knots, *ctrl, *weights;       /* into data; weights NULL when not rational */
+} stp_curve;
+
+void bsi_stp_curve_free(stp_curve *c);
+/* The curve of instance i (LINE, CIRCLE, ELLIPSE, B-spline with knots, rational or not; TRIMMED_CURVE
+ * gives its basis) in dim (2 or 3) coordinates. */
+bs_status bsi_stp_curve(stp *s, size_t i, size_t dim, int depth, stp_curve *out);
+/* The period of the curve's parameter (conics), else 0; its natural domain into lo, hi. */
+double bsi_stp_curve_period(const stp *s, const stp_curve *c, double *lo, double *hi);
+/* The parameter of the point of c nearest to p (dim coordinates). */
+double bsi_stp_curve_param(const stp *s, const stp_curve *c, const double *p);
+/* The curve over [t0, t1] as a bsi_curve (B-splines: the range clamped to the knots' domain). */
+bs_status bsi_stp_curve_make(const stp *s, const stp_curve *c, double t0, double t1, bsi_curve *out);
+/* A CARTESIAN_POINT (dim coordinates), a DIRECTION (unit), a placement (AXIS2_PLACEMENT_3D or 2D:
+ * origin, x and y = z cross x in frame f; 2D: z unused). */
+bs_status bsi_stp_point(const stp *s, size_t i, size_t dim, double *p);
+bs_status bsi_stp_direction(const stp *s, size_t i, size_t dim, double *d);
+bs_status bsi_stp_placement(const stp *s, size_t i, size_t dim, bsi_frame *f);
+
+/* ---- step_surface.c ---- */
+typedef struct stp_surf {
+    bsi_surface_def def;
+    bsi_curve curve;      /* REVOLUTION, EXTRUSION: the swept curve def.curve points to */
+    bs_bspline b;         /* BSPLINE: def.bspline points to it */
+    double *data;         /* b's arrays, owned */
+    double scale[2];      /* file parameter -> native (the angle unit on angular directions) */
+    double dom[4];        /* natural native domain (+-inf where unbounded) */
+} stp_surf;
+
+void bsi_stp_surf_free(stp_surf *sf);
+/* The surface of instance i. BS_ERR_UNSUPPORTED naming others. */
+bs_status bsi_stp_surface(stp *s, size_t i, stp_surf *out);
+
+/* ---- step_topo.c ---- */
+/* The face of instance i (ADVANCED_FACE or FACE_SURFACE) into shell `shell`. */
+bs_status bsi_stp_face(stp *s, size_t i, size_t shell);
+
+#endif
