@@ -234,6 +234,19 @@ static bs_status loop_trims(stp *s, size_t lp, size_t surf, const stp_surf *sf, 
         /* room for each trim and a closing line after it */
         st = bsi_grow(g, sizeof(bsi_trim), 2 * count);
     }
+    if (st == BS_OK && sf->def.kind != BS_FACE_PLANE) {
+        /* projected trims: across seams by whole periods, before the gaps are judged */
+        int computed = 0;
+        for (size_t k = 0; k < count; k++)
+            computed |= slots[k].trim.computed;
+        bsi_trim *loop = (bsi_trim *)g->data + g->n + count; /* the second half of the room */
+        for (size_t k = 0; computed && k < count; k++)
+            loop[k] = slots[k].trim;
+        if (computed)
+            bsi_pcurve_close_loop_def(&sf->def, 0, NULL, s->tol, loop, count);
+        for (size_t k = 0; computed && k < count; k++)
+            slots[k].trim = loop[k];
+    }
     for (size_t k = 0; k < count && st == BS_OK; k++) {
         bsi_trim *out = (bsi_trim *)g->data;
         out[g->n++] = slots[k].trim;
@@ -255,8 +268,6 @@ static bs_status loop_trims(stp *s, size_t lp, size_t surf, const stp_surf *sf, 
     for (size_t k = 0; k < made; k++)
         slot_free(&slots[k]);
     free(slots);
-    if (st == BS_OK && sf->def.kind != BS_FACE_PLANE)
-        bsi_pcurve_close_loop_def(&sf->def, 0, NULL, s->tol, (bsi_trim *)g->data + first, g->n - first);
     return st;
 }
 
@@ -273,6 +284,43 @@ static double loop_box_area(const bsi_trim *t, size_t n)
         }
     }
     return (hi[0] - lo[0]) * (hi[1] - lo[1]);
+}
+
+/* A face bounded by vertex loops only (a whole sphere or torus): the loop of its natural
+ * domain's four sides, the two sides of a periodic direction one seam edge, the others (a
+ * sphere's poles) without an edge. BS_ERR_PARSE when the surface's domain is not bounded. */
+static bs_status domain_loop(stp *s, size_t i, const stp_surf *sf, bsi_growing *g, size_t *len)
+{
+    double pu, pv, box[4];
+    bsi_surface_def_periods(&sf->def, &pu, &pv);
+    box[0] = pu > 0.0 ? 0.0 : sf->dom[0];
+    box[1] = pu > 0.0 ? pu : sf->dom[1];
+    box[2] = pv > 0.0 ? 0.0 : sf->dom[2];
+    box[3] = pv > 0.0 ? pv : sf->dom[3];
+    if (!(isfinite(box[0]) && isfinite(box[1]) && isfinite(box[2]) && isfinite(box[3])))
+        return bsi_stp_fail(s, i, "%s", "a face without edges on an unbounded surface");
+    uint32_t seam_u = BSI_NO_EDGE, seam_v = BSI_NO_EDGE;
+    bs_status st = BS_OK;
+    if (pu > 0.0)
+        st = bsi_model_add_edge(s->model, &seam_u);
+    if (st == BS_OK && pv > 0.0)
+        st = bsi_model_add_edge(s->model, &seam_v);
+    if (st != BS_OK || (st = bsi_grow(g, sizeof(bsi_trim), 4)) != BS_OK)
+        return st;
+    const double start[4][2] = {{box[0], box[2]}, {box[1], box[2]}, {box[1], box[3]}, {box[0], box[3]}};
+    const uint32_t edge[4] = {seam_v, seam_u, seam_v, seam_u};
+    for (int k = 0; k < 4; k++) {
+        const double *a = start[k], *b = start[(k + 1) % 4];
+        const double d[2] = {b[0] - a[0], b[1] - a[1]};
+        bsi_trim t;
+        memset(&t, 0, sizeof t);
+        t.edge = edge[k];
+        if ((st = bsi_curve_line(2, a, d, 0.0, 1.0, &t.uv)) != BS_OK)
+            return st;
+        ((bsi_trim *)g->data)[g->n++] = t;
+    }
+    *len = 4;
+    return BS_OK;
 }
 
 static void free_trims(bsi_growing *g)
@@ -323,6 +371,8 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
             outer = nloop;
         len[nloop++] = trims.n - before;
     }
+    if (st == BS_OK && nloop == 0 && (st = domain_loop(s, i, &sf, &trims, &len[0])) == BS_OK)
+        nloop = 1;
     if (st == BS_OK && nloop > 0) {
         /* the outer loop first: the marked one, else the one of the widest box */
         size_t *first = malloc(nloop * sizeof *first);
@@ -365,8 +415,6 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
         free(first);
         free(sorted);
         free(len2);
-    } else if (st == BS_OK) {
-        st = bsi_stp_fail(s, i, "%s", "a face without a loop of edges");
     }
     free(len);
     free_trims(&trims);
