@@ -8,7 +8,8 @@
  *     parameter space curves share its parametrisation), scaled to the face's native parameters;
  *     a SEAM_CURVE has two on the same surface: each use takes the one that continues the loop;
  *   - an edge without a PCURVE (files with 3-D edges only) is projected onto the surface
- *     (bsi_pcurve_project_def, within the reader's tolerance: 1e-7 of the file's extent).
+ *     (bsi_pcurve_project_def, within the reader's tolerance: 1e-7 of the file's extent); on a
+ *     plane the edge's own curve is its exact trim, whatever PCURVE the file gives.
  * Each EDGE_CURVE is one model edge; gaps in a loop (the poles, which the files leave out) are
  * closed by lines in parameter space.
  */
@@ -133,7 +134,9 @@ static bs_status edge_trim(stp *s, size_t oe, size_t surf, const stp_surf *sf, t
     int backwards = (orient == 0) != (same == 0);
     const double scale[6] = {sf->scale[0], 0.0, 0.0, 0.0, sf->scale[1], 0.0};
     int found = 0;
-    if (surface_curve && (st = bsi_stp_list(s, geom, glist, 2, "the parameter-space curves", &pcs)) == BS_OK) {
+    /* on a plane the edge's own curve in the plane's (u, v) is exact: no PCURVE needed */
+    if (sf->def.kind != BS_FACE_PLANE && surface_curve &&
+        (st = bsi_stp_list(s, geom, glist, 2, "the parameter-space curves", &pcs)) == BS_OK) {
         for (size_t k = 0; found < 2 && bsi_stp_arg(s, pcs, k, &n) && st == BS_OK; k++) {
             stp_curve c2;
             if ((st = bsi_stp_deref(s, geom, n, "a parameter-space curve", &pc)) != BS_OK ||
