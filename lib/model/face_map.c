@@ -33,6 +33,16 @@ static double into_box(double x, double lo, double hi, double period)
     return x < lo && x >= lo - slack ? lo : x > hi && x <= hi + slack ? hi : x;
 }
 
+/* x taken at the axis's end when it is outside by a rounding (the face's box comes from its
+ * trims, and a sweep's patches stop at its curve's range). */
+static double onto_axis(const bsi_axis *a, double x)
+{
+    if (a->n == 0)
+        return x;
+    double lo = a->breaks[0], hi = a->breaks[a->n], slack = 1e-9 * (hi - lo);
+    return x < lo && x >= lo - slack ? lo : x > hi && x <= hi + slack ? hi : x;
+}
+
 int bsi_face_locate(const bs_model *m, size_t f, double u, double v, uint32_t *patch, double *st)
 {
     const bsi_face *face = &m->faces[f];
@@ -45,7 +55,8 @@ int bsi_face_locate(const bs_model *m, size_t f, double u, double v, uint32_t *p
     }
     size_t i, j;
     double s, t;
-    if (!bsi_axis_locate(&face->au, u, &i, &s) || !bsi_axis_locate(&face->av, v, &j, &t))
+    if (!bsi_axis_locate(&face->au, onto_axis(&face->au, u), &i, &s) ||
+        !bsi_axis_locate(&face->av, onto_axis(&face->av, v), &j, &t))
         return 0;
     *patch = (uint32_t)(face->first_patch + i * face->av.n + j);
     st[0] = s;
@@ -70,7 +81,7 @@ int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p
     const bsi_face *face = &m->faces[f];
     u = into_box(u, face->box[0], face->box[1], face->period[0]);
     v = into_box(v, face->box[2], face->box[3], face->period[1]);
-    double cu = face->swap ? v : u, cv = face->swap ? u : v;
+    double cu = onto_axis(&face->au, face->swap ? v : u), cv = onto_axis(&face->av, face->swap ? u : v);
     size_t i, j;
     double s, t;
     if (!bsi_axis_locate(&face->au, cu, &i, &s) || !bsi_axis_locate(&face->av, cv, &j, &t))

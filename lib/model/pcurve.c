@@ -12,6 +12,7 @@
 #include <string.h>
 
 #define MAX_SEGMENTS 4096
+#define ON_SURFACE 1000.0 /* how far, in tol, an edge may lie off its surface */
 #define STACK 64     /* bisection depth: 2^-64 of a segment is far below any parameter step */
 #define CHAIN 4      /* continuation steps from one segment end to the next */
 
@@ -66,7 +67,10 @@ static bs_status project_node(const fitter *F, double t, const double *start, no
     bs_status st = bsi_pc_project(F->S, c, start, F->tol, out->uv, &out->dist, &out->pole);
     if (st != BS_OK)
         return st;
-    if (!(out->dist <= F->tol))
+    /* CAD edges lie on their faces only within the writer's tolerance (often 1e-5 of the part
+     * or more): an edge within 1000 tol (1e-4 D for the readers) is on the surface, and the fit
+     * follows its feet to tol beyond that distance */
+    if (!(out->dist <= ON_SURFACE * F->tol))
         return BS_ERR_DOMAIN;
     out->t = t;
     if (start != NULL && (out->pole & BSI_PC_POLE_U))
