@@ -57,6 +57,27 @@ static void derivatives(const fitter *F, node *a)
     derivative(F, a, 1);
 }
 
+/* A foot found on the far side of a closed, non-periodic surface's seam (a lofted tube whose
+ * first and last rows of control points agree), while the continuation comes from the near side:
+ * the same point on the near side, when the surface is there within tol of it. */
+static void across_seam(const bsi_pc_surf *S, const double *c, const double *start, node *out)
+{
+    for (int k = 0; k < 2; k++) {
+        double lo = S->box[2 * k], hi = S->box[2 * k + 1], width = hi - lo;
+        if (S->period[k] > 0.0 || !(width > 0.0) || !(fabs(out->uv[k] - start[k]) > 0.5 * width))
+            continue;
+        double uv[2] = {out->uv[0], out->uv[1]}, p[3], du[3], dv[3];
+        uv[k] = out->uv[k] - lo < hi - out->uv[k] ? hi - (out->uv[k] - lo) : lo + (hi - out->uv[k]);
+        if (!bsi_pc_eval(S, uv, p, du, dv))
+            continue;
+        double d = hypot(hypot(p[0] - c[0], p[1] - c[1]), p[2] - c[2]);
+        if (d <= out->dist + 1e-9 * S->scale) {
+            out->uv[k] = uv[k];
+            out->dist = d;
+        }
+    }
+}
+
 /* The foot of the edge's point at t (start: a nearby uv, or NULL) with its derivative along t.
  * At a pole the undefined parameter is taken from start. */
 static bs_status project_node(const fitter *F, double t, const double *start, node *out)
@@ -67,6 +88,8 @@ static bs_status project_node(const fitter *F, double t, const double *start, no
     bs_status st = bsi_pc_project(F->S, c, start, F->tol, out->uv, &out->dist, &out->pole);
     if (st != BS_OK)
         return st;
+    if (start != NULL)
+        across_seam(F->S, c, start, out);
     /* CAD edges lie on their faces only within the writer's tolerance (often 1e-5 of the part
      * or more): an edge within 1000 tol (1e-4 D for the readers) is on the surface, and the fit
      * follows its feet to tol beyond that distance */
