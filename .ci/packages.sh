@@ -21,7 +21,8 @@ echo "built $(basename "$deb") and $(basename "$tgz")"
 contents=$(dpkg-deb --contents "$deb")
 for want in 'usr/lib/.*/libbezsurf\.so\.1 ' 'usr/lib/.*/libbezsurf\.so ' 'usr/include/bezsurf\.h' \
     'usr/include/bezsurf/core\.h' 'usr/lib/.*/pkgconfig/bezsurf\.pc' \
-    'usr/lib/.*/cmake/bezsurf/bezsurfConfig\.cmake' 'usr/bin/bezsurf' 'usr/share/man/man1/bezsurf\.1'; do
+    'usr/lib/.*/cmake/bezsurf/bezsurfConfig\.cmake' 'usr/bin/bezsurf' 'usr/share/man/man1/bezsurf\.1\.gz' \
+    'usr/share/doc/bezsurf/copyright'; do
   echo "$contents" | grep -q "$want" || { echo "the .deb has no $want" >&2; exit 1; }
 done
 

@@ -230,6 +230,8 @@ void cli_print_double(double x)
 {
     /* The tool never sets a locale, so printf and strtod use the C notation. */
     char buf[40];
+    if (x == 0.0)
+        x = 0.0; /* -0 prints as 0: a zero coordinate has no sign worth reading */
     for (int prec = 15; prec <= 17; prec++) {
         snprintf(buf, sizeof buf, "%.*g", prec, x);
         if (prec == 17 || strtod(buf, NULL) == x)

@@ -17,11 +17,12 @@
 
 static const char usage[] =
     "usage: bezsurf render [options] [FILE]\n"
-    "Render a surface from a .bpt FILE ('-': standard input; default: the built-in teapot)\n"
-    "to a PNG picture.\n"
+    "Render a surface from FILE (.bpt, OBJ or IGES by its extension, or --from; '-': standard\n"
+    "input; default: the built-in teapot) to a PNG picture.\n"
     "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .png);\n"
     "                        '-': standard output (the report goes to stderr)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
+    "      --from FORMAT     read FILE as bpt, obj or iges whatever its extension\n"
     "      --size WxH        picture size in pixels (default 800x600, each 16..8192)\n"
     "  -a, --azimuth DEG     camera azimuth around the up axis (default -60)\n"
     "  -e, --elevation DEG   camera elevation above the horizon, -90..90 (default 25)\n"

@@ -8,8 +8,8 @@
 
 static const char usage[] =
     "usage: bezsurf tessellate [options] [FILE]\n"
-    "Tessellate a surface from a .bpt FILE ('-': standard input; default: the built-in\n"
-    "teapot) into a triangle mesh file.\n"
+    "Tessellate a surface from FILE (.bpt, OBJ or IGES by its extension, or --from; '-':\n"
+    "standard input; default: the built-in teapot) into a triangle mesh file.\n"
     "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .obj);\n"
     "                        '-': standard output (OBJ unless -f; the counts go to stderr)\n"
     "  -f, --format FMT      obj, ply (binary), ply-ascii or stl (default: from the output's\n"
@@ -21,6 +21,7 @@ static const char usage[] =
     "  -m, --method M        adaptive: per-patch (one rate per patch, default) or subdivide\n"
     "                        (a quadtree of sub-patches in each patch, fewer triangles)\n"
     "  -b, --builtin NAME    teapot, teacup or teaspoon instead of a file\n"
+    "      --from FORMAT     read FILE as bpt, obj or iges whatever its extension\n"
     "  -s, --strips          also build triangle strips (reported, not written)\n"
     "      --reverse         reverse the triangles' winding and the normals (the built-in\n"
     "                        teapot's patches face into the pot: --reverse faces it outwards)\n"

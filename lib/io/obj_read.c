@@ -439,7 +439,7 @@ static bs_status only_skipped(const obj *o)
     for (size_t e = 0, n = 0; e < 4; e++)
         if (o->skipped[e] > 0) {
             size_t at = strlen(msg);
-            snprintf(msg + at, sizeof msg - at, "%s%zu %s", n++ ? ", " : "", o->skipped[e], what[e]);
+            (void)snprintf(msg + at, sizeof msg - at, "%s%zu %s", n++ ? ", " : "", o->skipped[e], what[e]);
         }
     (void)bsi_fail(o->err, o->skip_line, o->skip_col, "%s", msg);
     return BS_ERR_UNSUPPORTED;

@@ -6,7 +6,7 @@ static void triple(bsi_sink *s, const char *tag, const double *x, size_t k)
     bsi_sink_str(s, tag);
     for (size_t c = 0; c < k; c++) {
         bsi_sink_str(s, " ");
-        bsi_sink_double(s, x[c], 17);
+        bsi_sink_double(s, x[c], 0); /* the shortest exact form, as the surface writers */
     }
     bsi_sink_str(s, "\n");
 }

@@ -2,6 +2,7 @@
 #include "mesh/sink.h"
 
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
 
 void bsi_sink_put(bsi_sink *s, const void *data, size_t n)
@@ -26,7 +27,15 @@ void bsi_sink_str(bsi_sink *s, const char *text)
 void bsi_sink_double(bsi_sink *s, double x, int digits)
 {
     char raw[64], out[64];
-    int n = snprintf(raw, sizeof raw, "%.*g", digits, x);
+    int n = snprintf(raw, sizeof raw, "%.*g", digits ? digits : 15, x);
+    /* digits 0: the fewest of 15, 16 and 17 that read back to the same bits (17 always do); the
+     * text is read back in the locale it was written in */
+    for (int prec = 16; digits == 0 && prec <= 17 && n > 0 && (size_t)n < sizeof raw; prec++) {
+        double back = strtod(raw, NULL);
+        if (memcmp(&back, &x, sizeof x) == 0) // NOLINT(bugprone-suspicious-memory-comparison,cert-exp42-c,cert-flp37-c): bits, for -0
+            break;
+        n = snprintf(raw, sizeof raw, "%.*g", prec, x);
+    }
     if (n < 0 || (size_t)n >= sizeof raw) {
         s->err = EIO;
         return;

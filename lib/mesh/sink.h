@@ -20,7 +20,8 @@ typedef struct bsi_sink {
 
 void bsi_sink_put(bsi_sink *s, const void *data, size_t n);
 void bsi_sink_str(bsi_sink *s, const char *text);
-/* A double in %.<digits>g form with '.' as decimal point whatever the C locale. */
+/* A double in %.<digits>g form with '.' as decimal point whatever the C locale; digits 0: the
+ * shortest exact form (the fewest of 15, 16 and 17 digits that read back to the same bits). */
 void bsi_sink_double(bsi_sink *s, double x, int digits);
 void bsi_sink_uint(bsi_sink *s, size_t x);
 void bsi_sink_f32le(bsi_sink *s, double x);

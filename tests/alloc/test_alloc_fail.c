@@ -334,7 +334,7 @@ static bs_status op_tessellate_subdivide(void)
     bs_tess_options_init(&o);
     o.method = BS_TESS_SUBDIVIDE;
     o.tolerance = 0.05;
-    o.flags = BS_TESS_STRIPS;
+    o.flags = BS_TESS_STRIPS | BS_TESS_REVERSE; /* the reversal allocates too */
     size_t nt = 7;
     bs_status st = bs_surface_tessellate_count(TEAPOT, &o, NULL, &nt);
     if (st != BS_OK) {

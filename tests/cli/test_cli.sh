@@ -56,6 +56,9 @@ expect 0 "eval with normals" -- "$tool" eval --normals --point 5 0.5 0.5
 checks=$((checks + 1))
 awk 'NF != 10 || ($7*$7 + $8*$8 + $9*$9 - 1)^2 > 1e-20 { exit 1 }' "$work/out" ||
     { fails=$((fails + 1)); echo "FAIL: normal line"; cat "$work/out"; }
+# a zero coordinate prints as 0, never -0 (patch 1 at (0.5, 0) has the normal (-0, -0, -1))
+expect 0 "eval without -0" -- "$tool" eval --normals --point 1 0.5 0
+check "[ \"\$(cat '$work/out')\" = '1 0.5 0 0 -1.403125 2.4984374999999996 0 0 -1 0' ]" "no -0: \$(cat '$work/out')"
 expect 2 "eval patch id out of range" -- "$tool" eval --point 32 0 0
 has err "patch id 32" "id message"
 expect 1 "eval without points" -- "$tool" eval

@@ -355,8 +355,33 @@ static void errors(const bs_mesh *m)
     CHECK_STATUS(bs_mesh_write(m, BS_MESH_STL, NULL), BS_ERR_INVALID_ARG);
 }
 
+/* OBJ numbers in their shortest exact form, as the surface writers print them: 1.4, not
+ * 1.3999999999999999; 0.1 + 0.2 needs 17 digits. */
+static void shortest_numbers(void)
+{
+    const double net[12] = {1.4, 0.1 + 0.2, -0.0, 1.4, 2, 0, 2.5, 0.1 + 0.2, 0, 2.5, 2, 0};
+    bs_patch *p = NULL;
+    bs_surface *s = NULL;
+    bs_mesh *m = NULL;
+    CHECK_STATUS(bs_patch_create(1, 1, 3, net, NULL, &p), BS_OK);
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
+    CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
+    CHECK_STATUS(bs_surface_tessellate_uniform(s, 1, 1, 0, &m), BS_OK);
+    size_t size = 0;
+    CHECK_STATUS(bs_mesh_write_memory(m, BS_MESH_OBJ, NULL, 0, &size), BS_OK);
+    char *text = calloc(size + 1, 1);
+    CHECK(text != NULL && bs_mesh_write_memory(m, BS_MESH_OBJ, text, size, &size) == BS_OK);
+    CHECKF(text && strstr(text, "\nv 1.4 0.30000000000000004 0\n") != NULL && strstr(text, "1.3999") == NULL,
+           "%s", text ? text : "");
+    free(text);
+    bs_mesh_destroy(m);
+    bs_surface_destroy(s);
+    bs_patch_destroy(p);
+}
+
 int main(int argc, char **argv)
 {
+    shortest_numbers();
     const char *dir = argc > 1 ? argv[1] : ".";
     bs_surface *s = test_load_bpt("teapot.bpt");
     CHECK(s != NULL);

@@ -214,7 +214,11 @@ class Mesh(Handle):
     def strips(self) -> List[List[int]]:
         """The triangle strips as lists of vertex indices. Triangle i of a strip s is
         (s[i], s[i+1], s[i+2]) for even i and (s[i+1], s[i], s[i+2]) for odd i; triangles with
-        a repeated index (at poles) are degenerate and to be dropped."""
+        a repeated index (at poles) are degenerate and to be dropped. A mesh made without
+        ``strips=True`` has none: ValueError (1.2; 1.1 returned [])."""
+        _, method, args = self._recipe
+        if not (args[2] if method == "uniform" else args[1]) & 2:  # BS_TESS_STRIPS
+            raise ValueError("the mesh was made without strips: tessellate with strips=True")
         nidx = int(LIB.bs_mesh_strip_index_count(self._ptr))
         nstart = self.strip_count + 1
         idx = B.UInt32Output(nidx, (nidx,), lists=True)

@@ -444,8 +444,8 @@ class Patch(Handle):
              dus.views if dus else None, dvs.views if dvs else None,
              nrm.views if nrm else None, kinds.address if kinds else None)
         if not derivatives and not normals:
-            return pos.result()
-        return Evaluation(*(x.result() if x is not None else None
+            return call.finish(pos.result())
+        return Evaluation(*(call.finish(x.result()) if x is not None else None
                             for x in (pos, dus, dvs, nrm, kinds)))
 
     # ---- exact operations -----------------------------------------------------------------
@@ -531,8 +531,17 @@ class Patch(Handle):
 
     def transform(self, affine: Nested) -> "Patch":
         """The patch with x -> A x + b applied to its net. ``affine`` is dim rows of dim+1
-        numbers, [A | b] (nested sequence or numpy array of shape (dim, dim+1))."""
+        numbers, [A | b] (nested sequence or numpy array of shape (dim, dim+1)), or the
+        homogeneous (dim+1) x (dim+1) matrix whose last row is 0 ... 0 1 (a 4 x 4 matrix for a
+        3-D patch, since 1.2); another last row is a ValueError (a projective map)."""
         dim = self.dim
+        rows: Any = affine if B.is_ndarray(affine) else list(affine)
+        if len(rows) == dim + 1:
+            last = [float(x) for x in rows[dim]]
+            if last != [0.0] * dim + [1.0]:
+                raise ValueError(f"affine: the last row of a {dim + 1} x {dim + 1} matrix must be "
+                                 f"{[0.0] * dim + [1.0]}, not {last}")
+            affine = rows[:dim]
         keep, address = B.packed_doubles(affine, (dim, dim + 1), "affine")
         out = ctypes.c_void_p()
         LIB.bs_patch_transform(self._ptr, address, ctypes.byref(out))
@@ -617,7 +626,14 @@ class _Call:
 
     def __init__(self, u: Params, v: Params, grid: bool = False,
                  inputs: Sequence[Tuple[str, Any]] = ()) -> None:
-        self.scalar = (not grid) and B.is_scalar(u) and B.is_scalar(v)
+        self.scalar = B.is_scalar(u) and B.is_scalar(v)
+        if not grid and B.is_scalar(u) != B.is_scalar(v):  # a scalar pairs with every value
+            n = B.doubles(v if B.is_scalar(u) else u, "v" if B.is_scalar(u) else "u").count
+            scalar: Any = u if B.is_scalar(u) else v
+            if B.is_scalar(u):
+                u = [float(scalar)] * n
+            else:
+                v = [float(scalar)] * n
         du = B.doubles(u, "u")
         dv = B.doubles(v, "v")
         self.inputs: List[Tuple[str, Any]] = [("u", du.keep), ("v", dv.keep)] + list(inputs)

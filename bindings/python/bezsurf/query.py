@@ -42,6 +42,17 @@ class RayHits(NamedTuple):
     t: Any
     normal: Any
 
+    @property
+    def hit(self) -> Any:
+        """Where a ray hit, so that a miss need not be spelled NO_PATCH (4294967295): a bool
+        numpy array of shape (n,) with numpy, else a list of bools (one bool for one ray;
+        since 1.2). ``hits.patch[hits.hit]`` are the patches hit."""
+        if isinstance(self.patch, (list, tuple)):
+            return [p != NO_PATCH for p in self.patch]
+        if B.is_ndarray(self.patch) and self.patch.ndim > 0:
+            return self.patch != NO_PATCH
+        return bool(self.patch != NO_PATCH)  # one ray: int or numpy scalar
+
 
 def _column(points: Any) -> Any:
     """The single column of an (n, 1) result as (n,)."""

@@ -441,6 +441,27 @@ class Surface(Handle):
         return self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
                          kind_out=kind_out)
 
+    def eval_grid(self, u: Params, v: Params, *, normals: bool = False,
+                  threads: int = 1) -> Any:
+        """Positions (or with ``normals`` an :class:`Evaluation` of positions, normals and
+        kinds) on the tensor grid u x v of every patch, through bs_surface_eval_grid (1.1) on
+        ``threads`` threads (0: one per CPU; the same bits for every count). Point (u[a], v[b])
+        of patch p is row (p * len(u) + a) * len(v) + b: with numpy an array of shape
+        (count * nu * nv, dim), reshape it to (count, nu, nv, dim)."""
+        threads = A.integer(threads, "threads")
+        call = _Call(u, v, grid=True)
+        n = len(self) * call.n
+        pos = B.Output(n, self.dim)
+        nrm = B.Output(n, 3) if normals else None
+        kinds = B.KindOutput(n, None) if normals else None
+        LIB.bs_surface_eval_grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views, None,
+                                 None, nrm.views if nrm else None,
+                                 kinds.address if kinds else None, threads)
+        if not normals:
+            return pos.result()
+        assert nrm is not None and kinds is not None
+        return Evaluation(pos.result(), None, None, nrm.result(), kinds.result())
+
     def continuity(self, tol: float = 1e-9, samples: int = 32) -> Continuity:
         """Shared and open edges of a 3-D surface and the continuity across each shared edge.
 

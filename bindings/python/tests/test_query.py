@@ -100,8 +100,11 @@ class LocatorTest(PlainTestCase):
         self.assertTrue(math.isnan(plain(hits.t)[2]))
         short = self.loc.intersect((0, 0, 100.0), (0, 0, -1.0), t_max=1.0)   # one ray
         self.assertEqual(short.patch, bezsurf.NO_PATCH)
+        self.assertEqual(plain(hits.hit), [False, True, False])   # the mask of the hits
+        self.assertIs(short.hit, False)
         # t_max = inf is "no limit" (1.2): the hit of the default range, not an invalid ray
         free = self.loc.intersect((0, 0, 100.0), (0, 0, -1.0))
+        self.assertIs(free.hit, True)
         for t_min, t_max in ((None, math.inf), (0.0, math.inf), (1.0, [math.inf])):
             hit = self.loc.intersect([(0, 0, 100.0)], [(0, 0, -1.0)], t_min=t_min, t_max=t_max)
             self.assertEqual(plain(hit.patch)[0], free.patch)

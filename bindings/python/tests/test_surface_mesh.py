@@ -152,6 +152,45 @@ class MeshTest(PlainTestCase):
                              [(-x, -y, -z) for x, y, z in plain(m.normals())])
         self.assertEqual(pot.tessellate_count(3, reverse=True), pot.tessellate_count(3))
 
+    def test_strips_of_a_mesh_made_without_them(self):
+        s = bezsurf.Surface([square(0)])
+        with self.assertRaisesRegex(ValueError, "without strips"):
+            s.tessellate(3).strips()
+        with self.assertRaisesRegex(ValueError, "without strips"):
+            s.tessellate_adaptive(0.1, threads=2).strips()
+        self.assertGreater(len(s.tessellate_adaptive(0.1, strips=True).strips()), 0)
+
+    def test_surface_grid_on_threads(self):
+        pot = bezsurf.Surface.builtin("teapot")
+        u, v = [0.0, 0.3, 1.0], [0.25, 0.5]
+        one = plain(pot.eval_grid(u, v))
+        self.assertEqual(len(one), 32 * 3 * 2)
+        self.assertEqual(plain(pot.eval_grid(u, v, threads=2)), one)
+        for p in (0, 31):
+            for a in range(3):
+                for b in range(2):
+                    self.assertEqual(one[(p * 3 + a) * 2 + b],
+                                     plain(pot.eval([p], [u[a]], [v[b]]))[0])
+        e = pot.eval_grid(u, v, normals=True, threads=2)
+        self.assertEqual(plain(e.position), one)
+        self.assertEqual(plain(e.normal)[7], plain(pot.eval_normal([1], [u[0]], [v[1]]).normal)[0])
+
+    def test_scalars_broadcast(self):
+        p = saddle(0)
+        self.assertEqual(plain(p.eval(0.5, [0.25, 0.75])), plain(p.eval([0.5, 0.5], [0.25, 0.75])))
+        self.assertEqual(plain(p.eval([0.25, 0.75], 1.0)), plain(p.eval([0.25, 0.75], [1.0, 1.0])))
+        s = bezsurf.Surface([p])
+        self.assertEqual(plain(s.eval(0, 0.5, [0.25, 0.75])), plain(p.eval(0.5, [0.25, 0.75])))
+        self.assertEqual(plain(p.eval_grid(0.5, 0.5)), plain(p.eval(0.5, 0.5)))  # one point: (3,)
+        self.assertEqual(len(plain(p.eval_grid([0.5], 0.5))), 1)
+
+    def test_transform_takes_a_homogeneous_matrix(self):
+        p = saddle(0)
+        m4 = [[0, -1, 0, 1], [1, 0, 0, 2], [0, 0, 2, 3], [0, 0, 0, 1]]
+        self.assertEqual(p.transform(m4).ctrl, p.transform(m4[:3]).ctrl)
+        with self.assertRaisesRegex(ValueError, "last row"):
+            p.transform([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]])
+
     def test_export(self):
         m = bezsurf.Surface([square(0)]).tessellate(1)
         obj = m.to_bytes("obj").decode()

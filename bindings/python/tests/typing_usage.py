@@ -36,7 +36,7 @@ def uses(path: str) -> None:
     assert_type(s.eval([0, 1], [0.5, 0.5], [0.5, 0.5]), Points)
     assert_type(s.eval(0, 0.5, 0.5), Point)
     assert_type(s.continuity().edges[0].side_a, bezsurf.Side)
-    with s.tessellate(8) as m:
+    with s.tessellate(8, strips=True) as m:
         assert_type(m.positions(), Points)
         assert_type(m.triangles(), IdRows)
         assert_type(m.patch_ids(), Ids)

@@ -110,6 +110,70 @@ impl Surface {
     }
 }
 
+impl Surface {
+    /// The same tensor grid of `u` x `v` parameters on every patch (`bs_surface_eval_grid`,
+    /// since 1.1), on up to `threads` threads (0: one per online CPU; 1 stays on the calling
+    /// thread), with the same bits for every count. Point (`u[a]`, `v[b]`) of patch p is output
+    /// point (p * nu + a) * nv + b: `out` needs room for `len() * nu * nv` points (positions,
+    /// partials, normals and kinds as for [`PatchRef::eval_grid`](crate::PatchRef::eval_grid)).
+    ///
+    /// ```
+    /// use bezsurf::{Outputs, Surface};
+    ///
+    /// let cup = Surface::builtin("teacup")?;
+    /// let (u, v) = ([0.0, 0.5, 1.0], [0.25, 0.75]);
+    /// let mut pos = vec![0.0; cup.len() * 3 * 2 * 3];
+    /// cup.eval_grid(&u, &v, Outputs::new().pos(&mut pos), 2)?;
+    /// let mut one = [0.0; 3];
+    /// cup.eval(&[5], &[0.5], &[0.75], Outputs::new().pos(&mut one))?;
+    /// let k = (5 * 3 + 1) * 2 + 1;
+    /// assert_eq!(&pos[3 * k..3 * k + 3], &one);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn eval_grid<'u, 'v>(
+        &self,
+        u: impl Into<Strided<'u>>,
+        v: impl Into<Strided<'v>>,
+        mut out: Outputs<'_>,
+        threads: usize,
+    ) -> Result<()> {
+        let (u, v) = (u.into(), v.into());
+        let (nu, nv) = (u.len(), v.len());
+        let dim = self.dim().max(1);
+        let pos = CPoints::new(out.pos.as_mut(), dim, "pos")?;
+        let du = CPoints::new(out.du.as_mut(), dim, "du")?;
+        let dv = CPoints::new(out.dv.as_mut(), dim, "dv")?;
+        let nrm = CPoints::new(out.nrm.as_mut(), 3, "normal")?;
+        let npts = self.len().checked_mul(nu).and_then(|x| x.checked_mul(nv)).ok_or_else(|| {
+            Error::argument_error(
+                crate::sys::BS_ERR_SIZE,
+                "v",
+                format!("makes {} x {nu} x {nv} grid points, more than usize holds", self.len()),
+            )
+        })?;
+        let kind = kind_ptr(out.kind.take(), npts)?;
+        let (u, v) = (u.as_cview(), v.as_cview());
+        // SAFETY: every view stays inside the slice it was built from; the outputs come from
+        // exclusive borrows and do not overlap; kind holds at least npts bytes.
+        check(unsafe {
+            crate::sys::bs_surface_eval_grid(
+                self.as_ptr(),
+                nu,
+                &u,
+                nv,
+                &v,
+                pos.as_ptr(),
+                du.as_ptr(),
+                dv.as_ptr(),
+                nrm.as_ptr(),
+                kind,
+                threads,
+            )
+        })
+        .map_err(|e| name_short_output(e, npts, &[&pos, &du, &dv, &nrm]))
+    }
+}
+
 /// An `InvalidArg` of a surface evaluator naming the first id that is not a patch of the surface.
 fn name_bad_id(e: Error, ids: &[u32], count: usize) -> Error {
     if e.kind() != ErrorKind::InvalidArg {
