@@ -15,7 +15,10 @@ vg = ["valgrind", "--quiet", "--error-exitcode=99", "--leak-check=full", "--show
       "--errors-for-leak-kinds=definite,indirect,possible", "--trace-children=yes",
       "--trace-children-skip=/bin/*,/usr/bin/*,/usr/local/bin/*,*/localedef"]
 failed, t0 = [], time.time()
-for t in tests:
+
+
+def run_one(t):
+    """One test under valgrind: (name, ok, seconds, note, output)."""
     props = {p["name"]: p["value"] for p in t.get("properties", [])}
     env = dict(os.environ)
     env["BS_TEST_QUICK"] = "1"  # the slowest tests check a smaller sample (tests/support/harness.h)
@@ -32,10 +35,17 @@ for t in tests:
     ok = r.returncode != 99
     note = "" if r.returncode == 0 or (skip is not None and r.returncode == int(skip)) else \
         f" (test exit {r.returncode} under valgrind: no memory error)"
-    print(f"{'ok  ' if ok else 'FAIL'} {t['name']:<28} {time.time() - start:6.1f}s{note}")
-    if not ok:
-        failed.append(t["name"])
-        print(r.stdout[-4000:])
+    return t["name"], ok, time.time() - start, note, r.stdout
+
+
+# valgrind runs one thread of its own per process: the tests run two at a time, one per core
+from concurrent.futures import ThreadPoolExecutor
+with ThreadPoolExecutor(max_workers=int(os.environ.get("MEMCHECK_JOBS", "2"))) as pool:
+    for name, ok, secs, note, out in pool.map(run_one, tests):
+        print(f"{'ok  ' if ok else 'FAIL'} {name:<28} {secs:6.1f}s{note}", flush=True)
+        if not ok:
+            failed.append(name)
+            print(out[-4000:])
 print(f"memcheck: {len(tests) - len(failed)}/{len(tests)} unit tests with 0 errors and 0 leaks "
       f"({time.time() - t0:.0f}s)")
 sys.exit(1 if failed else 0)
