@@ -40,8 +40,8 @@ def reference_tolerance(part, name):
     rel = {"area": 1e-9, "volume": 1e-9}
     if name.endswith(".igs") and "brep" not in name:
         rel = {"area": 1e-7, "volume": 1e-7}
-    if part == "duct":
-        rel["area"] = 1e-7
+    if part == "duct":  # and its files' B-spline trims agree only to 3e-9 with each other
+        rel = {"area": 1e-7, "volume": 1e-7}
     if part == "bell":
         rel["volume"] = 1e-7
     return rel
