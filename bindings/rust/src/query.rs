@@ -124,6 +124,25 @@ pub struct ClosestPoints {
     pub pos: Vec<f64>,
 }
 
+impl ClosestPoints {
+    /// The patch of answer `k` as [`Hit::patch`](crate::Hit::patch) gives one: `None` where
+    /// there is none (the `u32::MAX` of [`patch`](ClosestPoints::patch)), past the end, and for
+    /// the closest points of one patch (since 1.2).
+    ///
+    /// ```
+    /// use bezsurf::{Locator, Surface};
+    ///
+    /// let pot = Surface::builtin("teapot")?;
+    /// let found = Locator::new(&pot)?.closest_points(&[4.0, 1.0, 2.0])?;
+    /// assert!(found.patch_of(0).is_some_and(|p| (p as usize) < pot.len()));
+    /// assert_eq!(found.patch_of(1), None);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn patch_of(&self, k: usize) -> Option<u32> {
+        self.patch.get(k).copied().filter(|&p| p != u32::MAX)
+    }
+}
+
 /// Splits `points` (n points of `dim` coordinates, one after the other) into `dim` strided
 /// views, and makes room for the results.
 pub(crate) fn closest_buffers(points: &[f64], dim: usize) -> Result<(Vec<sys::bs_cview>, ClosestPoints)> {
