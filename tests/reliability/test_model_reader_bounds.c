@@ -5,7 +5,7 @@
  * that would take the live heap past 1 GiB, so that a reader which tried to allocate without
  * bound fails here instead of taking the machine down (and is reported: its peak is the cap).
  *
- * Inputs: every file of data/cad/ (the IGES B-reps also written as OBJ and read back), and
+ * Inputs: every file of data/cad/ (the IGES B-reps OBJ can hold also written as OBJ), and
  * hostile files made here: many tiny entities, deeply nested and very long STEP lists, an IGES
  * 144 pointing many times at one large 128, an OBJ B-spline surface of degree 64 whose control
  * points all name one vertex. Each is read at two sizes, a quarter and the whole, so growth
