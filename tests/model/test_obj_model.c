@@ -28,12 +28,19 @@ void *__wrap_malloc(size_t n)
 
 #define DATA BS_TEST_SOURCE_DIR "/data/obj/"
 
+/* A file's bytes, NUL-terminated for the string functions (the reader's buffer is not). */
 static char *slurp(const char *name, size_t *len)
 {
     char *text = NULL;
     *len = 0;
     CHECK_STATUS(bsi_read_file(name, NULL, &text, len), BS_OK);
-    return text;
+    char *z = realloc(text, *len + 1);
+    if (z == NULL) {
+        free(text);
+        return NULL;
+    }
+    z[*len] = '\0';
+    return z;
 }
 
 /* ---- exact comparison of two models (edge ids, shells and instances aside) ---- */
