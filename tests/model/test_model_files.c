@@ -254,14 +254,17 @@ static double rel(double x, double ref)
 }
 
 /* How close a file's area and volume can come to the kernel's (as bindings/python/tests/
- * test_model.py): 1e-9, except the 144 files, whose numbers carry about 10 digits, and the
- * kernel's own area of the duct and volume of the bell, which are off by more (ours agree between
- * files and tolerances to 1e-15). */
+ * test_model.py): 1e-9, except the 144 files, whose numbers carry about 10 digits; the files of
+ * 3-D edges, whose trims are computed to 1e-7 D of the edges (a trim 1e-7 D off moves the area
+ * by up to about 1e-8 of it); and the duct and the bell, whose files' B-spline trims agree with
+ * each other to 3e-9 and whose kernel values (the duct's area, the bell's volume) are off by
+ * 4e-8 and 2e-8 (ours are stable to 1e-15 between tolerances). */
 static void allowed(const char *part, const char *suffix, double *area_tol, double *volume_tol)
 {
-    int trimmed = strcmp(suffix, ".igs") == 0;
-    *area_tol = trimmed || strcmp(part, "duct") == 0 ? 1e-7 : 1e-9;
-    *volume_tol = trimmed || strcmp(part, "bell") == 0 ? 1e-7 : 1e-9;
+    int coarse = strcmp(suffix, ".igs") == 0 || strcmp(part, "duct") == 0 || strcmp(part, "bell") == 0;
+    int computed = strcmp(suffix, "-3d-edges.step") == 0;
+    *area_tol = coarse ? 1e-7 : computed ? 1e-8 : 1e-9;
+    *volume_tol = coarse ? 1e-7 : computed ? 1e-8 : 1e-9;
 }
 
 static void test_part(const char *part, int step_on, size_t n)
