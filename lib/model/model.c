@@ -205,7 +205,7 @@ static double model_diagonal(const bs_model *m)
  * judged at the ends and middle of each segment. */
 static int trim_degenerate(const bs_model *m, size_t f, const bsi_trim *t, double tol)
 {
-    double first[3], p[3], uv[2];
+    double first[3] = {0, 0, 0}, p[3] = {0, 0, 0}, uv[2];
     int have = 0;
     for (size_t k = 0; k < t->uv.axis.n; k++)
         for (int i = 0; i <= 2; i++) {
