@@ -289,6 +289,26 @@ BS_API bs_status bs_model_face_to_patch(const bs_model *m, size_t n, const uint3
                                         const bs_view *st);
 
 /**
+ * @brief Map points of the model's patches back to native face parameters: the inverse of
+ * bs_model_face_to_patch(), in closed form (linear along straight directions and knot spans, the
+ * inverse tangent-half-angle map along angular ones).
+ * Local (s,t) outside [0,1] or NaN give face UINT32_MAX and (u,v) NaN.
+ * @param[in]  m      the model.
+ * @param[in]  n      number of points.
+ * @param[in]  patch  n patch ids of bs_model_surface().
+ * @param[in]  s      n local s parameters.
+ * @param[in]  t      n local t parameters.
+ * @param[out] face   NULL or n face ids: the face holding each patch.
+ * @param[out] uv     NULL or 2 views of n: native (u,v) on that face.
+ * @return BS_OK; BS_ERR_INVALID_ARG for a NULL m, a NULL patch, s or t when n > 0, a misaligned
+ *         view or a patch id out of range; BS_ERR_SIZE for a view shorter than n.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_patch_to_face(const bs_model *m, size_t n, const uint32_t *patch,
+                                        const bs_cview *s, const bs_cview *t, uint32_t *face,
+                                        const bs_view *uv);
+
+/**
  * @brief Classify native face parameters against the face's trim loops: inside, outside, or on
  * the boundary within tol.
  * Exact for points farther than tol (3-D distance) from the boundary: a winding number over the

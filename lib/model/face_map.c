@@ -195,3 +195,57 @@ bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *faces, 
     }
     return BS_OK;
 }
+
+/* The face holding patch p: faces' patches are appended in face order, so a binary search over
+ * their first patches finds it. */
+static size_t face_of_patch(const bs_model *m, uint32_t p)
+{
+    size_t lo = 0, hi = m->nface;
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (m->faces[mid].first_patch <= p)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+bs_status bs_model_patch_to_face(const bs_model *m, size_t n, const uint32_t *patch,
+                                 const bs_cview *s, const bs_cview *t, uint32_t *face,
+                                 const bs_view *uv)
+{
+    if (n == 0)
+        return m == NULL ? BS_ERR_INVALID_ARG : BS_OK;
+    if (m == NULL || patch == NULL || s == NULL || t == NULL)
+        return BS_ERR_INVALID_ARG;
+    bs_status status;
+    if ((status = bsi_check_cview(s, n)) != BS_OK || (status = bsi_check_cview(t, n)) != BS_OK ||
+        (uv && (status = bsi_check_views(uv, 2, n)) != BS_OK))
+        return status;
+    size_t npatch = bs_surface_count(m->surface);
+    for (size_t k = 0; k < n; k++)
+        if (patch[k] >= npatch)
+            return BS_ERR_INVALID_ARG;
+    for (size_t k = 0; k < n; k++) {
+        double sk = bsi_cget(s, k), tk = bsi_cget(t, k), native[2] = {NAN, NAN};
+        uint32_t id = UINT32_MAX;
+        if (sk >= 0.0 && sk <= 1.0 && tk >= 0.0 && tk <= 1.0) {
+            size_t f = face_of_patch(m, patch[k]);
+            const bsi_face *fc = &m->faces[f];
+            size_t local = patch[k] - fc->first_patch;
+            double cu = bsi_axis_native(&fc->au, local / fc->av.n, sk);
+            double cv = bsi_axis_native(&fc->av, local % fc->av.n, tk);
+            native[0] = fc->swap ? cv : cu;
+            native[1] = fc->swap ? cu : cv;
+            id = (uint32_t)f;
+        }
+        if (face != NULL)
+            face[k] = id;
+        if (uv != NULL) {
+            *bsi_at(&uv[0], k) = native[0];
+            *bsi_at(&uv[1], k) = native[1];
+        }
+    }
+    return BS_OK;
+}

@@ -246,6 +246,7 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_model_surface", (HANDLE,), c_void_p),
     ("bs_model_face_eval", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, BYTES), STATUS),
     ("bs_model_face_to_patch", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, IDS, VIEWS), STATUS),
+    ("bs_model_patch_to_face", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, IDS, VIEWS), STATUS),
     ("bs_model_classify", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, c_double, BYTES), STATUS),
     ("bs_model_properties", (HANDLE, c_double, DOUBLES, DOUBLES, DOUBLES), STATUS),
 )

@@ -882,6 +882,16 @@ extern "C" {
         patch: *mut u32,
         st: *const bs_view,
     ) -> bs_status;
+    /// `bs_model_patch_to_face` (model.h, since 1.2).
+    pub fn bs_model_patch_to_face(
+        m: *const bs_model,
+        n: usize,
+        patch: *const u32,
+        s: *const bs_cview,
+        t: *const bs_cview,
+        face: *mut u32,
+        uv: *const bs_view,
+    ) -> bs_status;
     /// `bs_model_classify` (model.h, since 1.2).
     pub fn bs_model_classify(
         m: *const bs_model,
