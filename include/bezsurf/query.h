@@ -81,6 +81,10 @@ BS_API bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_c
  * @param[out] pos   NULL or dim views receiving the closest points.
  * @return BS_OK; BS_ERR_INVALID_ARG if p is NULL, q is NULL with n > 0, or a view's data is NULL or
  *         misaligned; BS_ERR_SIZE if a view holds fewer than n elements; BS_ERR_NO_MEMORY.
+ * @return BS_ERR_PRECISION (from 1.2) if an answer cannot be certified within tau: a rational
+ *         patch whose weights span more than 2^159 (max w / min w), or a query whose search meets
+ *         the depth or box limits (docs/queries.md, "The limit of the guarantee"); nothing is
+ *         written then. Never a wrong answer in its place.
  * @since 1.1
  */
 BS_API bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
@@ -130,7 +134,8 @@ BS_API size_t bs_locator_dim(const bs_locator *L);
  * @param[out] uv     NULL or 2 views receiving the parameters.
  * @param[out] dist   NULL or 1 view receiving the distances.
  * @param[out] pos    NULL or dim views receiving the closest points.
- * @return as bs_patch_closest_point(), with L in place of p.
+ * @return as bs_patch_closest_point(), with L in place of p (BS_ERR_PRECISION when a patch that
+ *         could hold the answer cannot be certified; nothing is written then).
  * @since 1.1
  */
 BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview *q,

@@ -16,13 +16,16 @@
  * convexity (certify below), which prunes the boxes next to the minimum at any size. Every bound
  * allows for the rounding of the halving, of the coefficients and of the evaluation.
  *
- * The work is capped (BOX_CAP boxes a query); docs/queries.md says what the cap means.
+ * The work is capped (BOX_CAP boxes a query, w->depth levels): a search that reaches the cap,
+ * or a box that survives at the deepest level, leaves the answer uncertified, which the callers
+ * report as BS_ERR_PRECISION rather than give an answer that may be wrong.
  */
 #include "query/closest.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 
 /* Boxes (second-order bounds computed) per query at most. */
 #define BOX_CAP 20000
@@ -33,13 +36,18 @@ typedef struct box {
     int dir; /* the direction to split it (set when it survives), -1 for none */
 } box;
 
-/* Rounding of the nets of boxes at depth k (scaled units, the root net's magnitude 1): each
- * halving moves a point by at most max(m,n) half-ulps of the net's magnitude, and the Cartesian
- * points divide by weights down to wmin. */
+/* Rounding of the Cartesian points of the nets of boxes at depth k (scaled units, the root
+ * net's distances below 1): each halving moves a point by at most max(m,n) half-ulps of the
+ * net's magnitude. For a rational net the midpoint of two homogeneous points w_a x_a and w_b x_b
+ * is off by at most half an ulp of (w_a + w_b)/2 max|x|, the weight of the midpoint times the
+ * largest distance: the errors stay proportional to the weights, level after level, and so does
+ * the weights' own relative error (sums of positive terms). Dividing by the weight therefore
+ * does not amplify them, whatever the weight ratio: twice the polynomial bound holds both. */
 static double net_error(const bsi_cl *w, unsigned depth)
 {
     size_t deg = w->m > w->n ? w->m : w->n;
-    return ((double)depth + 4.0) * ((double)deg + 1.0) * 2.0 * DBL_EPSILON / w->wmin;
+    double e = ((double)depth + 4.0) * ((double)deg + 1.0) * 2.0 * DBL_EPSILON;
+    return w->nc > w->dim ? 2.0 * e : e;
 }
 
 /* Regions around minima certified by convexity, kept at once. */
@@ -57,6 +65,7 @@ typedef struct search {
     double diag;     /* D (scaled) for the tolerance */
     region reg[REGIONS];
     unsigned nreg;   /* regions filled, the next one replaced is nreg % REGIONS */
+    int uncertified; /* a box was left that could not be pruned (the cap, or the deepest level) */
 } search;
 
 static double current(const search *s) { return fmin(s->incoming, sqrt(s->f)); }
@@ -148,8 +157,11 @@ static void certify(bsi_cl *w, search *s)
     int poly = w->nc == w->dim && w->m > 0 && w->n > 0;
     int convex = !poly || (h[0] > 0.0 && h[2] > 0.0 && h[0] * h[2] - h[1] * h[1] > 0.0);
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
+    /* S is a convex combination of the control points (weights B w / sum B w), so its rounding
+     * is relative to the largest of them, whatever the weights; S_u is not: |w_u / w| reaches
+     * m max w / min w */
     double rho_w = 1.0 / w->wmin;
-    double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w * sqrt((double)w->dim);
+    double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * sqrt((double)w->dim);
     double noise = dr + net_error(w, 16);
     /* the gradient's own rounding: 2 |r| |S_u| with |r| off by dr, |S_u| <= 2 m rho_w (scaled) */
     double dg[2] = {4.0 * dr * (double)w->m * rho_w, 4.0 * dr * (double)w->n * rho_w};
@@ -190,6 +202,7 @@ static void certify(bsi_cl *w, search *s)
         for (int i = 0; i < 4; i++)
             rg->x[i] = x[i];
         rg->lb = sqrt(fmax(lbf, 0.0)) - noise;
+        if (getenv("DBG")) fprintf(stderr, "  region [%g %g]x[%g %g] lb %g lambda %g c %g rho %g strong %g wlo %g whi %g blbf %g\n", x[0],x[1],x[2],x[3],rg->lb,lambda,c,rho,strong,wlo,whi,b.lbf);
         return;
     }
 }
@@ -214,6 +227,7 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
     if (!(bsi_cl_f(w, x[0], x[1]) < s->f))
         return;
     double f = bsi_cl_newton(w, x);
+    if (getenv("DBG")) fprintf(stderr, "  newton -> %g at %g %g\n", sqrt(f), x[0], x[1]);
     if (f < s->f) {
         s->f = f;
         s->uv[0] = x[0];
@@ -228,12 +242,14 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
 static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
 {
     double err = net_error(w, b->depth);
+    if (getenv("DBG")) fprintf(stderr, "box [%g %g]x[%g %g] d%u aabb %g err %g cur %g inreg %d\n", b->u0,b->u1,b->v0,b->v1,b->depth,sqrt(b->aabb),err,current(s),in_region(s,b));
     if (pruned(s, sqrt(b->aabb) - err) || in_region(s, b))
         return 0;
     bsi_cl_bound fb;
     bsi_cl_fbound(w, w->pool + b->slot * w->np, &fb);
     ++*visited;
     double lb = sqrt(fmax(fb.lbf, 0.0)) - err;
+    if (getenv("DBG")) fprintf(stderr, "  lb %g\n", lb);
     if (pruned(s, lb))
         return 0;
     /* the direction in which the second-order bound is loosest, else the net's longer side
@@ -255,11 +271,20 @@ static size_t search_patch(bsi_cl *w, search *s)
         w->pool[k] = w->root[k];
     stack[0] = (box){0.0, 1.0, 0.0, 1.0, bsi_cl_box(w, w->pool), 0, 0, -1};
     size_t top = 1, visited = 0;
-    while (top > 0 && visited < BOX_CAP) {
+    while (top > 0) {
         box b = stack[--top];
         if (sqrt(s->f) <= tolerance(s))
             break; /* q is on the patch, as far as T can tell */
-        if (!survives(w, s, &b, &visited) || b.depth >= BSI_CL_DEPTH || b.dir < 0) {
+        if (visited >= BOX_CAP) {
+            s->uncertified = 1;
+            break;
+        }
+        if (!survives(w, s, &b, &visited) || b.dir < 0) {
+            free_slots[nfree++] = b.slot;
+            continue;
+        }
+        if (b.depth >= w->depth) {
+            s->uncertified = 1;
             free_slots[nfree++] = b.slot;
             continue;
         }
@@ -313,16 +338,19 @@ static double hull_distance2(const bs_patch *p, const double *q)
     return d2;
 }
 
-/* The search for one finite q; pos receives S(uv) as bs_patch_eval gives it when 1 is returned. */
+/* The search for one finite q; pos receives S(uv) as bs_patch_eval gives it when 1 is returned;
+ * -2 when the search could not be certified (nothing changed). */
 static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d2, double uv[2],
                         double *pos, size_t *boxes)
 {
     bsi_cl_setup(w, q);
     double s = w->s1 * w->s2;
-    search st = {sqrt(*best_d2) * s, INFINITY, {0.5, 0.5}, fmax(w->diag, d_scale * s), {{{0}, 0}}, 0};
+    search st = {sqrt(*best_d2) * s, INFINITY, {0.5, 0.5}, fmax(w->diag, d_scale * s), {{{0}, 0}}, 0, 0};
     size_t visited = search_patch(w, &st);
     if (boxes != NULL)
         *boxes = visited;
+    if (st.uncertified)
+        return -2;
     if (!(st.f < INFINITY))
         return 0; /* every box was farther than the caller's best */
     double d2 = distance2(w->p, q, st.uv, pos);
@@ -341,6 +369,8 @@ int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, 
         *boxes = 0;
     if (hull_distance2(p, q) > *best_d2)
         return 0;
+    if (bsi_cl_depth(p) == 0)
+        return -2;
     bsi_cl *w = bsi_cl_create(p);
     if (w == NULL)
         return -1;
@@ -389,21 +419,39 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         (dist && (st = bsi_check_views(dist, 1, n)) != BS_OK) ||
         (pos && (st = bsi_check_views(pos, dim, n)) != BS_OK))
         return st;
-    bsi_cl *w = bsi_cl_create(p); /* the one allocation, before anything is written */
-    if (w == NULL)
+    if (bsi_cl_depth(p) == 0)
+        return BS_ERR_PRECISION;
+    /* the workspace and the answers' parameters, before anything is written: a query that cannot
+     * be certified fails the call with nothing written */
+    bsi_cl *w = bsi_cl_create(p);
+    double *ats = w != NULL ? malloc(2 * n * sizeof *ats) : NULL;
+    if (ats == NULL) {
+        bsi_cl_free(w);
         return BS_ERR_NO_MEMORY;
+    }
     for (size_t k = 0; k < n; k++) {
-        double x[BS_MAX_DIM] = {0.0}, at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
+        double x[BS_MAX_DIM] = {0.0}, y[BS_MAX_DIM], best = INFINITY;
         int finite = 1;
+        ats[2 * k] = ats[2 * k + 1] = NAN;
         for (size_t c = 0; c < dim; c++) {
             x[c] = bsi_cget(&q[c], k);
             finite &= isfinite(x[c]) != 0;
+        }
+        if (finite && closest_with(w, x, 0.0, &best, &ats[2 * k], y, NULL) == -2) {
+            free(ats);
+            bsi_cl_free(w);
+            return BS_ERR_PRECISION;
+        }
+    }
+    for (size_t k = 0; k < n; k++) {
+        double x[BS_MAX_DIM] = {0.0}, *at = &ats[2 * k], y[BS_MAX_DIM], d = NAN;
+        for (size_t c = 0; c < dim; c++) {
+            x[c] = bsi_cget(&q[c], k);
             y[c] = NAN;
         }
-        if (finite) {
-            double best = INFINITY;
-            if (closest_with(w, x, 0.0, &best, at, y, NULL) == 1) /* always, with no best to beat */
-                d = distance(y, x, dim);
+        if (!isnan(at[0])) { /* a finite query: its answer's point, as bs_patch_eval gives it */
+            (void)distance2(p, x, at, y);
+            d = distance(y, x, dim);
         }
         if (uv) {
             *bsi_at(&uv[0], k) = at[0];
@@ -414,6 +462,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         for (size_t c = 0; pos && c < dim; c++)
             *bsi_at(&pos[c], k) = y[c];
     }
+    free(ats);
     bsi_cl_free(w);
     return BS_OK;
 }

@@ -25,7 +25,8 @@ static double box_distance2(const double *lo, const double *hi, const double *q,
 }
 
 /* The closest patch and its (u, v) for the finite point q; *id stays UINT32_MAX when nothing
- * is found. stamp[i] == mark means patch i has been searched for this query. -1: out of memory. */
+ * is found. stamp[i] == mark means patch i has been searched for this query. -1: out of memory,
+ * -2: a patch's answer cannot be certified. */
 static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t mark, uint32_t *id,
                    double uv[2])
 {
@@ -51,7 +52,7 @@ static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t m
                 stamp[i] = mark;
                 int r = bsi_patch_closest_one(L->patches[i], q, L->diag, &best, uv);
                 if (r < 0)
-                    return -1;
+                    return r;
                 if (r == 1)
                     *id = i;
             }
@@ -151,9 +152,10 @@ bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview
     for (size_t k = 0; k < n && st == BS_OK; k++) {
         double x[BS_MAX_DIM];
         ids[k] = UINT32_MAX;
-        if (query_point(q, k, dim, x) && L->nnode > 0 &&
-            closest(L, x, stamp, k + 1, &ids[k], &at[2 * k]) < 0)
-            st = BS_ERR_NO_MEMORY;
+        int r = query_point(q, k, dim, x) && L->nnode > 0
+                    ? closest(L, x, stamp, k + 1, &ids[k], &at[2 * k])
+                    : 0;
+        st = r == -1 ? BS_ERR_NO_MEMORY : r == -2 ? BS_ERR_PRECISION : BS_OK;
     }
     for (size_t k = 0; k < n && st == BS_OK; k++) {
         double x[BS_MAX_DIM];

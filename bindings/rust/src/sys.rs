@@ -43,6 +43,9 @@ pub const BS_ERR_IO: bs_status = -9;
 pub const BS_ERR_INCOMPATIBLE: bs_status = -10;
 /// An operation not defined for this input (e.g. the hodograph of a rational patch).
 pub const BS_ERR_UNSUPPORTED: bs_status = -11;
+/// A certified result cannot be given in double precision for this input (a weight ratio or a
+/// range of magnitudes beyond what the method certifies). Since 1.2.
+pub const BS_ERR_PRECISION: bs_status = -12;
 
 /// Largest degree per direction.
 pub const BS_MAX_DEGREE: usize = 64;
