@@ -13,7 +13,12 @@
  * of its piece when the hodographs of (X1, X2) along s and along r lie in two cones that do not
  * meet (the map is then one to one there); a piece without one is discarded when the origin is
  * shown to lie outside the convex hull of its projected net. Anything else is halved in both
- * directions, the nearest quarter searched first, down to a fixed depth.
+ * directions, the nearest quarter searched first, down to a fixed depth; a piece with a side
+ * collapsed to a point (a pole) is halved across that side only. Halved in both directions, the
+ * pieces along a pole would double at every level, each holding the pole, which lies close to a
+ * ray through a point next to it, so that none could be discarded and the budget ran out before
+ * the piece holding the hit was reached; halved across the pole, one piece a level holds it, and
+ * its hull shrinks onto the pole until the ray leaves it.
  */
 #include "query/ray_piece.h"
 
@@ -21,8 +26,9 @@
 #include <math.h>
 
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
+#define POLE_DEPTH 40  /* the same for pieces halved across a pole (2^-42 of the patch) */
 #define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
-#define SLOTS (3 * MAX_DEPTH + 4)
+#define SLOTS (3 * MAX_DEPTH + POLE_DEPTH + 4)
 
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
@@ -261,6 +267,36 @@ SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *
     return big;
 }
 
+/* The largest distance (max norm of X1, X2, T over W) between the points of the line of the net
+ * from index a, count points step apart, and its first point. */
+SPECIALISE double line_span(const double *net, size_t a, size_t count, size_t step, int rat)
+{
+    const double *p0 = net + a * NC;
+    double x0 = WDIV(rat, p0[0], p0[3]), y0 = WDIV(rat, p0[1], p0[3]), z0 = WDIV(rat, p0[2], p0[3]);
+    double span = 0.0;
+    for (size_t k = 1; k < count; k++) {
+        const double *p = net + (a + k * step) * NC;
+        span = greater(span, greater(fabs(WDIV(rat, p[0], p[3]) - x0),
+                                     greater(fabs(WDIV(rat, p[1], p[3]) - y0),
+                                             fabs(WDIV(rat, p[2], p[3]) - z0))));
+    }
+    return span;
+}
+
+/* The direction to halve a piece in: BS_DIR_U when a side s = const (a row of the net) is
+ * collapsed to a point (within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V for
+ * the converse, -1 (both) otherwise. */
+SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const double lo[3],
+                          const double hi[3])
+{
+    if (m == 0 || n == 0)
+        return -1;
+    double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
+    int rows = line_span(net, 0, n + 1, 1, rat) <= ext || line_span(net, m * (n + 1), n + 1, 1, rat) <= ext;
+    int cols = line_span(net, 0, m + 1, n + 1, rat) <= ext || line_span(net, n, m + 1, n + 1, rat) <= ext;
+    return rows == cols ? -1 : rows ? BS_DIR_U : BS_DIR_V;
+}
+
 static int wanted(const bsi_ray *ray, double t, double best)
 {
     return (ray->open ? t > ray->tmin : t >= ray->tmin) && t <= ray->tmax && t < best;
@@ -281,7 +317,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     /* slots: those freed, then those never used; the leaf's own net stays in root (slot -1) */
     int free_slot[SLOTS], nfree = 0, unused = 0, top = 0;
     pending stack[SLOTS];
-    stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, -1};
+    stack[top++] = (pending){0.0, 0.0, 1.0, 1.0, -INFINITY, 0, 0, -1};
     for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
         double *net = e.slot < 0 ? root : slot + (size_t)e.slot * len, lo[3], hi[3];
@@ -319,34 +355,49 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
         if ((found && one_to_one(net, m, n, half[1])) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
-            within <= accept || e.depth == MAX_DEPTH)
+            within <= accept || e.level >= POLE_DEPTH)
             continue;
-        /* the four halves, nearest t first */
-        bsi_net_halve(net, m, n, NC, BS_DIR_U, half[0], half[1]);
+        int dir = pole_split(net, m, n, rat, lo, hi);
+        if (dir < 0 && e.depth >= MAX_DEPTH)
+            continue;
+        /* the four halves (two across a pole), nearest t first */
         pending kids[4];
+        int nk = 0;
+        bsi_net_halve(net, m, n, NC, dir < 0 ? BS_DIR_U : dir, half[0], half[1]);
         for (int a = 0; a < 2; a++) {
             double *cn[2];
-            for (int b = 0; b < 2; b++) {
-                pending *c = &kids[2 * a + b];
-                *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, INFINITY,
-                               e.depth + 1, nfree > 0 ? free_slot[--nfree] : unused++};
+            int nb = dir < 0 ? 2 : 1;
+            for (int b = 0; b < nb; b++) {
+                pending *c = &kids[nk + b];
+                double su = dir == BS_DIR_V ? 0.0 : 0.5, sv = dir == BS_DIR_U ? 0.0 : 0.5;
+                int ia = dir == BS_DIR_V ? 0 : a, ib = dir == BS_DIR_V ? a : b;
+                *c = (pending){e.s0 + ia * su * e.w, e.r0 + ib * sv * e.wr,
+                               dir == BS_DIR_V ? e.w : 0.5 * e.w, dir == BS_DIR_U ? e.wr : 0.5 * e.wr,
+                               INFINITY, e.depth + (dir < 0), e.level + 1,
+                               nfree > 0 ? free_slot[--nfree] : unused++};
                 cn[b] = slot + (size_t)c->slot * len;
             }
-            bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
-            for (int b = 0; b < 2; b++) {
-                pending *c = &kids[2 * a + b];
-                for (size_t q = 0; q < np; q++)
-                    c->tlo = lesser(c->tlo, WDIV(rat, cn[b][q * NC + 2], cn[b][q * NC + 3]));
-                c->tlo -= tol;
-            }
+            if (dir < 0)
+                bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
+            else
+                for (size_t q = 0; q < len; q++)
+                    cn[0][q] = half[a][q];
+            nk += nb;
         }
-        for (int a = 1; a < 4; a++) /* insertion sort, farthest first onto the stack */
+        for (int a = 0; a < nk; a++) {
+            pending *c = &kids[a];
+            const double *cn = slot + (size_t)c->slot * len;
+            for (size_t q = 0; q < np; q++)
+                c->tlo = lesser(c->tlo, WDIV(rat, cn[q * NC + 2], cn[q * NC + 3]));
+            c->tlo -= tol;
+        }
+        for (int a = 1; a < nk; a++) /* insertion sort, farthest first onto the stack */
             for (int b = a; b > 0 && kids[b].tlo > kids[b - 1].tlo; b--) {
                 pending x = kids[b];
                 kids[b] = kids[b - 1];
                 kids[b - 1] = x;
             }
-        for (int a = 0; a < 4; a++)
+        for (int a = 0; a < nk; a++)
             stack[top++] = kids[a];
     }
 }
