@@ -145,12 +145,16 @@ BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const b
 /**
  * @brief The first hit of each of n rays o + t d with the surface, t in [t_min, t_max].
  *
- * A reported hit point S(u,v) lies within tau = 1e-9 D of the ray and t within tau/|d| of the
- * exact first hit. No ray whose exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or
- * answered with a later hit, including rays through shared edges, corners and poles. Tangent and
- * grazing hits may be reported or not. On a miss: patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN
- * or Inf in o, d or the range, or d = 0, is a miss with t = NaN. Normals follow the rule of
- * bs_patch_eval_normal() (limit normals at poles).
+ * A reported hit point S(u,v) lies within tau = 1e-9 D + 2^-40 |S - o| of the ray and t within
+ * tau/|d| of the exact first hit (the second term, from 1.2, is the rounding of S - o for an
+ * origin far from the surface; 1.1 stated 1e-9 D alone, which such rays exceeded). No ray whose
+ * exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or answered with a later hit,
+ * including rays through shared edges, corners and poles. Tangent and grazing hits may be reported
+ * or not. t is a double: hits beyond t = DBL_MAX are not looked for (a direction of subnormal
+ * length reaches only DBL_MAX |d| along the ray; 1.1 reported them with t = +Inf). On a miss:
+ * patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN or Inf in o, d or the range, or d = 0, is a
+ * miss with t = NaN. Normals follow the rule of bs_patch_eval_normal() (limit normals at poles,
+ * (0,0,0) where there is none: bs_locator_intersect_kind() tells which).
  * @param[in]  L       the locator (dimension 3).
  * @param[in]  n       number of rays.
  * @param[in]  org     3 views: ray origins.
@@ -168,6 +172,29 @@ BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const b
 BS_API bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *org,
                                       const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
                                       const bs_view *uv, const bs_view *t, const bs_view *nrm);
+
+/**
+ * @brief bs_locator_intersect(), with the kind of each hit's normal: BS_NORMAL_REGULAR,
+ * BS_NORMAL_LIMIT (a pole or a collapsed edge) or BS_NORMAL_UNDEFINED (a degenerate point, where
+ * (0,0,0) is written), exactly bs_patch_eval_normal()'s kind at the hit's (u, v); misses and
+ * invalid rays have kind BS_NORMAL_UNDEFINED. Same answers, bit for bit, as bs_locator_intersect().
+ * @param[in]  L       the locator (dimension 3).
+ * @param[in]  n       number of rays.
+ * @param[in]  org     3 views: ray origins.
+ * @param[in]  dir     3 views: directions, any non-zero length.
+ * @param[in]  trange  NULL for (0, +Inf), or 2 views: t_min, t_max.
+ * @param[out] patch   NULL or n patch ids; UINT32_MAX where the ray misses.
+ * @param[out] uv      NULL or 2 views.
+ * @param[out] t       NULL or 1 view: the ray parameter of the hit.
+ * @param[out] nrm     NULL or 3 views: the unit normal at the hit.
+ * @param[out] kind    NULL or n bytes receiving the normal kinds.
+ * @return as bs_locator_intersect().
+ * @since 1.2
+ */
+BS_API bs_status bs_locator_intersect_kind(const bs_locator *L, size_t n, const bs_cview *org,
+                                           const bs_cview *dir, const bs_cview *trange,
+                                           uint32_t *patch, const bs_view *uv, const bs_view *t,
+                                           const bs_view *nrm, unsigned char *kind);
 
 /**
  * @brief bs_locator_closest_point() on up to `threads` threads: the queries are cut into pieces of

@@ -183,8 +183,8 @@ bs_status bsi_parallel(size_t workers, size_t n, bsi_task fn, void *ctx);
 /* ---- Normals at single points for the layers above (lib/core/normal.c) ---- */
 
 /* bs_patch_eval_normal at one finite point of a 3-D patch, with sc from bsi_normal_scale(p) made
- * once by the caller: the same position and normal bits. */
+ * once by the caller: the same position, normal and kind bits. */
 void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                         double pos[3], double nrm[3]);
+                         double pos[3], double nrm[3], unsigned char *kind);
 
 #endif

@@ -318,15 +318,14 @@ static void put_coord(const bs_view *views, size_t c, size_t idx0, const double 
 }
 
 void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                         double pos[3], double nrm[3])
+                         double pos[3], double nrm[3], unsigned char *kind)
 {
     double h[4], hu[4], hv[4], su[3], sv[3];
     bsi_eval_first_one(p, u, v, h, hu, hv);
     bsi_project_first(p, h, hu, hv, 1, pos, su, sv);
     const double *pu[3] = {su, su + 1, su + 2}, *pv[3] = {sv, sv + 1, sv + 2};
     double *pn[3] = {nrm, nrm + 1, nrm + 2};
-    unsigned char kd;
-    bsi_normal_block(p, sc, 1, &u, 1, &v, pu, pv, pn, &kd);
+    bsi_normal_block(p, sc, 1, &u, 1, &v, pu, pv, pn, kind);
 }
 
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
