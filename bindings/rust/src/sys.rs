@@ -753,4 +753,18 @@ extern "C" {
         nrm: *const bs_view,
         threads: usize,
     ) -> bs_status;
+    /// [`bs_locator_intersect`] with the kind of each hit's normal (`BS_NORMAL_*`; undefined
+    /// for a miss) in `kind`, NULL or `n` bytes (since 1.2).
+    pub fn bs_locator_intersect_kind(
+        l: *const bs_locator,
+        n: usize,
+        org: *const bs_cview,
+        dir: *const bs_cview,
+        trange: *const bs_cview,
+        patch: *mut u32,
+        uv: *const bs_view,
+        t: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut u8,
+    ) -> bs_status;
 }

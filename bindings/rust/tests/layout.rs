@@ -178,7 +178,7 @@ fn sys_matches_the_c_header() {
         ("offset bs_tess_options.max_triangles", offset_of!(sys::bs_tess_options, max_triangles) as i64),
         ("offset bs_tess_options.threads", offset_of!(sys::bs_tess_options, threads) as i64),
     ];
-    let consts: [(&str, i64); 36] = [
+    let consts: [(&str, i64); 37] = [
         ("BS_OK", sys::BS_OK as i64),
         ("BS_ERR_INVALID_ARG", sys::BS_ERR_INVALID_ARG as i64),
         ("BS_ERR_NO_MEMORY", sys::BS_ERR_NO_MEMORY as i64),
