@@ -27,6 +27,19 @@ static double norm3(const double *a)
     return s * sqrt(x * x + y * y + z * z);
 }
 
+/* 1 for x within [2^-200, 2^200] (or 0 or not finite), else the power of two that brings x
+ * near 1: products of such scaled vectors neither overflow nor underflow, and scaling by a
+ * power of two changes no bit of a direction. Left at 1 in the usual range so that every
+ * normal there keeps its bits. */
+static double extreme_scale(double x)
+{
+    if (!(x > 0.0 && x <= DBL_MAX) || (x >= 0x1p-200 && x <= 0x1p200))
+        return 1.0;
+    int e = 0;
+    (void)frexp(x, &e);
+    return e > 0 ? ldexp(1.0, -e) : ldexp(ldexp(1.0, -e / 2), -e + e / 2);
+}
+
 static void cross3(const double *a, const double *b, double *c)
 {
     c[0] = a[1] * b[2] - a[2] * b[1];
@@ -57,8 +70,10 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
             lo[c] = fmin(lo[c], p->ctrl[k * 3 + c]);
             hi[c] = fmax(hi[c], p->ctrl[k * 3 + c]);
         }
-    double ext[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-    double d = norm3(ext), rho = 1.0, wmax = 1.0;
+    /* halves first: the extent of a net near DBL_MAX overflows; the scales are capped at
+     * DBL_MAX, which keeps every zero test meaningful */
+    double ext[3] = {0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]};
+    double d = fmin(DBL_MAX, 2.0 * norm3(ext)), rho = 1.0, wmax = 1.0;
     if (p->rational) {
         double wmin = INFINITY;
         wmax = 0.0;
@@ -72,9 +87,9 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
     for (size_t k = 0; k < p->nctrl; k++)
         pmax = fmax(pmax, norm3(p->ctrl + 3 * k));
     sc->rho = rho;
-    sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * pmax;
-    sc->lu = (double)(p->deg_u > 0 ? p->deg_u : 1) * d;
-    sc->lv = (double)(p->deg_v > 0 ? p->deg_v : 1) * d;
+    sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * fmin(pmax, DBL_MAX);
+    sc->lu = fmin(DBL_MAX, (double)(p->deg_u > 0 ? p->deg_u : 1) * d);
+    sc->lv = fmin(DBL_MAX, (double)(p->deg_v > 0 ? p->deg_v : 1) * d);
     /* The rounding of a first derivative at (u,v) grows with r = wmax / w(u,v) <= rho, not with
      * the contract's rho^2 (which bounds every point at once): fu * r is the zero test's term. */
     sc->wmax = wmax;
@@ -139,9 +154,12 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
         pu[k] = ipow(du, k);
         pv[k] = ipow(dv, k);
     }
+    /* every A_k and B_k times sig (a power of two, 1 unless the patch's scale is extreme): the
+     * tests below compare cross products with products of lengths, which that leaves alone */
+    double sig = extreme_scale(fmax(sc->lu, sc->lv));
     for (int c = 0; c < 3; c++) {
-        A[0][c] = a0[c];
-        Bv[0][c] = b0[c];
+        A[0][c] = a0[c] * sig;
+        Bv[0][c] = b0[c] * sig;
     }
     /* Order by order, so that the usual case (the first order settles it) needs partials up to
      * total order 2 only. A table entry does not depend on the table's size, so the terms are
@@ -166,13 +184,13 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
                 sa += w * tab[((size_t)(a + 1) * kt + (size_t)(K - a)) * 3 + (size_t)c];
                 sb += w * tab[((size_t)a * kt + (size_t)(K - a + 1)) * 3 + (size_t)c];
             }
-            A[K][c] = sa / fact;
-            Bv[K][c] = sb / fact;
+            A[K][c] = sa / fact * sig;
+            Bv[K][c] = sb / fact * sig;
         }
         /* A term within rounding of zero is zero: noise must not pass for a direction. */
-        if (norm3(A[K]) <= CLEAN * na / fact)
+        if (norm3(A[K]) <= CLEAN * na / fact * sig)
             A[K][0] = A[K][1] = A[K][2] = 0.0;
-        if (norm3(Bv[K]) <= CLEAN * nb / fact)
+        if (norm3(Bv[K]) <= CLEAN * nb / fact * sig)
             Bv[K][0] = Bv[K][1] = Bv[K][2] = 0.0;
 
         double ck[3] = {0.0, 0.0, 0.0}, mag = 0.0;
@@ -241,9 +259,17 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
         a0[c] = lu <= zu ? 0.0 : su[c];
         b0[c] = lv <= zv ? 0.0 : sv[c];
     }
-    cross3(a0, b0, c0);
+    /* the cross product of derivatives near the overflow or underflow thresholds (coordinates
+     * beyond about 1e150 or below 1e-150): of the vectors scaled by powers of two, which keeps
+     * its direction and the test below */
+    double ea = extreme_scale(lu), eb = extreme_scale(lv), xa[3], xb[3];
+    for (int c = 0; c < 3; c++) {
+        xa[c] = a0[c] * ea;
+        xb[c] = b0[c] * eb;
+    }
+    cross3(xa, xb, c0);
     double lc = norm3(c0);
-    if (lc > TAU * norm3(a0) * norm3(b0))
+    if (lc > TAU * norm3(xa) * norm3(xb))
         return unit(c0, nrm, BS_NORMAL_REGULAR);
     return limit_normal(p, sc, r, u, v, a0, b0, nrm);
 }
