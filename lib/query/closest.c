@@ -308,6 +308,21 @@ static size_t search_patch(bsi_cl *w, search *s)
     return visited;
 }
 
+/* |pos - q| without overflow or underflow in the squares. */
+static double distance(const double *pos, const double *q, size_t dim)
+{
+    double big = 0.0, sum = 0.0;
+    for (size_t c = 0; c < dim; c++)
+        big = fmax(big, fabs(pos[c] - q[c]));
+    if (big == 0.0 || isinf(big))
+        return big;
+    for (size_t c = 0; c < dim; c++) {
+        double x = (pos[c] - q[c]) / big;
+        sum += x * x;
+    }
+    return big * sqrt(sum);
+}
+
 /* Squared distance |S(uv) - q|^2 in the caller's units, S as bs_patch_eval gives it. */
 static double distance2(const bs_patch *p, const double *q, const double uv[2], double *pos)
 {
@@ -322,30 +337,33 @@ static double distance2(const bs_patch *p, const double *q, const double uv[2], 
     return d2;
 }
 
-/* The squared distance from q to the bounding box of the control points (the convex hull). */
-static double hull_distance2(const bs_patch *p, const double *q)
+/* The distance from q to the bounding box of the control points (the convex hull), without
+ * overflow or underflow (+Inf only beyond DBL_MAX). */
+static double hull_distance(const bs_patch *p, const double *q)
 {
-    double d2 = 0.0;
+    double half[BS_MAX_DIM], zero[BS_MAX_DIM];
     for (size_t c = 0; c < p->dim; c++) {
         double lo = INFINITY, hi = -INFINITY;
         for (size_t k = 0; k < p->nctrl; k++) {
             lo = fmin(lo, p->ctrl[k * p->dim + c]);
             hi = fmax(hi, p->ctrl[k * p->dim + c]);
         }
-        double g = fmax(0.0, fmax(lo - q[c], q[c] - hi));
-        d2 += g * g;
+        half[c] = fmax(0.0, fmax(0.5 * lo - 0.5 * q[c], 0.5 * q[c] - 0.5 * hi));
+        zero[c] = 0.0;
     }
-    return d2;
+    return 2.0 * distance(half, zero, p->dim);
 }
 
-/* The search for one finite q; pos receives S(uv) as bs_patch_eval gives it when 1 is returned;
- * -2 when the search could not be certified (nothing changed). */
-static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d2, double uv[2],
+/* The search for one finite q against the distance *best_d (not squared: distances of huge
+ * coordinates do not overflow); pos receives S(uv) as bs_patch_eval gives it when 1 is
+ * returned; -2 when the search could not be certified (nothing changed). The scales are applied
+ * one after the other: their product may overflow for subnormal coordinates. */
+static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d, double uv[2],
                         double *pos, size_t *boxes)
 {
     bsi_cl_setup(w, q);
-    double s = w->s1 * w->s2;
-    search st = {sqrt(*best_d2) * s, INFINITY, {0.5, 0.5}, fmax(w->diag, d_scale * s), {{{0}, 0}}, 0, 0};
+    search st = {*best_d * w->s1 * w->s2, INFINITY, {0.5, 0.5},
+                 fmax(w->diag, d_scale * w->s1 * w->s2), {{{0}, 0}}, 0, 0};
     size_t visited = search_patch(w, &st);
     if (boxes != NULL)
         *boxes = visited;
@@ -353,21 +371,22 @@ static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best
         return -2;
     if (!(st.f < INFINITY))
         return 0; /* every box was farther than the caller's best */
-    double d2 = distance2(w->p, q, st.uv, pos);
-    if (!(d2 < *best_d2) && *best_d2 < INFINITY)
+    (void)distance2(w->p, q, st.uv, pos);
+    double d = distance(pos, q, w->dim);
+    if (!(d < *best_d) && *best_d < INFINITY)
         return 0;
-    *best_d2 = d2;
+    *best_d = d;
     uv[0] = st.uv[0];
     uv[1] = st.uv[1];
     return 1;
 }
 
-int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
-                            double uv[2], size_t *boxes)
+int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], size_t *boxes)
 {
     if (boxes != NULL)
         *boxes = 0;
-    if (hull_distance2(p, q) > *best_d2)
+    if (hull_distance(p, q) > *best_d)
         return 0;
     if (bsi_cl_depth(p) == 0)
         return -2;
@@ -375,8 +394,18 @@ int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, 
     if (w == NULL)
         return -1;
     double pos[BS_MAX_DIM];
-    int r = closest_with(w, q, d_scale, best_d2, uv, pos, boxes);
+    int r = closest_with(w, q, d_scale, best_d, uv, pos, boxes);
     bsi_cl_free(w);
+    return r;
+}
+
+int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
+                            double uv[2], size_t *boxes)
+{
+    double best = sqrt(*best_d2);
+    int r = bsi_patch_closest_dist(p, q, d_scale, &best, uv, boxes);
+    if (r == 1)
+        *best_d2 = best * best;
     return r;
 }
 
@@ -384,21 +413,6 @@ int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, do
                           double uv[2])
 {
     return bsi_patch_closest_count(p, q, d_scale, best_d2, uv, NULL);
-}
-
-/* |pos - q| without overflow or underflow in the squares. */
-static double distance(const double *pos, const double *q, size_t dim)
-{
-    double big = 0.0, sum = 0.0;
-    for (size_t c = 0; c < dim; c++)
-        big = fmax(big, fabs(pos[c] - q[c]));
-    if (big == 0.0 || isinf(big))
-        return big;
-    for (size_t c = 0; c < dim; c++) {
-        double x = (pos[c] - q[c]) / big;
-        sum += x * x;
-    }
-    return big * sqrt(sum);
 }
 
 bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q, const bs_view *uv,
@@ -437,7 +451,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
             x[c] = bsi_cget(&q[c], k);
             finite &= isfinite(x[c]) != 0;
         }
-        if (finite && closest_with(w, x, 0.0, &best, &ats[2 * k], y, NULL) == -2) {
+        if (finite && closest_with(w, x, 0.0, &best, &ats[2 * k], y, NULL) == -2) { /* distance */
             free(ats);
             bsi_cl_free(w);
             return BS_ERR_PRECISION;

@@ -89,14 +89,15 @@ void bsi_cl_free(bsi_cl *w)
     free(w);
 }
 
-/* The power of two 2^-e with x 2^-e in [0.5, 1) (1 for x = 0 or not finite). */
+/* The power of two 2^-e with x 2^-e in [0.5, 1) (1 for x = 0 or not finite), at most 2^1000:
+ * for subnormal x the rest is left to the next scale (s2 after s1), since 2^-e overflows. */
 static double unit_scale(double x)
 {
     int e = 0;
     if (!(x > 0.0 && x <= DBL_MAX))
         return 1.0;
     (void)frexp(x, &e);
-    return ldexp(1.0, -e);
+    return ldexp(1.0, e < -1000 ? 1000 : -e);
 }
 
 void bsi_cl_setup(bsi_cl *w, const double *q)

@@ -61,5 +61,10 @@ unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, 
  * (lib/query/closest.c) */
 int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, double *best_d2,
                           double uv[2]);
+/* bsi_patch_closest_one with the distance to beat, and the answer's, in *best_d (not squared:
+ * the squares of huge coordinates overflow), counting in *boxes (may be NULL) the boxes whose
+ * second-order bound was computed. The locator's step. */
+int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], size_t *boxes);
 
 #endif
