@@ -297,6 +297,19 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     return rows == cols ? -1 : rows ? BS_DIR_U : BS_DIR_V;
 }
 
+/* 1 when the largest |P - o| of a leaf is within [2^-256, 2^256], else the power of two that
+ * brings it near 1: the products of Newton's step, of the cones and of the hull test are then
+ * formed without overflow or underflow (rays at surfaces beyond about 1e77 or below 1e-77 from
+ * their origin missed), and the scaling is exact. The usual range keeps its bits. */
+static double leaf_scale(double big)
+{
+    if (!(big > 0.0 && big <= DBL_MAX) || (big >= 0x1p-256 && big <= 0x1p256))
+        return 1.0;
+    int e = 0;
+    (void)frexp(big, &e);
+    return ldexp(1.0, -e);
+}
+
 static int wanted(const bsi_ray *ray, double t, double best)
 {
     return (ray->open ? t > ray->tmin : t >= ray->tmin) && t <= ray->tmax && t < best;
@@ -311,9 +324,22 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
     double rbox[6], big = project(L->nets + leaf->net, np, rat, ray, root, rbox);
+    /* the leaf's frame scaled by sig at extreme distances: lengths below are scaled, t as well
+     * (t / sig is the ray's) */
+    double sig = leaf_scale(big), diag = L->diag;
+    if (sig != 1.0) {
+        for (size_t q = 0; q < np; q++)
+            for (size_t c = 0; c < 3; c++)
+                root[q * NC + c] *= sig;
+        for (int c = 0; c < 6; c++)
+            rbox[c] *= sig;
+        big *= sig;
+        diag = fmin(DBL_MAX, diag * sig);
+    }
+    double tmin = ray->tmin * sig;
     /* rounding of the projection and of the halvings, and the distance accepted as a hit */
-    double tol = 1e-13 * L->diag + 256 * DBL_EPSILON * big;
-    double accept = 1e-11 * L->diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
+    double tol = 1e-13 * diag + 256 * DBL_EPSILON * big;
+    double accept = 1e-11 * diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
     /* slots: those freed, then those never used; the leaf's own net stays in root (slot -1) */
     int free_slot[SLOTS], nfree = 0, unused = 0, top = 0;
     pending stack[SLOTS];
@@ -321,7 +347,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
         double *net = e.slot < 0 ? root : slot + (size_t)e.slot * len, lo[3], hi[3];
-        double tmax = lesser(hit->t, ray->tmax);
+        double tmax = lesser(hit->t, ray->tmax) * sig;
         if (e.slot >= 0)
             free_slot[nfree++] = e.slot;
         int near;
@@ -333,7 +359,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
             near = box_near(lo, hi, tol);
         } else
             near = near_origin(net, np, rat, tol, lo, hi);
-        if (e.tlo > tmax || !near || hi[2] + tol < ray->tmin || lo[2] - tol > tmax)
+        if (e.tlo > tmax || !near || hi[2] + tol < tmin || lo[2] - tol > tmax)
             continue;
         double within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
         /* most pieces the box test lets through hold no zero: shown first, without Newton,
@@ -346,8 +372,8 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         bilinear_start(net, m, n, rat, &e, &s, &r);
         int found = newton(root, m, n, rat, &e, s, r, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
-        if (found && wanted(ray, t, hit->t)) {
-            hit->t = t;
+        if (found && wanted(ray, t / sig, hit->t)) {
+            hit->t = t / sig;
             hit->s = s;
             hit->r = r;
             hit->leaf = k;
