@@ -10,8 +10,8 @@ seconds=${1:-120}
 build=${FUZZ_BUILD:-$root/build-fuzz}
 CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
   -DBS_BUILD_TOOLS=OFF >/dev/null
-cmake --build "$build" -j2 --target fuzz_bpt fuzz_api fuzz_obj fuzz_iges
-for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges; do
+cmake --build "$build" -j2 --target fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_locator
+for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_locator; do
   budget=$seconds
   case $target in fuzz_obj | fuzz_iges) if [ "$budget" -gt 60 ]; then budget=60; fi ;; esac
   seeds=$root/tests/fuzz/corpus/$target
