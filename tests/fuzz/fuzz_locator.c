@@ -9,8 +9,9 @@
  *   tau = 1e-9 (D + d);
  * - rays down the normal at sampled regular points from a height h above them hit no later than
  *   h (plus tau);
- * - the scaled copy: the same normal kinds and normals, the same curvature kinds and scaled
- *   curvatures, scaled closest distances and ray parameters. */
+ * - the scaled copy: the same normal kinds and normals, the same curvature kinds, the same
+ *   curvatures scaled (away from collapsed sides, where they are ill-conditioned), the same
+ *   closest distances scaled, and its rays hitting no later than the scaled height. */
 #include <bezsurf.h>
 
 #include <float.h>
@@ -294,7 +295,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fail();
         if (ck != ck2)
             fail();
-        if (ck == BS_CURV_REGULAR) {
+        /* the values where they are well conditioned: next to a collapsed side two correct
+         * evaluations may differ by far more than their rounding */
+        if (ck == BS_CURV_REGULAR && !(flags & 0x1e) && u >= 1.0 / 32 && u <= 31.0 / 32 && v >= 1.0 / 32 &&
+            v <= 31.0 / 32) {
             /* k scales by 2^(e2 - e1): compare k_min, k_max with the larger of them as scale */
             double big = fmax(fabs(curv[2]), fabs(curv[3])) + 1.0 / D;
             for (int c = 2; c < 4; c++)
