@@ -21,7 +21,11 @@ for target in fuzz_bpt fuzz_api fuzz_obj fuzz_iges fuzz_locator; do
   "$build/tests/$target" -runs=0 "$seeds" 2>&1 | tail -n 1
   echo "== $target: fuzz ${budget}s"
   log=$build/$target.log
-  if ! "$build/tests/$target" -max_total_time="$budget" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
+  # a locator input runs several certified searches on rational patches with wide weights: up to
+  # some seconds under the sanitizers
+  timeout=10
+  case $target in fuzz_locator) timeout=30 ;; esac
+  if ! "$build/tests/$target" -max_total_time="$budget" -max_len=4096 -timeout="$timeout" -rss_limit_mb=1024 \
        -print_final_stats=1 -artifact_prefix="$build/artifacts/$target-" "$work" "$seeds" >"$log" 2>&1; then
     tail -n 60 "$log"
     echo "== $target: FAILED (the input is saved in $build/artifacts)"

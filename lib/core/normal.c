@@ -4,6 +4,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 
 #define B BSI_BLOCK
 
@@ -354,6 +355,30 @@ void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, doub
     bsi_normal_block(p, sc, 1, &u, 1, &v, pu, pv, pn, kind);
 }
 
+double bsi_extreme_scale(const bs_patch *p)
+{
+    double big = 0.0;
+    for (size_t k = 0; k < p->nctrl * p->dim; k++)
+        big = fmax(big, fabs(p->ctrl[k]));
+    if (!(big > 0.0) || (big >= 0x1p-1000 && big <= 0x1p1000))
+        return 1.0;
+    int e = 0;
+    (void)frexp(big, &e);
+    return ldexp(1.0, -e < 1000 ? -e : 1000);
+}
+
+bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out)
+{
+    double *ctrl = malloc(p->nctrl * p->dim * sizeof *ctrl);
+    if (ctrl == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t k = 0; k < p->nctrl * p->dim; k++)
+        ctrl[k] = p->ctrl[k] * sig;
+    bs_status st = bs_patch_create(p->deg_u, p->deg_v, p->dim, ctrl, p->rational ? p->weights : NULL, out);
+    free(ctrl);
+    return st;
+}
+
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
                                const bs_view *pos, const bs_view *nrm, unsigned char *kind)
 {
@@ -369,6 +394,16 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     if ((pos && (st = bsi_check_views(pos, 3, n)) != BS_OK) ||
         (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
         return st;
+    double sig = bsi_extreme_scale(p);
+    if (sig != 1.0) { /* normals and kinds of the scaled copy, positions of p itself */
+        bs_patch *q = NULL;
+        if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)
+            st = bs_patch_eval_normal(q, n, u, v, NULL, nrm, kind);
+        if (st == BS_OK && pos != NULL)
+            st = bs_patch_eval(p, n, u, v, pos, NULL, NULL);
+        bs_patch_destroy(q);
+        return st;
+    }
     bsi_nscale sc;
     bsi_normal_scale(p, &sc);
     /* Polynomial bicubic patches go in chunks of BSI_CHUNK points, others in blocks of

@@ -208,6 +208,17 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         (dmin && (st = bsi_check_views(dmin, 3, n)) != BS_OK) ||
         (dmax && (st = bsi_check_views(dmax, 3, n)) != BS_OK))
         return st;
+    double sig = bsi_extreme_scale(p);
+    if (sig != 1.0) { /* the scaled copy's, with K times sig^2 and H, k_min, k_max times sig */
+        bs_patch *q = NULL;
+        if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)
+            st = bs_patch_eval_curvature(q, n, u, v, curv, dmin, dmax, kind);
+        bs_patch_destroy(q);
+        for (size_t k = 0; st == BS_OK && curv != NULL && k < n; k++)
+            for (size_t c = 0; c < 4; c++)
+                *bsi_at(&curv[c], k) = c == 0 ? *bsi_at(&curv[c], k) * sig * sig : *bsi_at(&curv[c], k) * sig;
+        return st;
+    }
     /* the one allocation (the rational table's scratch), before anything is written */
     double *scratch = NULL;
     if (p->rational &&
