@@ -182,11 +182,12 @@ bs_status bsi_parallel(size_t workers, size_t n, bsi_task fn, void *ctx);
 
 /* ---- Normals at single points for the layers above (lib/core/normal.c) ---- */
 
-/* 1 for a net whose largest coordinate lies within [2^-1000, 2^1000] (or is 0), else the power of
- * two (at most 2^1000) that brings it near 1: beyond, the evaluators' first differences overflow
- * or lose their bits, so scale-invariant results (normals, kinds) come from a copy scaled by it.
- * (lib/core/normal.c) */
-double bsi_extreme_scale(const bs_patch *p);
+/* 1 for a net whose largest coordinate lies within [2^-lim, 2^lim] (or is 0), else the power of
+ * two (at most 2^1000) that brings it near 1. Beyond 2^1000 and below 2^-1000 the evaluators'
+ * first differences overflow or lose their bits, so scale-invariant results (normals, kinds) come
+ * from a copy scaled by it (lim = 1000); the curvature's limit rule multiplies partials, and
+ * takes the copy beyond 2^256 (lim = 256). (lib/core/normal.c) */
+double bsi_extreme_scale(const bs_patch *p, int lim);
 /* p with its control points times sig (weights kept) into *out; BS_ERR_NO_MEMORY. */
 bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out);
 
