@@ -90,7 +90,7 @@ bs_status bs_surface_tessellate(const bs_surface *s, const bs_tess_options *o, b
         return BS_ERR_INVALID_ARG;
     *out = NULL;
     double sig = s != NULL && o != NULL && o->size >= sizeof(bs_tess_options) ? extreme_scale(s) : 1.0;
-    if (sig == 1.0)
+    if (sig == 1.0 || o == NULL)
         return tessellate_at(s, o, out);
     /* a copy scaled by sig, the positions scaled back: normals and parameters do not depend on
      * the scale, nor does the mesh's shape under a tolerance scaled with it */

@@ -25,7 +25,6 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
-#include <stdio.h>
 
 /* Boxes (second-order bounds computed) per query at most. */
 #define BOX_CAP 20000
@@ -202,7 +201,6 @@ static void certify(bsi_cl *w, search *s)
         for (int i = 0; i < 4; i++)
             rg->x[i] = x[i];
         rg->lb = sqrt(fmax(lbf, 0.0)) - noise;
-        if (getenv("DBG")) fprintf(stderr, "  region [%g %g]x[%g %g] lb %g lambda %g c %g rho %g strong %g wlo %g whi %g blbf %g\n", x[0],x[1],x[2],x[3],rg->lb,lambda,c,rho,strong,wlo,whi,b.lbf);
         return;
     }
 }
@@ -227,7 +225,6 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
     if (!(bsi_cl_f(w, x[0], x[1]) < s->f))
         return;
     double f = bsi_cl_newton(w, x);
-    if (getenv("DBG")) fprintf(stderr, "  newton -> %g at %g %g\n", sqrt(f), x[0], x[1]);
     if (f < s->f) {
         s->f = f;
         s->uv[0] = x[0];
@@ -242,14 +239,12 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
 static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
 {
     double err = net_error(w, b->depth);
-    if (getenv("DBG")) fprintf(stderr, "box [%g %g]x[%g %g] d%u aabb %g err %g cur %g inreg %d\n", b->u0,b->u1,b->v0,b->v1,b->depth,sqrt(b->aabb),err,current(s),in_region(s,b));
     if (pruned(s, sqrt(b->aabb) - err) || in_region(s, b))
         return 0;
     bsi_cl_bound fb;
     bsi_cl_fbound(w, w->pool + b->slot * w->np, &fb);
     ++*visited;
     double lb = sqrt(fmax(fb.lbf, 0.0)) - err;
-    if (getenv("DBG")) fprintf(stderr, "  lb %g\n", lb);
     if (pruned(s, lb))
         return 0;
     /* the direction in which the second-order bound is loosest, else the net's longer side
@@ -393,7 +388,7 @@ int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, d
     bsi_cl *w = bsi_cl_create(p);
     if (w == NULL)
         return -1;
-    double pos[BS_MAX_DIM];
+    double pos[BS_MAX_DIM] = {0.0};
     int r = closest_with(w, q, d_scale, best_d, uv, pos, boxes);
     bsi_cl_free(w);
     return r;
@@ -444,7 +439,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         return BS_ERR_NO_MEMORY;
     }
     for (size_t k = 0; k < n; k++) {
-        double x[BS_MAX_DIM] = {0.0}, y[BS_MAX_DIM], best = INFINITY;
+        double x[BS_MAX_DIM] = {0.0}, y[BS_MAX_DIM] = {0.0}, best = INFINITY;
         int finite = 1;
         ats[2 * k] = ats[2 * k + 1] = NAN;
         for (size_t c = 0; c < dim; c++) {
