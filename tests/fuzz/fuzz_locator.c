@@ -285,8 +285,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (bs_patch_eval_normal(p, 1, &cu, &cv, xv, nv, &kind) != BS_OK ||
             bs_patch_eval_normal(p2, 1, &cu, &cv, xv2, nv2, &kind2) != BS_OK)
             fail();
-        /* the same kind and normal on the scaled copy */
-        if (kind != kind2 || !(fabs(nrm[0] - nrm2[0]) + fabs(nrm[1] - nrm2[1]) + fabs(nrm[2] - nrm2[2]) <= 1e-9))
+        /* the same kind and normal on the scaled copy (next to a collapsed side the normal is
+         * ill-conditioned: two correct evaluations differ by up to eps over the squared distance) */
+        int inner = !(flags & 0x1e) || (u >= 1.0 / 32 && u <= 31.0 / 32 && v >= 1.0 / 32 && v <= 31.0 / 32);
+        if (kind != kind2 ||
+            !(fabs(nrm[0] - nrm2[0]) + fabs(nrm[1] - nrm2[1]) + fabs(nrm[2] - nrm2[2]) <= (inner ? 1e-9 : 1e-5)))
             fail();
         if (kind != BS_NORMAL_UNDEFINED && !(fabs(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2] - 1.0) <= 1e-12))
             fail();
@@ -297,8 +300,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             fail();
         /* the values where they are well conditioned: next to a collapsed side two correct
          * evaluations may differ by far more than their rounding */
-        if (ck == BS_CURV_REGULAR && !(flags & 0x1e) && u >= 1.0 / 32 && u <= 31.0 / 32 && v >= 1.0 / 32 &&
-            v <= 31.0 / 32) {
+        if (ck == BS_CURV_REGULAR && !(flags & 0x1e)) {
             /* k scales by 2^(e2 - e1): compare k_min, k_max with the larger of them as scale */
             double big = fmax(fabs(curv[2]), fabs(curv[3])) + 1.0 / D;
             for (int c = 2; c < 4; c++)
