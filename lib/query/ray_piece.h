@@ -204,12 +204,13 @@ SPECIALISE int newton(const double *net, size_t m, size_t n, int rat, const pend
             worse++;
         if (!(dist > floor_dist) || worse >= 4) /* converged, or no longer converging */
             break;
-        /* J step = -f where J is clearly regular (its columns more than 1e-10 rad from
-         * parallel): next to a pole X_s and X_r may be nearly parallel and very different in
-         * size, where the damping below, relative to the larger, would stall the step along the
-         * smaller; else (J^T J + lambda I) step = -J^T f, finite also where X_r vanishes */
+        /* J step = -f where J is clearly regular (its columns more than about 1e-10 rad from
+         * parallel; the 1-norms bound the lengths, without square roots): next to a pole X_s
+         * and X_r may be nearly parallel and very different in size, where the damping below,
+         * relative to the larger, would stall the step along the smaller; else
+         * (J^T J + lambda I) step = -J^T f, finite also where X_r vanishes */
         double dj = fs[0] * fr[1] - fs[1] * fr[0], ds, dr;
-        if (fabs(dj) > 1e-10 * norm2(fs[0], fs[1]) * norm2(fr[0], fr[1]) && isfinite(dj)) {
+        if (fabs(dj) > 1e-10 * (fabs(fs[0]) + fabs(fs[1])) * (fabs(fr[0]) + fabs(fr[1])) && isfinite(dj)) {
             ds = -(fr[1] * f[0] - fr[0] * f[1]) / dj;
             dr = -(fs[0] * f[1] - fs[1] * f[0]) / dj;
         } else {
