@@ -28,7 +28,7 @@
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
 #define POLE_DEPTH 40  /* the same for pieces halved across a pole (2^-42 of the patch) */
 #define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
-#define SLOTS (3 * MAX_DEPTH + POLE_DEPTH + 4)
+#define SLOTS (3 * POLE_DEPTH + 4)
 
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
@@ -285,7 +285,8 @@ SPECIALISE double line_span(const double *net, size_t a, size_t count, size_t st
 
 /* The direction to halve a piece in: BS_DIR_U when a side s = const (a row of the net) is
  * collapsed to a point (within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V for
- * the converse, -1 (both) otherwise. */
+ * the converse; -2 (both directions, down to POLE_DEPTH) when sides of both kinds are collapsed
+ * (a corner between two poles), -1 (both, down to MAX_DEPTH) when none is. */
 SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const double lo[3],
                           const double hi[3])
 {
@@ -294,7 +295,7 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
     int rows = line_span(net, 0, n + 1, 1, rat) <= ext || line_span(net, m * (n + 1), n + 1, 1, rat) <= ext;
     int cols = line_span(net, 0, m + 1, n + 1, rat) <= ext || line_span(net, n, m + 1, n + 1, rat) <= ext;
-    return rows == cols ? -1 : rows ? BS_DIR_U : BS_DIR_V;
+    return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
 }
 
 /* 1 when the largest |P - o| of a leaf is within [2^-256, 2^256], else the power of two that
@@ -384,7 +385,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
             within <= accept || e.level >= POLE_DEPTH)
             continue;
         int dir = pole_split(net, m, n, rat, lo, hi);
-        if (dir < 0 && e.depth >= MAX_DEPTH)
+        if (dir == -1 && e.depth >= MAX_DEPTH)
             continue;
         /* the four halves (two across a pole), nearest t first */
         pending kids[4];
