@@ -50,6 +50,10 @@ typedef int bs_status;
 #define BS_ERR_IO            -9  /**< a file could not be opened, read or written */
 #define BS_ERR_INCOMPATIBLE -10  /**< objects that cannot be combined (e.g. patches of different dim) */
 #define BS_ERR_UNSUPPORTED  -11  /**< operation not defined for this input (e.g. hodograph of a rational patch) */
+/** A certified result cannot be given in double precision for this input (a weight ratio or a range
+ *  of magnitudes beyond what the method can certify): refused rather than answered wrongly.
+ *  @since 1.2 */
+#define BS_ERR_PRECISION    -12
 
 /** Largest degree per direction. @since 1.0 */
 #define BS_MAX_DEGREE 64

@@ -81,6 +81,10 @@ BS_API bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_c
  * @param[out] pos   NULL or dim views receiving the closest points.
  * @return BS_OK; BS_ERR_INVALID_ARG if p is NULL, q is NULL with n > 0, or a view's data is NULL or
  *         misaligned; BS_ERR_SIZE if a view holds fewer than n elements; BS_ERR_NO_MEMORY.
+ * @return BS_ERR_PRECISION (from 1.2) if an answer cannot be certified within tau: a rational
+ *         patch whose weights span more than 2^159 (max w / min w), or a query whose search meets
+ *         the depth or box limits (docs/queries.md, "The limit of the guarantee"); nothing is
+ *         written then. Never a wrong answer in its place.
  * @since 1.1
  */
 BS_API bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
@@ -130,7 +134,8 @@ BS_API size_t bs_locator_dim(const bs_locator *L);
  * @param[out] uv     NULL or 2 views receiving the parameters.
  * @param[out] dist   NULL or 1 view receiving the distances.
  * @param[out] pos    NULL or dim views receiving the closest points.
- * @return as bs_patch_closest_point(), with L in place of p.
+ * @return as bs_patch_closest_point(), with L in place of p (BS_ERR_PRECISION when a patch that
+ *         could hold the answer cannot be certified; nothing is written then).
  * @since 1.1
  */
 BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview *q,
@@ -140,14 +145,18 @@ BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const b
 /**
  * @brief The first hit of each of n rays o + t d with the surface, t in [t_min, t_max].
  *
- * A reported hit point S(u,v) lies within tau = 1e-9 D of the ray and t within tau/|d| of the
- * exact first hit. No ray whose exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or
- * answered with a later hit, including rays through shared edges, corners and poles. Tangent and
- * grazing hits may be reported or not. On a miss: patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN
- * or Inf in o or d, a NaN in the range, an infinite t_min, a t_max of -Inf, or d = 0, is a miss with
- * t = NaN. A t_max of +Inf means no upper limit (since 1.2; 1.1 took it for an invalid ray, so a
- * program for both passes DBL_MAX). Normals follow the rule of bs_patch_eval_normal() (limit
- * normals at poles).
+ * A reported hit point S(u,v) lies within tau = 1e-9 D + 2^-40 |S - o| of the ray and t within
+ * tau/|d| of the exact first hit (the second term, from 1.2, is the rounding of S - o for an
+ * origin far from the surface; 1.1 stated 1e-9 D alone, which such rays exceeded). No ray whose
+ * exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or answered with a later hit,
+ * including rays through shared edges, corners and poles. Tangent and grazing hits may be reported
+ * or not. t is a double: hits beyond t = DBL_MAX are not looked for (a direction of subnormal
+ * length reaches only DBL_MAX |d| along the ray; 1.1 reported them with t = +Inf). On a miss:
+ * patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN or Inf in o or d, a NaN in the range, an
+ * infinite t_min, a t_max of -Inf, or d = 0, is a miss with t = NaN. A t_max of +Inf means no
+ * upper limit (since 1.2; 1.1 took it for an invalid ray, so a program for both passes DBL_MAX).
+ * Normals follow the rule of bs_patch_eval_normal() (limit normals at poles,
+ * (0,0,0) where there is none: bs_locator_intersect_kind() tells which).
  * @param[in]  L       the locator (dimension 3).
  * @param[in]  n       number of rays.
  * @param[in]  org     3 views: ray origins.
@@ -165,6 +174,29 @@ BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const b
 BS_API bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *org,
                                       const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
                                       const bs_view *uv, const bs_view *t, const bs_view *nrm);
+
+/**
+ * @brief bs_locator_intersect(), with the kind of each hit's normal: BS_NORMAL_REGULAR,
+ * BS_NORMAL_LIMIT (a pole or a collapsed edge) or BS_NORMAL_UNDEFINED (a degenerate point, where
+ * (0,0,0) is written), exactly bs_patch_eval_normal()'s kind at the hit's (u, v); misses and
+ * invalid rays have kind BS_NORMAL_UNDEFINED. Same answers, bit for bit, as bs_locator_intersect().
+ * @param[in]  L       the locator (dimension 3).
+ * @param[in]  n       number of rays.
+ * @param[in]  org     3 views: ray origins.
+ * @param[in]  dir     3 views: directions, any non-zero length.
+ * @param[in]  trange  NULL for (0, +Inf), or 2 views: t_min, t_max.
+ * @param[out] patch   NULL or n patch ids; UINT32_MAX where the ray misses.
+ * @param[out] uv      NULL or 2 views.
+ * @param[out] t       NULL or 1 view: the ray parameter of the hit.
+ * @param[out] nrm     NULL or 3 views: the unit normal at the hit.
+ * @param[out] kind    NULL or n bytes receiving the normal kinds.
+ * @return as bs_locator_intersect().
+ * @since 1.2
+ */
+BS_API bs_status bs_locator_intersect_kind(const bs_locator *L, size_t n, const bs_cview *org,
+                                           const bs_cview *dir, const bs_cview *trange,
+                                           uint32_t *patch, const bs_view *uv, const bs_view *t,
+                                           const bs_view *nrm, unsigned char *kind);
 
 /**
  * @brief bs_locator_closest_point() on up to `threads` threads: the queries are cut into pieces of

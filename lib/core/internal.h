@@ -182,9 +182,18 @@ bs_status bsi_parallel(size_t workers, size_t n, bsi_task fn, void *ctx);
 
 /* ---- Normals at single points for the layers above (lib/core/normal.c) ---- */
 
+/* 1 for a net whose largest coordinate lies within [2^-lim, 2^lim] (or is 0), else the power of
+ * two (at most 2^1000) that brings it near 1. Beyond 2^1000 and below 2^-1000 the evaluators'
+ * first differences overflow or lose their bits, so scale-invariant results (normals, kinds) come
+ * from a copy scaled by it (lim = 1000); the curvature's limit rule multiplies partials, and
+ * takes the copy beyond 2^256 (lim = 256). (lib/core/normal.c) */
+double bsi_extreme_scale(const bs_patch *p, int lim);
+/* p with its control points times sig (weights kept) into *out; BS_ERR_NO_MEMORY. */
+bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out);
+
 /* bs_patch_eval_normal at one finite point of a 3-D patch, with sc from bsi_normal_scale(p) made
- * once by the caller: the same position and normal bits. */
+ * once by the caller: the same position, normal and kind bits. */
 void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                         double pos[3], double nrm[3]);
+                         double pos[3], double nrm[3], unsigned char *kind);
 
 #endif

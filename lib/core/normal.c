@@ -4,6 +4,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 
 #define B BSI_BLOCK
 
@@ -25,6 +26,19 @@ static double norm3(const double *a)
         return s;
     double x = a[0] / s, y = a[1] / s, z = a[2] / s;
     return s * sqrt(x * x + y * y + z * z);
+}
+
+/* 1 for x within [2^-200, 2^200] (or 0 or not finite), else the power of two that brings x
+ * near 1: products of such scaled vectors neither overflow nor underflow, and scaling by a
+ * power of two changes no bit of a direction. Left at 1 in the usual range so that every
+ * normal there keeps its bits. */
+static double extreme_scale(double x)
+{
+    if (!(x > 0.0 && x <= DBL_MAX) || (x >= 0x1p-200 && x <= 0x1p200))
+        return 1.0;
+    int e = 0;
+    (void)frexp(x, &e);
+    return e > 0 ? ldexp(1.0, -e) : ldexp(ldexp(1.0, -e / 2), -e + e / 2);
 }
 
 static void cross3(const double *a, const double *b, double *c)
@@ -57,8 +71,10 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
             lo[c] = fmin(lo[c], p->ctrl[k * 3 + c]);
             hi[c] = fmax(hi[c], p->ctrl[k * 3 + c]);
         }
-    double ext[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-    double d = norm3(ext), rho = 1.0, wmax = 1.0;
+    /* halves first: the extent of a net near DBL_MAX overflows; the scales are capped at
+     * DBL_MAX, which keeps every zero test meaningful */
+    double ext[3] = {0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1], 0.5 * hi[2] - 0.5 * lo[2]};
+    double d = fmin(DBL_MAX, 2.0 * norm3(ext)), rho = 1.0, wmax = 1.0;
     if (p->rational) {
         double wmin = INFINITY;
         wmax = 0.0;
@@ -72,9 +88,9 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
     for (size_t k = 0; k < p->nctrl; k++)
         pmax = fmax(pmax, norm3(p->ctrl + 3 * k));
     sc->rho = rho;
-    sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * pmax;
-    sc->lu = (double)(p->deg_u > 0 ? p->deg_u : 1) * d;
-    sc->lv = (double)(p->deg_v > 0 ? p->deg_v : 1) * d;
+    sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * fmin(pmax, DBL_MAX);
+    sc->lu = fmin(DBL_MAX, (double)(p->deg_u > 0 ? p->deg_u : 1) * d);
+    sc->lv = fmin(DBL_MAX, (double)(p->deg_v > 0 ? p->deg_v : 1) * d);
     /* The rounding of a first derivative at (u,v) grows with r = wmax / w(u,v) <= rho, not with
      * the contract's rho^2 (which bounds every point at once): fu * r is the zero test's term. */
     sc->wmax = wmax;
@@ -139,9 +155,12 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
         pu[k] = ipow(du, k);
         pv[k] = ipow(dv, k);
     }
+    /* every A_k and B_k times sig (a power of two, 1 unless the patch's scale is extreme): the
+     * tests below compare cross products with products of lengths, which that leaves alone */
+    double sig = extreme_scale(fmax(sc->lu, sc->lv));
     for (int c = 0; c < 3; c++) {
-        A[0][c] = a0[c];
-        Bv[0][c] = b0[c];
+        A[0][c] = a0[c] * sig;
+        Bv[0][c] = b0[c] * sig;
     }
     /* Order by order, so that the usual case (the first order settles it) needs partials up to
      * total order 2 only. A table entry does not depend on the table's size, so the terms are
@@ -166,13 +185,13 @@ static unsigned char limit_normal(const bs_patch *p, const bsi_nscale *sc, doubl
                 sa += w * tab[((size_t)(a + 1) * kt + (size_t)(K - a)) * 3 + (size_t)c];
                 sb += w * tab[((size_t)a * kt + (size_t)(K - a + 1)) * 3 + (size_t)c];
             }
-            A[K][c] = sa / fact;
-            Bv[K][c] = sb / fact;
+            A[K][c] = sa / fact * sig;
+            Bv[K][c] = sb / fact * sig;
         }
         /* A term within rounding of zero is zero: noise must not pass for a direction. */
-        if (norm3(A[K]) <= CLEAN * na / fact)
+        if (norm3(A[K]) <= CLEAN * na / fact * sig)
             A[K][0] = A[K][1] = A[K][2] = 0.0;
-        if (norm3(Bv[K]) <= CLEAN * nb / fact)
+        if (norm3(Bv[K]) <= CLEAN * nb / fact * sig)
             Bv[K][0] = Bv[K][1] = Bv[K][2] = 0.0;
 
         double ck[3] = {0.0, 0.0, 0.0}, mag = 0.0;
@@ -241,9 +260,17 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
         a0[c] = lu <= zu ? 0.0 : su[c];
         b0[c] = lv <= zv ? 0.0 : sv[c];
     }
-    cross3(a0, b0, c0);
+    /* the cross product of derivatives near the overflow or underflow thresholds (coordinates
+     * beyond about 1e150 or below 1e-150): of the vectors scaled by powers of two, which keeps
+     * its direction and the test below */
+    double ea = extreme_scale(lu), eb = extreme_scale(lv), xa[3], xb[3];
+    for (int c = 0; c < 3; c++) {
+        xa[c] = a0[c] * ea;
+        xb[c] = b0[c] * eb;
+    }
+    cross3(xa, xb, c0);
     double lc = norm3(c0);
-    if (lc > TAU * norm3(a0) * norm3(b0))
+    if (lc > TAU * norm3(xa) * norm3(xb))
         return unit(c0, nrm, BS_NORMAL_REGULAR);
     return limit_normal(p, sc, r, u, v, a0, b0, nrm);
 }
@@ -318,15 +345,38 @@ static void put_coord(const bs_view *views, size_t c, size_t idx0, const double 
 }
 
 void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                         double pos[3], double nrm[3])
+                         double pos[3], double nrm[3], unsigned char *kind)
 {
     double h[4], hu[4], hv[4], su[3], sv[3];
     bsi_eval_first_one(p, u, v, h, hu, hv);
     bsi_project_first(p, h, hu, hv, 1, pos, su, sv);
     const double *pu[3] = {su, su + 1, su + 2}, *pv[3] = {sv, sv + 1, sv + 2};
     double *pn[3] = {nrm, nrm + 1, nrm + 2};
-    unsigned char kd;
-    bsi_normal_block(p, sc, 1, &u, 1, &v, pu, pv, pn, &kd);
+    bsi_normal_block(p, sc, 1, &u, 1, &v, pu, pv, pn, kind);
+}
+
+double bsi_extreme_scale(const bs_patch *p, int lim)
+{
+    double big = 0.0;
+    for (size_t k = 0; k < p->nctrl * p->dim; k++)
+        big = fmax(big, fabs(p->ctrl[k]));
+    if (!(big > 0.0) || (big >= ldexp(1.0, -lim) && big <= ldexp(1.0, lim)))
+        return 1.0;
+    int e = 0;
+    (void)frexp(big, &e);
+    return ldexp(1.0, -e < 1000 ? -e : 1000);
+}
+
+bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out)
+{
+    double *ctrl = malloc(p->nctrl * p->dim * sizeof *ctrl);
+    if (ctrl == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t k = 0; k < p->nctrl * p->dim; k++)
+        ctrl[k] = p->ctrl[k] * sig;
+    bs_status st = bs_patch_create(p->deg_u, p->deg_v, p->dim, ctrl, p->rational ? p->weights : NULL, out);
+    free(ctrl);
+    return st;
 }
 
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
@@ -344,6 +394,16 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     if ((pos && (st = bsi_check_views(pos, 3, n)) != BS_OK) ||
         (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
         return st;
+    double sig = bsi_extreme_scale(p, 1000);
+    if (sig != 1.0) { /* normals and kinds of the scaled copy, positions of p itself */
+        bs_patch *q = NULL;
+        if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)
+            st = bs_patch_eval_normal(q, n, u, v, NULL, nrm, kind);
+        if (st == BS_OK && pos != NULL)
+            st = bs_patch_eval(p, n, u, v, pos, NULL, NULL);
+        bs_patch_destroy(q);
+        return st;
+    }
     bsi_nscale sc;
     bsi_normal_scale(p, &sc);
     /* Polynomial bicubic patches go in chunks of BSI_CHUNK points, others in blocks of

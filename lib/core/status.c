@@ -20,6 +20,7 @@ const char *bs_status_string(bs_status s)
     case BS_ERR_IO:           return "input/output error";
     case BS_ERR_INCOMPATIBLE: return "incompatible objects";
     case BS_ERR_UNSUPPORTED:  return "operation not supported for this input";
+    case BS_ERR_PRECISION:    return "result cannot be certified in double precision for this input";
     default:                  return "unknown status";
     }
 }

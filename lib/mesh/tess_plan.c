@@ -7,13 +7,14 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* Second-difference bounds of the net: |S_uu| <= muu, |S_uv| <= muv, |S_vv| <= mvv everywhere. */
-static void curvature_bounds(const bs_patch *p, double *muu, double *muv, double *mvv)
+/* Second-difference bounds of the net: |S_uu| <= muu, |S_uv| <= muv, |S_vv| <= mvv everywhere,
+ * in units of 1/sig (the net times sig, a power of two: exact). */
+static void curvature_bounds(const bs_patch *p, double sig, double *muu, double *muv, double *mvv)
 {
     size_t m = p->deg_u, n = p->deg_v, dim = p->dim;
     const double *P = p->ctrl;
     double a = 0.0, b = 0.0, c = 0.0;
-#define AT(i, j, k) P[((i) * (n + 1) + (j)) * dim + (k)]
+#define AT(i, j, k) (P[((i) * (n + 1) + (j)) * dim + (k)] * sig)
     for (size_t i = 0; i <= m; i++)
         for (size_t j = 0; j <= n; j++) {
             double s2 = 0.0, t2 = 0.0, x2 = 0.0;
@@ -72,10 +73,21 @@ double bsi_tess_max_abs_coord(const bs_surface *s)
 
 void bsi_tess_adaptive_rates(const bs_patch *p, double tol, size_t *ru, size_t *rv)
 {
-    double muu, muv, mvv;
-    curvature_bounds(p, &muu, &muv, &mvv);
-    *ru = rate_for(muu, muv, tol);
-    *rv = rate_for(mvv, muv, tol);
+    /* The rates depend on the ratio of the second differences to the tolerance only: for nets
+     * beyond 2^256 or below 2^-256 both are taken times a power of two that brings the net near
+     * 1, so that the squares of the differences neither overflow nor underflow (a box at 1e308
+     * got one segment a side, 290 times over its tolerance); 1 in the usual range. */
+    double big = 0.0, sig = 1.0, muu, muv, mvv;
+    for (size_t k = 0; k < p->nctrl * p->dim; k++)
+        big = fmax(big, fabs(p->ctrl[k]));
+    if (big > 0.0 && (big < 0x1p-256 || big > 0x1p256)) {
+        int e = 0;
+        (void)frexp(big, &e);
+        sig = ldexp(1.0, -e);
+    }
+    curvature_bounds(p, sig, &muu, &muv, &mvv);
+    *ru = rate_for(muu, muv, tol * sig);
+    *rv = rate_for(mvv, muv, tol * sig);
 }
 
 /* Topology, side counts (the larger rate of a shared side), grids and slot numbering. */

@@ -27,6 +27,7 @@
  */
 #include "mesh/tess.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -194,7 +195,12 @@ double bsi_tess_absolute_tolerance(const bs_surface *s, double tolerance, int fl
                 hi[c] = fmax(hi[c], p->ctrl[3 * k + c]);
             }
     }
-    double d = bs_surface_count(s) ? hypot(hypot(hi[0] - lo[0], hi[1] - lo[1]), hi[2] - lo[2]) : 0.0;
+    /* halves: the extent of a net near DBL_MAX overflows (a tolerance of +Inf gave one segment
+     * a side); the diagonal capped at DBL_MAX */
+    double d = bs_surface_count(s)
+                   ? fmin(DBL_MAX, 2.0 * hypot(hypot(0.5 * hi[0] - 0.5 * lo[0], 0.5 * hi[1] - 0.5 * lo[1]),
+                                               0.5 * hi[2] - 0.5 * lo[2]))
+                   : 0.0;
     double tol = tolerance * d;
     return tol > 0.0 ? tol : tolerance; /* a surface that is a point: any rate meets it */
 }

@@ -16,7 +16,9 @@
  * convexity (certify below), which prunes the boxes next to the minimum at any size. Every bound
  * allows for the rounding of the halving, of the coefficients and of the evaluation.
  *
- * The work is capped (BOX_CAP boxes a query); docs/queries.md says what the cap means.
+ * The work is capped (BOX_CAP boxes a query, w->depth levels): a search that reaches the cap,
+ * or a box that survives at the deepest level, leaves the answer uncertified, which the callers
+ * report as BS_ERR_PRECISION rather than give an answer that may be wrong.
  */
 #include "query/closest.h"
 
@@ -33,13 +35,18 @@ typedef struct box {
     int dir; /* the direction to split it (set when it survives), -1 for none */
 } box;
 
-/* Rounding of the nets of boxes at depth k (scaled units, the root net's magnitude 1): each
- * halving moves a point by at most max(m,n) half-ulps of the net's magnitude, and the Cartesian
- * points divide by weights down to wmin. */
+/* Rounding of the Cartesian points of the nets of boxes at depth k (scaled units, the root
+ * net's distances below 1): each halving moves a point by at most max(m,n) half-ulps of the
+ * net's magnitude. For a rational net the midpoint of two homogeneous points w_a x_a and w_b x_b
+ * is off by at most half an ulp of (w_a + w_b)/2 max|x|, the weight of the midpoint times the
+ * largest distance: the errors stay proportional to the weights, level after level, and so does
+ * the weights' own relative error (sums of positive terms). Dividing by the weight therefore
+ * does not amplify them, whatever the weight ratio: twice the polynomial bound holds both. */
 static double net_error(const bsi_cl *w, unsigned depth)
 {
     size_t deg = w->m > w->n ? w->m : w->n;
-    return ((double)depth + 4.0) * ((double)deg + 1.0) * 2.0 * DBL_EPSILON / w->wmin;
+    double e = ((double)depth + 4.0) * ((double)deg + 1.0) * 2.0 * DBL_EPSILON;
+    return w->nc > w->dim ? 2.0 * e : e;
 }
 
 /* Regions around minima certified by convexity, kept at once. */
@@ -57,6 +64,7 @@ typedef struct search {
     double diag;     /* D (scaled) for the tolerance */
     region reg[REGIONS];
     unsigned nreg;   /* regions filled, the next one replaced is nreg % REGIONS */
+    int uncertified; /* a box was left that could not be pruned (the cap, or the deepest level) */
 } search;
 
 static double current(const search *s) { return fmin(s->incoming, sqrt(s->f)); }
@@ -148,8 +156,11 @@ static void certify(bsi_cl *w, search *s)
     int poly = w->nc == w->dim && w->m > 0 && w->n > 0;
     int convex = !poly || (h[0] > 0.0 && h[2] > 0.0 && h[0] * h[2] - h[1] * h[1] > 0.0);
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
+    /* S is a convex combination of the control points (weights B w / sum B w), so its rounding
+     * is relative to the largest of them, whatever the weights; S_u is not: |w_u / w| reaches
+     * m max w / min w */
     double rho_w = 1.0 / w->wmin;
-    double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * rho_w * sqrt((double)w->dim);
+    double dr = 8.0 * ((double)(w->m + w->n) + 2.0) * DBL_EPSILON * w->s2 * sqrt((double)w->dim);
     double noise = dr + net_error(w, 16);
     /* the gradient's own rounding: 2 |r| |S_u| with |r| off by dr, |S_u| <= 2 m rho_w (scaled) */
     double dg[2] = {4.0 * dr * (double)w->m * rho_w, 4.0 * dr * (double)w->n * rho_w};
@@ -255,11 +266,20 @@ static size_t search_patch(bsi_cl *w, search *s)
         w->pool[k] = w->root[k];
     stack[0] = (box){0.0, 1.0, 0.0, 1.0, bsi_cl_box(w, w->pool), 0, 0, -1};
     size_t top = 1, visited = 0;
-    while (top > 0 && visited < BOX_CAP) {
+    while (top > 0) {
         box b = stack[--top];
         if (sqrt(s->f) <= tolerance(s))
             break; /* q is on the patch, as far as T can tell */
-        if (!survives(w, s, &b, &visited) || b.depth >= BSI_CL_DEPTH || b.dir < 0) {
+        if (visited >= BOX_CAP) {
+            s->uncertified = 1;
+            break;
+        }
+        if (!survives(w, s, &b, &visited) || b.dir < 0) {
+            free_slots[nfree++] = b.slot;
+            continue;
+        }
+        if (b.depth >= w->depth) {
+            s->uncertified = 1;
             free_slots[nfree++] = b.slot;
             continue;
         }
@@ -283,6 +303,21 @@ static size_t search_patch(bsi_cl *w, search *s)
     return visited;
 }
 
+/* |pos - q| without overflow or underflow in the squares. */
+static double distance(const double *pos, const double *q, size_t dim)
+{
+    double big = 0.0, sum = 0.0;
+    for (size_t c = 0; c < dim; c++)
+        big = fmax(big, fabs(pos[c] - q[c]));
+    if (big == 0.0 || isinf(big))
+        return big;
+    for (size_t c = 0; c < dim; c++) {
+        double x = (pos[c] - q[c]) / big;
+        sum += x * x;
+    }
+    return big * sqrt(sum);
+}
+
 /* Squared distance |S(uv) - q|^2 in the caller's units, S as bs_patch_eval gives it. */
 static double distance2(const bs_patch *p, const double *q, const double uv[2], double *pos)
 {
@@ -297,56 +332,75 @@ static double distance2(const bs_patch *p, const double *q, const double uv[2], 
     return d2;
 }
 
-/* The squared distance from q to the bounding box of the control points (the convex hull). */
-static double hull_distance2(const bs_patch *p, const double *q)
+/* The distance from q to the bounding box of the control points (the convex hull), without
+ * overflow or underflow (+Inf only beyond DBL_MAX). */
+static double hull_distance(const bs_patch *p, const double *q)
 {
-    double d2 = 0.0;
+    double half[BS_MAX_DIM], zero[BS_MAX_DIM];
     for (size_t c = 0; c < p->dim; c++) {
         double lo = INFINITY, hi = -INFINITY;
         for (size_t k = 0; k < p->nctrl; k++) {
             lo = fmin(lo, p->ctrl[k * p->dim + c]);
             hi = fmax(hi, p->ctrl[k * p->dim + c]);
         }
-        double g = fmax(0.0, fmax(lo - q[c], q[c] - hi));
-        d2 += g * g;
+        half[c] = fmax(0.0, fmax(0.5 * lo - 0.5 * q[c], 0.5 * q[c] - 0.5 * hi));
+        zero[c] = 0.0;
     }
-    return d2;
+    return 2.0 * distance(half, zero, p->dim);
 }
 
-/* The search for one finite q; pos receives S(uv) as bs_patch_eval gives it when 1 is returned. */
-static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d2, double uv[2],
+/* The search for one finite q against the distance *best_d (not squared: distances of huge
+ * coordinates do not overflow); pos receives S(uv) as bs_patch_eval gives it when 1 is
+ * returned; -2 when the search could not be certified (nothing changed). The scales are applied
+ * one after the other: their product may overflow for subnormal coordinates. */
+static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d, double uv[2],
                         double *pos, size_t *boxes)
 {
     bsi_cl_setup(w, q);
-    double s = w->s1 * w->s2;
-    search st = {sqrt(*best_d2) * s, INFINITY, {0.5, 0.5}, fmax(w->diag, d_scale * s), {{{0}, 0}}, 0};
+    search st = {*best_d * w->s1 * w->s2, INFINITY, {0.5, 0.5},
+                 fmax(w->diag, d_scale * w->s1 * w->s2), {{{0}, 0}}, 0, 0};
     size_t visited = search_patch(w, &st);
     if (boxes != NULL)
         *boxes = visited;
+    if (st.uncertified)
+        return -2;
     if (!(st.f < INFINITY))
         return 0; /* every box was farther than the caller's best */
-    double d2 = distance2(w->p, q, st.uv, pos);
-    if (!(d2 < *best_d2) && *best_d2 < INFINITY)
+    (void)distance2(w->p, q, st.uv, pos);
+    double d = distance(pos, q, w->dim);
+    if (!(d < *best_d) && *best_d < INFINITY)
         return 0;
-    *best_d2 = d2;
+    *best_d = d;
     uv[0] = st.uv[0];
     uv[1] = st.uv[1];
     return 1;
 }
 
-int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
-                            double uv[2], size_t *boxes)
+int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], size_t *boxes)
 {
     if (boxes != NULL)
         *boxes = 0;
-    if (hull_distance2(p, q) > *best_d2)
+    if (hull_distance(p, q) > *best_d)
         return 0;
+    if (bsi_cl_depth(p) == 0)
+        return -2;
     bsi_cl *w = bsi_cl_create(p);
     if (w == NULL)
         return -1;
-    double pos[BS_MAX_DIM];
-    int r = closest_with(w, q, d_scale, best_d2, uv, pos, boxes);
+    double pos[BS_MAX_DIM] = {0.0};
+    int r = closest_with(w, q, d_scale, best_d, uv, pos, boxes);
     bsi_cl_free(w);
+    return r;
+}
+
+int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
+                            double uv[2], size_t *boxes)
+{
+    double best = sqrt(*best_d2);
+    int r = bsi_patch_closest_dist(p, q, d_scale, &best, uv, boxes);
+    if (r == 1)
+        *best_d2 = best * best;
     return r;
 }
 
@@ -354,21 +408,6 @@ int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, do
                           double uv[2])
 {
     return bsi_patch_closest_count(p, q, d_scale, best_d2, uv, NULL);
-}
-
-/* |pos - q| without overflow or underflow in the squares. */
-static double distance(const double *pos, const double *q, size_t dim)
-{
-    double big = 0.0, sum = 0.0;
-    for (size_t c = 0; c < dim; c++)
-        big = fmax(big, fabs(pos[c] - q[c]));
-    if (big == 0.0 || isinf(big))
-        return big;
-    for (size_t c = 0; c < dim; c++) {
-        double x = (pos[c] - q[c]) / big;
-        sum += x * x;
-    }
-    return big * sqrt(sum);
 }
 
 bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q, const bs_view *uv,
@@ -389,21 +428,39 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         (dist && (st = bsi_check_views(dist, 1, n)) != BS_OK) ||
         (pos && (st = bsi_check_views(pos, dim, n)) != BS_OK))
         return st;
-    bsi_cl *w = bsi_cl_create(p); /* the one allocation, before anything is written */
-    if (w == NULL)
+    if (bsi_cl_depth(p) == 0)
+        return BS_ERR_PRECISION;
+    /* the workspace and the answers' parameters, before anything is written: a query that cannot
+     * be certified fails the call with nothing written */
+    bsi_cl *w = bsi_cl_create(p);
+    double *ats = w != NULL ? malloc(2 * n * sizeof *ats) : NULL;
+    if (ats == NULL) {
+        bsi_cl_free(w);
         return BS_ERR_NO_MEMORY;
+    }
     for (size_t k = 0; k < n; k++) {
-        double x[BS_MAX_DIM] = {0.0}, at[2] = {NAN, NAN}, y[BS_MAX_DIM], d = NAN;
+        double x[BS_MAX_DIM] = {0.0}, y[BS_MAX_DIM] = {0.0}, best = INFINITY;
         int finite = 1;
+        ats[2 * k] = ats[2 * k + 1] = NAN;
         for (size_t c = 0; c < dim; c++) {
             x[c] = bsi_cget(&q[c], k);
             finite &= isfinite(x[c]) != 0;
+        }
+        if (finite && closest_with(w, x, 0.0, &best, &ats[2 * k], y, NULL) == -2) { /* distance */
+            free(ats);
+            bsi_cl_free(w);
+            return BS_ERR_PRECISION;
+        }
+    }
+    for (size_t k = 0; k < n; k++) {
+        double x[BS_MAX_DIM] = {0.0}, *at = &ats[2 * k], y[BS_MAX_DIM], d = NAN;
+        for (size_t c = 0; c < dim; c++) {
+            x[c] = bsi_cget(&q[c], k);
             y[c] = NAN;
         }
-        if (finite) {
-            double best = INFINITY;
-            if (closest_with(w, x, 0.0, &best, at, y, NULL) == 1) /* always, with no best to beat */
-                d = distance(y, x, dim);
+        if (!isnan(at[0])) { /* a finite query: its answer's point, as bs_patch_eval gives it */
+            (void)distance2(p, x, at, y);
+            d = distance(y, x, dim);
         }
         if (uv) {
             *bsi_at(&uv[0], k) = at[0];
@@ -414,6 +471,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
         for (size_t c = 0; pos && c < dim; c++)
             *bsi_at(&pos[c], k) = y[c];
     }
+    free(ats);
     bsi_cl_free(w);
     return BS_OK;
 }

@@ -14,14 +14,20 @@
 #include "core/kernels.h"
 #include "query/internal.h"
 
-/* Deepest box (binary splits of the domain); nets kept at once is at most one more than that. */
+/* Deepest box (binary splits of the domain) of a polynomial patch. A rational one may need
+ * more: its parametrisation can squeeze a part of the surface into a corner of the domain of
+ * size (min w / max w) per direction, so it gets 2 log2(max w / min w) levels more, up to
+ * BSI_CL_DEPTH_MAX; a weight ratio beyond that is not served (BS_ERR_PRECISION). Nets kept at
+ * once: at most three more than the depth. */
 #define BSI_CL_DEPTH 80
-#define BSI_CL_SLOTS (BSI_CL_DEPTH + 3)
+#define BSI_CL_DEPTH_MAX 400
+#define BSI_CL_SLOTS (BSI_CL_DEPTH_MAX + 3)
 
 typedef struct bsi_cl {
     const bs_patch *p;
     size_t m, n, dim, nc; /* degrees, dimension, doubles per net point (dim + 1 when rational) */
     size_t np;            /* doubles per net, (m+1)(n+1) nc */
+    unsigned depth;       /* the deepest box (BSI_CL_DEPTH, more for a rational patch) */
     /* scratch sized for p, allocated once by bsi_cl_create */
     double *pool;      /* BSI_CL_SLOTS nets, point-major: coordinate c of (i,j) at [(i(n+1)+j) nc + c];
                         * homogeneous w (P - q) then w when rational, scaled */
@@ -52,7 +58,11 @@ typedef struct bsi_cl_bound {
     double rel;
 } bsi_cl_bound;
 
-/* The workspace for queries on p (lib/query/closest_bound.c); NULL when out of memory. */
+/* The depth of the search on p (BSI_CL_DEPTH, more for a rational patch), 0 when the weight
+ * ratio needs more than BSI_CL_DEPTH_MAX. */
+unsigned bsi_cl_depth(const bs_patch *p);
+/* The workspace for queries on p (lib/query/closest_bound.c), p of a depth other than 0; NULL
+ * when out of memory. */
 bsi_cl *bsi_cl_create(const bs_patch *p);
 void bsi_cl_free(bsi_cl *w);
 /* Scales for the finite query point q, and the root net of q in w->root. */
@@ -91,7 +101,7 @@ double bsi_cl_newton(bsi_cl *w, double x[2]);
 double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3]);
 
 /* bsi_patch_closest_one, also counting the boxes whose second-order bound was computed
- * (lib/query/closest.c; boxes may be NULL). */
+ * (lib/query/closest.c; boxes may be NULL; -2 as bsi_patch_closest_one). */
 int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
                             double uv[2], size_t *boxes);
 

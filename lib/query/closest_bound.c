@@ -25,6 +25,23 @@
 
 static size_t max_sz(size_t a, size_t b) { return a > b ? a : b; }
 
+unsigned bsi_cl_depth(const bs_patch *p)
+{
+    if (!p->rational)
+        return BSI_CL_DEPTH;
+    double lo = INFINITY, hi = 0.0;
+    for (size_t k = 0; k < p->nctrl; k++) {
+        lo = fmin(lo, p->weights[k]);
+        hi = fmax(hi, p->weights[k]);
+    }
+    /* the ratio's binary exponent, from the two exponents (the ratio itself may overflow) */
+    int elo = 0, ehi = 0;
+    (void)frexp(lo, &elo);
+    (void)frexp(hi, &ehi);
+    long extra = 2L * ((long)ehi - (long)elo + 1L);
+    return extra <= BSI_CL_DEPTH_MAX - BSI_CL_DEPTH ? BSI_CL_DEPTH + (unsigned)extra : 0u;
+}
+
 bsi_cl *bsi_cl_create(const bs_patch *p)
 {
     bsi_cl *w = malloc(sizeof *w);
@@ -37,7 +54,9 @@ bsi_cl *bsi_cl_create(const bs_patch *p)
     w->dim = p->dim;
     w->nc = p->ncoord;
     w->np = pts * w->nc;
-    size_t total = (BSI_CL_SLOTS + 2) * w->np + pts * w->dim + w->np + 3 * coef +
+    w->depth = bsi_cl_depth(p);
+    size_t slots = (size_t)w->depth + 3;
+    size_t total = (slots + 2) * w->np + pts * w->dim + w->np + 3 * coef +
                    (m + n + 2 * m + 2 * n + 4) + max_sz(m, n) + 1 + bsi_deriv_table_scratch(p, 2, 2) +
                    9 * w->dim;
     w->pool = malloc(total * sizeof(double));
@@ -45,7 +64,7 @@ bsi_cl *bsi_cl_create(const bs_patch *p)
         free(w);
         return NULL;
     }
-    w->root = w->pool + BSI_CL_SLOTS * w->np;
+    w->root = w->pool + slots * w->np;
     w->region = w->root + w->np;
     w->cart = w->region + w->np;
     w->scaled = w->cart + pts * w->dim;
@@ -70,14 +89,15 @@ void bsi_cl_free(bsi_cl *w)
     free(w);
 }
 
-/* The power of two 2^-e with x 2^-e in [0.5, 1) (1 for x = 0 or not finite). */
+/* The power of two 2^-e with x 2^-e in [0.5, 1) (1 for x = 0 or not finite), at most 2^1000:
+ * for subnormal x the rest is left to the next scale (s2 after s1), since 2^-e overflows. */
 static double unit_scale(double x)
 {
     int e = 0;
     if (!(x > 0.0 && x <= DBL_MAX))
         return 1.0;
     (void)frexp(x, &e);
-    return ldexp(1.0, -e);
+    return ldexp(1.0, e < -1000 ? 1000 : -e);
 }
 
 void bsi_cl_setup(bsi_cl *w, const double *q)
@@ -249,7 +269,8 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
     int rational = nc > dim;
     const double *bm = w->binom, *bn = bm + m + 1, *b2m = bn + n + 1, *b2n = b2m + 2 * m + 1;
     double amax = 0.0;
-    /* the net times C(m,i) C(n,j), coordinate-major: plane c at scaled + c pts */
+    /* the net times C(m,i) C(n,j), coordinate-major: plane c at scaled + c pts; amax the
+     * largest |A_ij|^2 (polynomial) or |A_ij / w_ij|^2 (rational, see the rounding below) */
     for (size_t i = 0; i <= m; i++)
         for (size_t j = 0; j <= n; j++) {
             size_t k = i * (n + 1) + j;
@@ -259,6 +280,8 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
                 w->scaled[c * pts + k] = s * x;
                 a2 += c < dim ? x * x : 0.0;
             }
+            if (rational)
+                a2 = a2 / (net[k * nc + dim] * net[k * nc + dim]) * (1.0 + 8.0 * DBL_EPSILON);
             amax = a2 > amax ? a2 : amax;
         }
     for (size_t k = 0; k < coef; k++)
@@ -270,8 +293,12 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
     if (rational)
         self_product(w->scaled + dim * pts, m, n, w->wco);
     /* Rounding: each N_kl sums at most pts dim products whose magnitudes, over the binomials,
-     * add up to at most amax; each W_kl is a sum of positive terms. */
-    double err = (double)(pts * dim + 16) * DBL_EPSILON * amax;
+     * add up to at most amax; each W_kl is a sum of positive terms. For a rational net
+     * |A_ij| = w_ij |x_ij| (x_ij the Cartesian point), so the products of N_kl add up to at most
+     * amax W_kl with amax the largest |x_ij|^2: the error of N_kl / W_kl is then relative to the
+     * distances, not amplified by the weight ratio, and err (the absolute error of every N_kl)
+     * is amax times the largest W_kl. */
+    double e = (double)(pts * dim + 16) * DBL_EPSILON * amax, err = e;
     double rel = (double)(pts + 16) * DBL_EPSILON;
     double best = INFINITY, low = INFINITY;
     size_t arg = 0;
@@ -286,8 +313,12 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
                 best = ratio;
                 arg = at;
             }
-            if (rational) /* a weight square that underflowed to 0 gives no bound */
+            if (rational) { /* a weight square that underflowed to 0 gives no bound */
+                double ek = e * den * (1.0 + rel);
+                err = fmax(err, ek);
+                lowk = num - ek;
                 lowk = den > 0.0 ? lowk / (den * (lowk > 0.0 ? 1.0 + rel : 1.0 - rel)) : -INFINITY;
+            }
             low = lowk < low ? lowk : low;
         }
     bsi_cl_fbound_finish(w, b, low, arg, err, rel);

@@ -25,7 +25,7 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
     else
         bsi_deriv_table(w->p, u, v, k, k, w->dscratch, w->table);
     const double *t = w->table;
-    double s = w->s1 * w->s2, f = 0.0;
+    double s1 = w->s1, s2 = w->s2, f = 0.0; /* applied one after the other (see closest.h) */
     if (g != NULL)
         for (int i = 0; i < 3; i++)
             h[i] = gn[i] = g[i % 2] = 0.0;
@@ -35,8 +35,8 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
         if (g == NULL)
             continue;
         /* table index (a*3 + b)*dim + c holds S^(a,b) */
-        double su = t[3 * dim + c] * s, sv = t[dim + c] * s;
-        double suu = t[6 * dim + c] * s, suv = t[4 * dim + c] * s, svv = t[2 * dim + c] * s;
+        double su = t[3 * dim + c] * s1 * s2, sv = t[dim + c] * s1 * s2;
+        double suu = t[6 * dim + c] * s1 * s2, suv = t[4 * dim + c] * s1 * s2, svv = t[2 * dim + c] * s1 * s2;
         g[0] += 2.0 * r * su;
         g[1] += 2.0 * r * sv;
         gn[0] += 2.0 * su * su;

@@ -6,6 +6,7 @@
  */
 #include "query/internal.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,6 +32,10 @@ BSI_INLINE double curv_formulas(const double *q, const double *nrm, double inv_d
     double mean = 0.5 * (a + c), s = exact ? hypot(half, b) : sqrt(qs);
     /* bitwise & and |: no branches in the vectorised loop */
     int bad = !exact & !(((qs > 0x1p-900) & (qs < 0x1p900)) | ((half == 0.0) & (b == 0.0)));
+    /* the fundamental forms' products need |S_u| and |S_v| within 2^-200 .. 2^200 (else the
+     * exact path, which scales them) */
+    double g = bsi_dot3(sv, sv);
+    bad |= !exact & !((e > 0x1p-400) & (e < 0x1p400) & (g > 0x1p-400) & (g < 0x1p400));
     o[0] = a * c - b * b;
     o[1] = mean;
     o[2] = mean - s;
@@ -60,8 +65,28 @@ BSI_INLINE double curv_formulas(const double *q, const double *nrm, double inv_d
 
 void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
 {
-    double o[10];
-    (void)curv_formulas(q->d[0], q->nrm, inv_d, 1, o);
+    /* Partials beyond 2^200 or below 2^-200 (coordinates past about 1e150 or under 1e-150):
+     * the fundamental forms' products would overflow or underflow, so the formulas run on the
+     * partials scaled by a power of two sig (lengths times sig, curvatures over sig), exact;
+     * in the usual range sig = 1 and nothing changes. */
+    double big = 0.0, o[10], x[15];
+    for (int j = 0; j < 2; j++)
+        for (int c = 0; c < 3; c++)
+            big = fmax(big, fabs(q->d[j][c]));
+    double sig = 1.0;
+    if (big > 0.0 && big <= DBL_MAX && (big < 0x1p-200 || big > 0x1p200)) {
+        int e = 0;
+        (void)frexp(big, &e);
+        sig = ldexp(1.0, -e);
+    }
+    for (int j = 0; j < 5; j++)
+        for (int c = 0; c < 3; c++)
+            x[3 * j + c] = q->d[j][c] * sig;
+    (void)curv_formulas(x, q->nrm, inv_d / sig, 1, o);
+    /* K = k_min k_max scales by sig^2 (in two steps: sig^2 may overflow), H, k_min, k_max by sig */
+    o[0] = o[0] * sig * sig;
+    for (int i = 1; i < 4; i++)
+        o[i] *= sig;
     for (int i = 0; i < 4; i++)
         out->k[i] = o[i];
     for (int i = 0; i < 3; i++) {
@@ -183,6 +208,17 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         (dmin && (st = bsi_check_views(dmin, 3, n)) != BS_OK) ||
         (dmax && (st = bsi_check_views(dmax, 3, n)) != BS_OK))
         return st;
+    double sig = bsi_extreme_scale(p, 256);
+    if (sig != 1.0) { /* the scaled copy's, with K times sig^2 and H, k_min, k_max times sig */
+        bs_patch *q = NULL;
+        if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)
+            st = bs_patch_eval_curvature(q, n, u, v, curv, dmin, dmax, kind);
+        bs_patch_destroy(q);
+        for (size_t k = 0; st == BS_OK && curv != NULL && k < n; k++)
+            for (size_t c = 0; c < 4; c++)
+                *bsi_at(&curv[c], k) = c == 0 ? *bsi_at(&curv[c], k) * sig * sig : *bsi_at(&curv[c], k) * sig;
+        return st;
+    }
     /* the one allocation (the rational table's scratch), before anything is written */
     double *scratch = NULL;
     if (p->rational &&

@@ -56,8 +56,15 @@ unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, 
  * patch's own). *best_d2 is the squared distance to beat (INFINITY when there is none yet): when
  * the patch has a point closer than that, uv and *best_d2 receive the answer and 1 is returned;
  * otherwise 0 and both are left alone, so a caller can run it over several patches and keep the
- * best. Returns -1 when out of memory. Thread-safe; uses no global state. (lib/query/closest.c) */
+ * best. Returns -1 when out of memory, -2 when the answer cannot be certified (a weight ratio or a
+ * search beyond what the method can certify; BS_ERR_PRECISION). Thread-safe; uses no global state.
+ * (lib/query/closest.c) */
 int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, double *best_d2,
                           double uv[2]);
+/* bsi_patch_closest_one with the distance to beat, and the answer's, in *best_d (not squared:
+ * the squares of huge coordinates overflow), counting in *boxes (may be NULL) the boxes whose
+ * second-order bound was computed. The locator's step. */
+int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], size_t *boxes);
 
 #endif

@@ -88,9 +88,9 @@ static double surface_diagonal(bs_patch *const *patches, size_t np, size_t dim)
                 lo[c] = fmin(lo[c], patches[i]->ctrl[k * dim + c]);
                 hi[c] = fmax(hi[c], patches[i]->ctrl[k * dim + c]);
             }
-    for (size_t c = 0; c < dim; c++)
-        s = hypot(s, hi[c] - lo[c]);
-    return s;
+    for (size_t c = 0; c < dim; c++) /* halves: the extent itself may overflow */
+        s = hypot(s, 0.5 * hi[c] - 0.5 * lo[c]);
+    return fmin(DBL_MAX, 2.0 * s);
 }
 
 /* Leaves, their nets and the hierarchy of a locator whose patches are copied. */

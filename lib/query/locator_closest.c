@@ -13,34 +13,40 @@
 
 #define STACK 128 /* as in locator_ray.c: far more than the depth of a median-split tree */
 
-/* Squared distance from q to box (lo, hi). */
-static double box_distance2(const double *lo, const double *hi, const double *q, size_t dim)
+/* Distance from q to box (lo, hi) without overflow or underflow (+Inf only beyond DBL_MAX):
+ * the gaps halved, then scaled by their largest. */
+static double box_distance(const double *lo, const double *hi, const double *q, size_t dim)
 {
-    double s = 0.0;
+    double g[BS_MAX_DIM], big = 0.0, s = 0.0;
     for (size_t c = 0; c < dim; c++) {
-        double e = q[c] < lo[c] ? lo[c] - q[c] : q[c] > hi[c] ? q[c] - hi[c] : 0.0;
-        s += e * e;
+        g[c] = q[c] < lo[c] ? 0.5 * lo[c] - 0.5 * q[c] : q[c] > hi[c] ? 0.5 * q[c] - 0.5 * hi[c] : 0.0;
+        big = g[c] > big ? g[c] : big;
     }
-    return s;
+    if (big == 0.0)
+        return 0.0;
+    for (size_t c = 0; c < dim; c++)
+        s += (g[c] / big) * (g[c] / big);
+    return 2.0 * big * sqrt(s);
 }
 
 /* The closest patch and its (u, v) for the finite point q; *id stays UINT32_MAX when nothing
- * is found. stamp[i] == mark means patch i has been searched for this query. -1: out of memory. */
+ * is found. stamp[i] == mark means patch i has been searched for this query. -1: out of memory,
+ * -2: a patch's answer cannot be certified. */
 static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t mark, uint32_t *id,
                    double uv[2])
 {
     struct {
         uint32_t node;
-        double d2;
+        double d;
     } stack[STACK];
     size_t dim = L->dim;
     double best = INFINITY;
     int top = 0;
     stack[top].node = 0;
-    stack[top++].d2 = box_distance2(L->box, L->box + dim, q, dim);
+    stack[top++].d = box_distance(L->box, L->box + dim, q, dim);
     while (top > 0) {
         top--;
-        if (!(stack[top].d2 < best))
+        if (!(stack[top].d < best))
             continue;
         const bsi_loc_node *nd = &L->nodes[stack[top].node];
         if (nd->count > 0) {
@@ -49,25 +55,25 @@ static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t m
                 if (stamp[i] == mark)
                     continue;
                 stamp[i] = mark;
-                int r = bsi_patch_closest_one(L->patches[i], q, L->diag, &best, uv);
+                int r = bsi_patch_closest_dist(L->patches[i], q, L->diag, &best, uv, NULL);
                 if (r < 0)
-                    return -1;
+                    return r;
                 if (r == 1)
                     *id = i;
             }
             continue;
         }
-        double d2[2];
+        double d[2];
         for (int c = 0; c < 2; c++) {
             const double *box = L->box + 2 * dim * (nd->first + (uint32_t)c);
-            d2[c] = box_distance2(box, box + dim, q, dim);
+            d[c] = box_distance(box, box + dim, q, dim);
         }
-        int near = d2[1] < d2[0];
+        int near = d[1] < d[0];
         for (int k = 0; k < 2; k++) { /* the farther child first, so the nearer is popped next */
             int c = k == 0 ? !near : near;
-            if (d2[c] < best && top < STACK) {
+            if (d[c] < best && top < STACK) {
                 stack[top].node = nd->first + (uint32_t)c;
-                stack[top++].d2 = d2[c];
+                stack[top++].d = d[c];
             }
         }
     }
@@ -151,9 +157,10 @@ bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview
     for (size_t k = 0; k < n && st == BS_OK; k++) {
         double x[BS_MAX_DIM];
         ids[k] = UINT32_MAX;
-        if (query_point(q, k, dim, x) && L->nnode > 0 &&
-            closest(L, x, stamp, k + 1, &ids[k], &at[2 * k]) < 0)
-            st = BS_ERR_NO_MEMORY;
+        int r = query_point(q, k, dim, x) && L->nnode > 0
+                    ? closest(L, x, stamp, k + 1, &ids[k], &at[2 * k])
+                    : 0;
+        st = r == -1 ? BS_ERR_NO_MEMORY : r == -2 ? BS_ERR_PRECISION : BS_OK;
     }
     for (size_t k = 0; k < n && st == BS_OK; k++) {
         double x[BS_MAX_DIM];

@@ -14,9 +14,13 @@
 #define STACK 128 /* twice the depth of a median-split tree of up to 2^32 leaves, and more */
 
 /* The ray o + t d for t in range, in its frame; 0 (a NaN miss) if something is not finite or
- * d = 0. *len receives |d|. */
+ * d = 0. |d| = len[0] len[1] (the largest component and the length of d over it, a product that
+ * may overflow or underflow: t is divided by one and then the other). The search runs in lengths
+ * along the unit direction; without a range it ends at t = DBL_MAX, the largest t there is
+ * (DBL_MAX |d|: about 2e-12 for a direction of length 1e-320), so that a hit is never reported
+ * with a t that overflows. */
 static int make_ray(const double o[3], const double d[3], const double *range, bsi_ray *ray,
-                    double *len)
+                    double len[2])
 {
     double scale = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
     /* t_max = +Inf is "no limit" (1.2); t_min stays finite */
@@ -24,7 +28,8 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
         (range && !(isfinite(range[0]) && (isfinite(range[1]) || range[1] == INFINITY))) || scale == 0.0)
         return 0;
     double dd[3] = {d[0] / scale, d[1] / scale, d[2] / scale}, l = sqrt(bsi_dot3(dd, dd));
-    *len = scale * l;
+    len[0] = scale;
+    len[1] = l;
     for (int c = 0; c < 3; c++) {
         ray->o[c] = o[c];
         ray->d[c] = dd[c] / l;
@@ -40,8 +45,8 @@ static int make_ray(const double o[3], const double d[3], const double *range, b
     ray->e2[1] = sg + y * y * a;
     ray->e2[2] = -y;
     ray->open = range == NULL;
-    ray->tmin = range ? range[0] * *len : 0.0;
-    ray->tmax = range ? range[1] * *len : INFINITY;
+    ray->tmin = range ? range[0] * scale * l : 0.0;
+    ray->tmax = (range ? range[1] : DBL_MAX) * scale * l;
     return 1;
 }
 
@@ -153,12 +158,13 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
 }
 
 /* Outputs of ray k: the hit, or a miss with t = tmiss (+Inf, or NaN for an invalid ray). */
-static void put(const bs_locator *L, size_t k, const bsi_ray *ray, double len,
+static void put(const bs_locator *L, size_t k, const bsi_ray *ray, const double len[2],
                 const bsi_ray_hit *hit, double tmiss, uint32_t *patch, const bs_view *uv,
-                const bs_view *t, const bs_view *nrm)
+                const bs_view *t, const bs_view *nrm, unsigned char *kind)
 {
     double u = NAN, v = NAN, tt = tmiss, nv[3] = {NAN, NAN, NAN};
     uint32_t id = UINT32_MAX;
+    unsigned char kd = BS_NORMAL_UNDEFINED;
     if (hit && isfinite(hit->t)) {
         const bsi_loc_leaf *leaf = &L->leaves[hit->leaf];
         const double side = 1.0 / BSI_LOC_SPLIT;
@@ -167,11 +173,13 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, double len,
         u = leaf->u0 + hit->s * side;
         v = leaf->v0 + hit->r * side;
         /* bs_patch_eval_normal's bits, with the patch's normal scale made once */
-        bsi_eval_normal_one(L->patches[id], &L->nscale[id], u, v, pos, nv);
+        bsi_eval_normal_one(L->patches[id], &L->nscale[id], u, v, pos, nv, &kd);
         double a[3] = {pos[0] - ray->o[0], pos[1] - ray->o[1], pos[2] - ray->o[2]};
         /* t of the point reported, kept within the range the hit was found in */
-        tt = fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len;
+        tt = fmin(DBL_MAX, fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len[0] / len[1]);
     }
+    if (kind)
+        kind[k] = kd;
     if (patch)
         patch[k] = id;
     if (uv) {
@@ -218,6 +226,14 @@ bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *or
                                const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
                                const bs_view *uv, const bs_view *t, const bs_view *nrm)
 {
+    return bs_locator_intersect_kind(L, n, org, dir, trange, patch, uv, t, nrm, NULL);
+}
+
+bs_status bs_locator_intersect_kind(const bs_locator *L, size_t n, const bs_cview *org,
+                                    const bs_cview *dir, const bs_cview *trange, uint32_t *patch,
+                                    const bs_view *uv, const bs_view *t, const bs_view *nrm,
+                                    unsigned char *kind)
+{
     bs_status st = bsi_loc_intersect_check(L, n, org, dir, trange, uv, t, nrm);
     if (st != BS_OK || n == 0)
         return st;
@@ -225,7 +241,7 @@ bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *or
     if (L->nleaf > 0 && (scratch = malloc(bsi_ray_leaf_scratch(L->max_ctrl) * sizeof(double))) == NULL)
         return BS_ERR_NO_MEMORY;
     for (size_t k = 0; k < n; k++) {
-        double o[3], d[3], range[2], len = 1.0;
+        double o[3], d[3], range[2], len[2] = {1.0, 1.0};
         for (int c = 0; c < 3; c++) {
             o[c] = bsi_cget(&org[c], k);
             d[c] = bsi_cget(&dir[c], k);
@@ -233,14 +249,14 @@ bs_status bs_locator_intersect(const bs_locator *L, size_t n, const bs_cview *or
         for (int c = 0; c < 2 && trange; c++)
             range[c] = bsi_cget(&trange[c], k);
         bsi_ray ray;
-        if (!make_ray(o, d, trange ? range : NULL, &ray, &len)) {
-            put(L, k, NULL, len, NULL, NAN, patch, uv, t, nrm);
+        if (!make_ray(o, d, trange ? range : NULL, &ray, len)) {
+            put(L, k, NULL, len, NULL, NAN, patch, uv, t, nrm, kind);
             continue;
         }
         bsi_ray_hit hit = {INFINITY, 0.0, 0.0, 0};
         if (L->nleaf > 0)
             trace(L, &ray, scratch, &hit);
-        put(L, k, &ray, len, &hit, INFINITY, patch, uv, t, nrm);
+        put(L, k, &ray, len, &hit, INFINITY, patch, uv, t, nrm, kind);
     }
     free(scratch);
     return BS_OK;

@@ -13,7 +13,12 @@
  * of its piece when the hodographs of (X1, X2) along s and along r lie in two cones that do not
  * meet (the map is then one to one there); a piece without one is discarded when the origin is
  * shown to lie outside the convex hull of its projected net. Anything else is halved in both
- * directions, the nearest quarter searched first, down to a fixed depth.
+ * directions, the nearest quarter searched first, down to a fixed depth; a piece with a side
+ * collapsed to a point (a pole) is halved across that side only. Halved in both directions, the
+ * pieces along a pole would double at every level, each holding the pole, which lies close to a
+ * ray through a point next to it, so that none could be discarded and the budget ran out before
+ * the piece holding the hit was reached; halved across the pole, one piece a level holds it, and
+ * its hull shrinks onto the pole until the ray leaves it.
  */
 #include "query/ray_piece.h"
 
@@ -21,8 +26,9 @@
 #include <math.h>
 
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
+#define POLE_DEPTH 40  /* the same for pieces halved across a pole (2^-42 of the patch) */
 #define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
-#define SLOTS (3 * MAX_DEPTH + 4)
+#define SLOTS (3 * POLE_DEPTH + 4)
 
 size_t bsi_ray_leaf_scratch(size_t max_ctrl)
 {
@@ -261,6 +267,50 @@ SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *
     return big;
 }
 
+/* The largest distance (max norm of X1, X2, T over W) between the points of the line of the net
+ * from index a, count points step apart, and its first point. */
+SPECIALISE double line_span(const double *net, size_t a, size_t count, size_t step, int rat)
+{
+    const double *p0 = net + a * NC;
+    double x0 = WDIV(rat, p0[0], p0[3]), y0 = WDIV(rat, p0[1], p0[3]), z0 = WDIV(rat, p0[2], p0[3]);
+    double span = 0.0;
+    for (size_t k = 1; k < count; k++) {
+        const double *p = net + (a + k * step) * NC;
+        span = greater(span, greater(fabs(WDIV(rat, p[0], p[3]) - x0),
+                                     greater(fabs(WDIV(rat, p[1], p[3]) - y0),
+                                             fabs(WDIV(rat, p[2], p[3]) - z0))));
+    }
+    return span;
+}
+
+/* The direction to halve a piece in: BS_DIR_U when a side s = const (a row of the net) is
+ * collapsed to a point (within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V for
+ * the converse; -2 (both directions, down to POLE_DEPTH) when sides of both kinds are collapsed
+ * (a corner between two poles), -1 (both, down to MAX_DEPTH) when none is. */
+SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const double lo[3],
+                          const double hi[3])
+{
+    if (m == 0 || n == 0)
+        return -1;
+    double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
+    int rows = line_span(net, 0, n + 1, 1, rat) <= ext || line_span(net, m * (n + 1), n + 1, 1, rat) <= ext;
+    int cols = line_span(net, 0, m + 1, n + 1, rat) <= ext || line_span(net, n, m + 1, n + 1, rat) <= ext;
+    return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
+}
+
+/* 1 when the largest |P - o| of a leaf is within [2^-256, 2^256], else the power of two that
+ * brings it near 1: the products of Newton's step, of the cones and of the hull test are then
+ * formed without overflow or underflow (rays at surfaces beyond about 1e77 or below 1e-77 from
+ * their origin missed), and the scaling is exact. The usual range keeps its bits. */
+static double leaf_scale(double big)
+{
+    if (!(big > 0.0 && big <= DBL_MAX) || (big >= 0x1p-256 && big <= 0x1p256))
+        return 1.0;
+    int e = 0;
+    (void)frexp(big, &e);
+    return ldexp(1.0, -e);
+}
+
 static int wanted(const bsi_ray *ray, double t, double best)
 {
     return (ray->open ? t > ray->tmin : t >= ray->tmin) && t <= ray->tmax && t < best;
@@ -275,17 +325,30 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
     double rbox[6], big = project(L->nets + leaf->net, np, rat, ray, root, rbox);
+    /* the leaf's frame scaled by sig at extreme distances: lengths below are scaled, t as well
+     * (t / sig is the ray's) */
+    double sig = leaf_scale(big), diag = L->diag;
+    if (sig != 1.0) {
+        for (size_t q = 0; q < np; q++)
+            for (size_t c = 0; c < 3; c++)
+                root[q * NC + c] *= sig;
+        for (int c = 0; c < 6; c++)
+            rbox[c] *= sig;
+        big *= sig;
+        diag = fmin(DBL_MAX, diag * sig);
+    }
+    double tmin = ray->tmin * sig;
     /* rounding of the projection and of the halvings, and the distance accepted as a hit */
-    double tol = 1e-13 * L->diag + 256 * DBL_EPSILON * big;
-    double accept = 1e-11 * L->diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
+    double tol = 1e-13 * diag + 256 * DBL_EPSILON * big;
+    double accept = 1e-11 * diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
     /* slots: those freed, then those never used; the leaf's own net stays in root (slot -1) */
     int free_slot[SLOTS], nfree = 0, unused = 0, top = 0;
     pending stack[SLOTS];
-    stack[top++] = (pending){0.0, 0.0, 1.0, -INFINITY, 0, -1};
+    stack[top++] = (pending){0.0, 0.0, 1.0, 1.0, -INFINITY, 0, 0, -1};
     for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
         double *net = e.slot < 0 ? root : slot + (size_t)e.slot * len, lo[3], hi[3];
-        double tmax = lesser(hit->t, ray->tmax);
+        double tmax = lesser(hit->t, ray->tmax) * sig;
         if (e.slot >= 0)
             free_slot[nfree++] = e.slot;
         int near;
@@ -297,7 +360,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
             near = box_near(lo, hi, tol);
         } else
             near = near_origin(net, np, rat, tol, lo, hi);
-        if (e.tlo > tmax || !near || hi[2] + tol < ray->tmin || lo[2] - tol > tmax)
+        if (e.tlo > tmax || !near || hi[2] + tol < tmin || lo[2] - tol > tmax)
             continue;
         double within = greater(greater(-lo[0], hi[0]), greater(-lo[1], hi[1]));
         /* most pieces the box test lets through hold no zero: shown first, without Newton,
@@ -310,8 +373,8 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         bilinear_start(net, m, n, rat, &e, &s, &r);
         int found = newton(root, m, n, rat, &e, s, r, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
-        if (found && wanted(ray, t, hit->t)) {
-            hit->t = t;
+        if (found && wanted(ray, t / sig, hit->t)) {
+            hit->t = t / sig;
             hit->s = s;
             hit->r = r;
             hit->leaf = k;
@@ -319,34 +382,49 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
         if ((found && one_to_one(net, m, n, half[1])) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
-            within <= accept || e.depth == MAX_DEPTH)
+            within <= accept || e.level >= POLE_DEPTH)
             continue;
-        /* the four halves, nearest t first */
-        bsi_net_halve(net, m, n, NC, BS_DIR_U, half[0], half[1]);
+        int dir = pole_split(net, m, n, rat, lo, hi);
+        if (dir == -1 && e.depth >= MAX_DEPTH)
+            continue;
+        /* the four halves (two across a pole), nearest t first */
         pending kids[4];
+        int nk = 0;
+        bsi_net_halve(net, m, n, NC, dir < 0 ? BS_DIR_U : dir, half[0], half[1]);
         for (int a = 0; a < 2; a++) {
             double *cn[2];
-            for (int b = 0; b < 2; b++) {
-                pending *c = &kids[2 * a + b];
-                *c = (pending){e.s0 + a * 0.5 * e.w, e.r0 + b * 0.5 * e.w, 0.5 * e.w, INFINITY,
-                               e.depth + 1, nfree > 0 ? free_slot[--nfree] : unused++};
+            int nb = dir < 0 ? 2 : 1;
+            for (int b = 0; b < nb; b++) {
+                pending *c = &kids[nk + b];
+                double su = dir == BS_DIR_V ? 0.0 : 0.5, sv = dir == BS_DIR_U ? 0.0 : 0.5;
+                int ia = dir == BS_DIR_V ? 0 : a, ib = dir == BS_DIR_V ? a : b;
+                *c = (pending){e.s0 + ia * su * e.w, e.r0 + ib * sv * e.wr,
+                               dir == BS_DIR_V ? e.w : 0.5 * e.w, dir == BS_DIR_U ? e.wr : 0.5 * e.wr,
+                               INFINITY, e.depth + (dir < 0), e.level + 1,
+                               nfree > 0 ? free_slot[--nfree] : unused++};
                 cn[b] = slot + (size_t)c->slot * len;
             }
-            bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
-            for (int b = 0; b < 2; b++) {
-                pending *c = &kids[2 * a + b];
-                for (size_t q = 0; q < np; q++)
-                    c->tlo = lesser(c->tlo, WDIV(rat, cn[b][q * NC + 2], cn[b][q * NC + 3]));
-                c->tlo -= tol;
-            }
+            if (dir < 0)
+                bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
+            else
+                for (size_t q = 0; q < len; q++)
+                    cn[0][q] = half[a][q];
+            nk += nb;
         }
-        for (int a = 1; a < 4; a++) /* insertion sort, farthest first onto the stack */
+        for (int a = 0; a < nk; a++) {
+            pending *c = &kids[a];
+            const double *cn = slot + (size_t)c->slot * len;
+            for (size_t q = 0; q < np; q++)
+                c->tlo = lesser(c->tlo, WDIV(rat, cn[q * NC + 2], cn[q * NC + 3]));
+            c->tlo -= tol;
+        }
+        for (int a = 1; a < nk; a++) /* insertion sort, farthest first onto the stack */
             for (int b = a; b > 0 && kids[b].tlo > kids[b - 1].tlo; b--) {
                 pending x = kids[b];
                 kids[b] = kids[b - 1];
                 kids[b - 1] = x;
             }
-        for (int a = 0; a < 4; a++)
+        for (int a = 0; a < nk; a++)
             stack[top++] = kids[a];
     }
 }

@@ -30,11 +30,13 @@ static inline double norm2(double x, double y)
  * keep them so), so there it is x itself, the same bits without the division */
 #define WDIV(rat, x, w) ((rat) ? (x) / (w) : (x))
 
-/* A sub-patch waiting on the stack: its domain [s0, s0 + w] x [r0, r0 + w] in the leaf, its
- * level below the leaf, its nearest t, and the slot holding its net (-1: the leaf's own). */
+/* A sub-patch waiting on the stack: its domain [s0, s0 + w] x [r0, r0 + wr] in the leaf, its
+ * levels below the leaf (depth: halvings in both directions; level: all halvings), its nearest
+ * t, and the slot holding its net (-1: the leaf's own). Pieces are square but next to a pole,
+ * which is halved across the pole only (ray_patch.c). */
 typedef struct pending {
-    double s0, r0, w, tlo;
-    int depth, slot;
+    double s0, r0, w, wr, tlo;
+    int depth, level, slot;
 } pending;
 
 /* Bernstein polynomials of degree deg at x and their derivatives. */
@@ -167,7 +169,7 @@ SPECIALISE void bilinear_start(const double *net, size_t m, size_t n, int rat, c
     u = u >= 0.0 && u <= 1.0 ? u : 0.5;
     v = v >= 0.0 && v <= 1.0 ? v : 0.5;
     *s = e->s0 + u * e->w;
-    *r = e->r0 + v * e->w;
+    *r = e->r0 + v * e->wr;
 }
 
 /* Newton (damped) on (X1, X2) inside [s0, s0 + w] x [r0, r0 + w] from (s, r): 1 when the point
@@ -177,9 +179,9 @@ SPECIALISE int newton(const double *net, size_t m, size_t n, int rat, const pend
                       double r, double floor_dist, double tol, double *s_out, double *r_out,
                       double *t_out, double g[2])
 {
-    double pad = e->w * 0x1p-30;
+    double pad = e->w * 0x1p-30, padr = e->wr * 0x1p-30;
     double slo = greater(0.0, e->s0 - pad), shi = lesser(1.0, e->s0 + e->w + pad);
-    double rlo = greater(0.0, e->r0 - pad), rhi = lesser(1.0, e->r0 + e->w + pad);
+    double rlo = greater(0.0, e->r0 - padr), rhi = lesser(1.0, e->r0 + e->wr + padr);
     double best = INFINITY;
     int worse = 0; /* steps in a row that found nothing nearer */
     *s_out = s;
@@ -202,17 +204,28 @@ SPECIALISE int newton(const double *net, size_t m, size_t n, int rat, const pend
             worse++;
         if (!(dist > floor_dist) || worse >= 4) /* converged, or no longer converging */
             break;
-        /* (J^T J + lambda I) step = -J^T f */
-        double a11 = fs[0] * fs[0] + fs[1] * fs[1], a12 = fs[0] * fr[0] + fs[1] * fr[1];
-        double a22 = fr[0] * fr[0] + fr[1] * fr[1];
-        double g1 = fs[0] * f[0] + fs[1] * f[1], g2 = fr[0] * f[0] + fr[1] * f[1];
-        double lambda = 1e-13 * (a11 + a22) + DBL_MIN;
-        a11 += lambda;
-        a22 += lambda;
-        double det = a11 * a22 - a12 * a12;
-        if (!(det > 0.0) || !isfinite(det))
-            break;
-        double ds = -(a22 * g1 - a12 * g2) / det, dr = -(a11 * g2 - a12 * g1) / det;
+        /* J step = -f where J is clearly regular (its columns more than about 1e-10 rad from
+         * parallel; the 1-norms bound the lengths, without square roots): next to a pole X_s
+         * and X_r may be nearly parallel and very different in size, where the damping below,
+         * relative to the larger, would stall the step along the smaller; else
+         * (J^T J + lambda I) step = -J^T f, finite also where X_r vanishes */
+        double dj = fs[0] * fr[1] - fs[1] * fr[0], ds, dr;
+        if (fabs(dj) > 1e-10 * (fabs(fs[0]) + fabs(fs[1])) * (fabs(fr[0]) + fabs(fr[1])) && isfinite(dj)) {
+            ds = -(fr[1] * f[0] - fr[0] * f[1]) / dj;
+            dr = -(fs[0] * f[1] - fs[1] * f[0]) / dj;
+        } else {
+            double a11 = fs[0] * fs[0] + fs[1] * fs[1], a12 = fs[0] * fr[0] + fs[1] * fr[1];
+            double a22 = fr[0] * fr[0] + fr[1] * fr[1];
+            double g1 = fs[0] * f[0] + fs[1] * f[1], g2 = fr[0] * f[0] + fr[1] * f[1];
+            double lambda = 1e-13 * (a11 + a22) + DBL_MIN;
+            a11 += lambda;
+            a22 += lambda;
+            double det = a11 * a22 - a12 * a12;
+            if (!(det > 0.0) || !isfinite(det))
+                break;
+            ds = -(a22 * g1 - a12 * g2) / det;
+            dr = -(a11 * g2 - a12 * g1) / det;
+        }
         /* as fmin(shi, fmax(slo, x)): a NaN step goes to slo */
         double s1 = lesser(greater(s + ds, slo), shi), r1 = lesser(greater(r + dr, rlo), rhi);
         if (s1 == s && r1 == r)

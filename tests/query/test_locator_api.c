@@ -167,24 +167,27 @@ static void invalid_rays(const bs_locator *L)
 
 /* Rays from very far away, or with huge or tiny directions, end (the rounding of P - o then
  * exceeds the surface: pieces are taken whole) and answer a hit on the surface's side of the
- * origin or a miss. */
+ * origin or a miss. A hit whose t would be beyond DBL_MAX (directions of subnormal length, rays 4
+ * and 5) is a miss: 1.1 reported it as a hit with t = +Inf, the miss value. */
 static void extreme_rays(const bs_locator *L)
 {
     static batch b;
     b.L = L;
-    const double o[6][3] = {{1e15, 0, 1}, {1e300, 1e300, 1e300}, {0, 0, 1e200}, {5, 0, 1}, {5, 0, 1}, {-1e-300, 0, 1}};
-    const double d[6][3] = {{-1, 0, 0}, {-1, -1, -1}, {0, 0, -1e-300}, {-1e300, 0, 0}, {-4.9e-324, 0, 0}, {1e-310, 1e-310, 0}};
-    b.n = 6;
-    for (int k = 0; k < 6; k++)
+    const double o[7][3] = {{1e15, 0, 1}, {1e300, 1e300, 1e300}, {0, 0, 1e200}, {5, 0, 1}, {5, 0, 1}, {-1e-300, 0, 1}, {5, 0, 1}};
+    const double d[7][3] = {{-1, 0, 0}, {-1, -1, -1}, {0, 0, -1e-300}, {-1e300, 0, 0}, {-4.9e-324, 0, 0}, {1e-310, 1e-310, 0}, {-1e-300, 0, 0}};
+    b.n = 7;
+    for (int k = 0; k < 7; k++)
         for (int c = 0; c < 3; c++) {
             b.o[c][k] = o[k][c];
             b.d[c][k] = d[k][c];
         }
     CHECK_STATUS(run(&b), BS_OK);
-    for (size_t k = 0; k < 6; k++)
-        CHECKF((b.patch[k] == UINT32_MAX && b.t[k] == INFINITY) || (b.patch[k] < 32 && b.t[k] > 0 && isfinite(b.u[k])),
+    for (size_t k = 0; k < 7; k++)
+        CHECKF((b.patch[k] == UINT32_MAX && b.t[k] == INFINITY) ||
+                   (b.patch[k] < 32 && b.t[k] > 0 && isfinite(b.t[k]) && isfinite(b.u[k])),
                "extreme ray %zu: patch %u t %g", k, b.patch[k], b.t[k]);
-    CHECK(b.patch[3] != UINT32_MAX && b.patch[4] != UINT32_MAX && b.patch[5] != UINT32_MAX); /* the teapot is there */
+    CHECK(b.patch[3] != UINT32_MAX && b.patch[6] != UINT32_MAX); /* the teapot is there */
+    CHECK(b.patch[4] == UINT32_MAX && b.patch[5] == UINT32_MAX); /* but beyond t = DBL_MAX */
 }
 
 /* Strided (negative too) views give the bits of packed ones. */

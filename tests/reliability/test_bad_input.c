@@ -388,7 +388,8 @@ static void test_create_and_accessors(void)
     bs_surface_destroy(NULL);
     CHECK(bs_surface_count(NULL) == 0 && bs_surface_dim(NULL) == 0 && bs_surface_get(NULL, 0) == NULL);
     CHECK(bs_surface_get(S3, 2) == NULL && bs_surface_get(S3, SIZE_MAX) == NULL);
-    CHECK(strcmp(bs_status_string(-12), "unknown status") == 0);
+    CHECK(strcmp(bs_status_string(-13), "unknown status") == 0);
+    CHECK(strcmp(bs_status_string(BS_ERR_PRECISION), "unknown status") != 0);
     CHECK(strcmp(bs_status_string(1), "unknown status") == 0);
     CHECK(bs_status_string(-2147483647 - 1) != NULL);
     CHECK(bs_builtin_name(3) == NULL && bs_builtin_name(SIZE_MAX) == NULL);

@@ -20,7 +20,7 @@ from ._errors import (BezsurfError, BezsurfFileNotFoundError, BezsurfIOError,
                       BezsurfIsADirectoryError, BezsurfNotADirectoryError, BezsurfPermissionError,
                       DegreeError, DimensionError, DomainError, IncompatibleError,
                       InvalidArgumentError, NoMemoryError, NonFiniteError, ParseError, SizeError,
-                      UnsupportedError)
+                      UnsupportedError, PrecisionError)
 from ._enums import CurvatureKind, Direction, Format, NormalKind, Side, TessMethod
 from ._lib import LIB as _LIB
 from ._buffers import have_numpy
@@ -74,7 +74,7 @@ __all__ = [
     "BezsurfError", "InvalidArgumentError", "NoMemoryError", "DegreeError", "DimensionError",
     "SizeError", "DomainError", "NonFiniteError", "ParseError", "BezsurfIOError",
     "BezsurfFileNotFoundError", "BezsurfPermissionError", "BezsurfIsADirectoryError",
-    "BezsurfNotADirectoryError", "IncompatibleError", "UnsupportedError",
+    "BezsurfNotADirectoryError", "IncompatibleError", "UnsupportedError", "PrecisionError",
     "DIR_U", "DIR_V", "NORMAL_REGULAR", "NORMAL_LIMIT", "NORMAL_UNDEFINED", "MAX_DEGREE",
     "MAX_DIM", "builtin_names", "version", "version_number", "status_string", "library_path",
     "have_numpy", "Model", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_OUTSIDE",

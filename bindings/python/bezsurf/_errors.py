@@ -167,6 +167,11 @@ class UnsupportedError(BezsurfError, ValueError):
     """BS_ERR_UNSUPPORTED: the operation is not defined for this input."""
 
 
+class PrecisionError(BezsurfError, ArithmeticError):
+    """BS_ERR_PRECISION: a certified result cannot be given in double precision for this input
+    (a weight ratio or a range of magnitudes beyond what the method certifies). Since 1.2."""
+
+
 ERROR_CLASSES: Dict[int, Type[BezsurfError]] = {
     -1: InvalidArgumentError,
     -2: NoMemoryError,
@@ -179,4 +184,5 @@ ERROR_CLASSES: Dict[int, Type[BezsurfError]] = {
     -9: BezsurfIOError,
     -10: IncompatibleError,
     -11: UnsupportedError,
+    -12: PrecisionError,
 }

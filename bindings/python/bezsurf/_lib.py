@@ -187,6 +187,8 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
      STATUS),
     ("bs_locator_intersect_mt", (HANDLE, c_size_t, CVIEW, CVIEW, CVIEW, IDS, VIEWS, VIEWS, VIEWS,
                                  c_size_t), STATUS),
+    ("bs_locator_intersect_kind", (HANDLE, c_size_t, CVIEW, CVIEW, CVIEW, IDS, VIEWS, VIEWS, VIEWS,
+                                   BYTES), STATUS),
     # continuity.h
     ("bs_surface_continuity", (HANDLE, c_double, c_size_t, POINTER(CEdgeContinuity), c_size_t,
                                SIZE_OUT, POINTER(COpenEdge), c_size_t, SIZE_OUT), STATUS),

@@ -139,6 +139,18 @@ class Locator(Handle):
         limit (since 1.2); a NaN or another infinite bound makes the ray invalid, t NaN). 3-D
         surfaces only. ``threads`` threads trace the rays (0: one per CPU; since
         1.1), with the same results."""
+        hits, _ = self._trace(origins, directions, t_min, t_max, threads, False)
+        return hits
+
+    def intersect_kinds(self, origins: Any, directions: Any, t_min: Optional[Any] = None,
+                        t_max: Optional[Any] = None) -> Tuple[RayHits, Any]:
+        """:meth:`intersect` on one thread, with the kind of each hit's normal (NormalKind
+        values as for :meth:`Patch.eval_normal`; UNDEFINED for a miss): ``(hits, kinds)``.
+        Since 1.2."""
+        return self._trace(origins, directions, t_min, t_max, 1, True)
+
+    def _trace(self, origins: Any, directions: Any, t_min: Optional[Any], t_max: Optional[Any],
+               threads: Any, with_kinds: bool) -> Tuple[RayHits, Any]:
         threads = A.integer(threads, "threads")
         org = B.PointsIn(origins, 3, "origins")
         dirs = B.PointsIn(directions, 3, "directions")
@@ -164,11 +176,20 @@ class Locator(Handle):
         uv = B.Output(n, 2)
         t = B.Output(n, 1)
         nrm = B.Output(n, 3)
-        LIB.bs_locator_intersect_mt(self._ptr, n, org.views, dirs.views, trange, ids.address,
-                                    uv.views, t.views, nrm.views, threads)
+        kinds = B.KindOutput(n) if with_kinds else None
+        if kinds is not None:
+            LIB.bs_locator_intersect_kind(self._ptr, n, org.views, dirs.views, trange, ids.address,
+                                          uv.views, t.views, nrm.views, kinds.address)
+        else:
+            LIB.bs_locator_intersect_mt(self._ptr, n, org.views, dirs.views, trange, ids.address,
+                                        uv.views, t.views, nrm.views, threads)
         scalar = org.scalar and dirs.scalar
-        return RayHits(_finish(scalar, ids.result()), _finish(scalar, uv.result()),
+        hits = RayHits(_finish(scalar, ids.result()), _finish(scalar, uv.result()),
                        _finish(scalar, _column(t.result())), _finish(scalar, nrm.result()))
+        if kinds is None:
+            return hits, None
+        k = kinds.result()
+        return hits, (k[0] if scalar else k)
 
     def __repr__(self) -> str:
         if self.closed:

@@ -114,6 +114,17 @@ class LocatorTest(PlainTestCase):
         with self.assertRaises(ValueError):
             self.loc.intersect([(0, 0, 1.0)], [(0, 0, 1.0), (0, 0, 1.0)])
 
+    def test_ray_normal_kinds(self):
+        # down onto the lid's pole (a limit normal), and a miss (since 1.2)
+        hits, kinds = self.loc.intersect_kinds([(0, 0, 10.0), (0, 0, -10.0)],
+                                               [(0, 0, -1.0), (0, 0, -1.0)])
+        kinds = [int(k) for k in plain(kinds)]
+        self.assertEqual(kinds, [int(bezsurf.NormalKind.LIMIT), int(bezsurf.NormalKind.UNDEFINED)])
+        self.assertEqual(plain(hits.patch), plain(self.loc.intersect([(0, 0, 10.0), (0, 0, -10.0)],
+                                                                     [(0, 0, -1.0), (0, 0, -1.0)]).patch))
+        one, kind = self.loc.intersect_kinds((0, 0, 10.0), (0, 0, -1.0))
+        self.assertEqual(int(kind), int(bezsurf.NormalKind.LIMIT))
+
     def test_closest_agrees_with_patches(self):
         q = [(4.0, 1.0, 2.0), (0.0, 0.0, 5.0)]
         r = self.loc.closest_point(q)

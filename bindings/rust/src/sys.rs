@@ -43,6 +43,9 @@ pub const BS_ERR_IO: bs_status = -9;
 pub const BS_ERR_INCOMPATIBLE: bs_status = -10;
 /// An operation not defined for this input (e.g. the hodograph of a rational patch).
 pub const BS_ERR_UNSUPPORTED: bs_status = -11;
+/// A certified result cannot be given in double precision for this input (a weight ratio or a
+/// range of magnitudes beyond what the method certifies). Since 1.2.
+pub const BS_ERR_PRECISION: bs_status = -12;
 
 /// Largest degree per direction.
 pub const BS_MAX_DEGREE: usize = 64;
@@ -909,5 +912,19 @@ extern "C" {
         area: *mut f64,
         volume: *mut f64,
         centroid: *mut f64,
+    ) -> bs_status;
+    /// [`bs_locator_intersect`] with the kind of each hit's normal (`BS_NORMAL_*`; undefined
+    /// for a miss) in `kind`, NULL or `n` bytes (since 1.2).
+    pub fn bs_locator_intersect_kind(
+        l: *const bs_locator,
+        n: usize,
+        org: *const bs_cview,
+        dir: *const bs_cview,
+        trange: *const bs_cview,
+        patch: *mut u32,
+        uv: *const bs_view,
+        t: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut u8,
     ) -> bs_status;
 }

@@ -1,0 +1,153 @@
+/* Rays down the normal at points next to a pole (a side of the net collapsed to one point) must
+ * hit no later than their height above the point: the two patches of tests/hostile/pole_miss.py
+ * and pole_miss2.py (a rational bicubic patch and a polynomial (3,1) one, their u = 1 sides
+ * collapsed), whose rays from h = 1/128 .. 2 above (u,v) = (1 - 2^-16, ...) were missed, points
+ * 2^-8 .. 2^-30 from the pole, and random patches of degrees up to 5, polynomial and rational,
+ * with one side collapsed. */
+#include "harness.h"
+
+#include <bezsurf.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+static unsigned long long rng = 1603;
+
+/* pole_miss2.py: the net times 2^34 (exact) */
+static const double raw2[8][3] = {{6591348736, 1756889088, -11759255552}, {11110711296, 13729529856, 6133121024},
+       {15438708736, -347602944, -8838971392}, {1606418432, 16236150784, 16236150784},
+       {16236150784, 16236150784, 16236150784}, {16213082112, 16236150784, 16239820800},
+       {17179344896, 17179344896, 17179344896}, {17179344896, 17179344896, 17179344896}};
+/* pole_miss.py: the net (x, y, z times 2^-65) and its weights */
+static const double raw1[16][4] = {
+{-2.5353085774750298e-20, -2.3634204461865107e-20, -8.6622353746553058e-21, 2},
+{1.1521798752251122e-20, 2.3194971556599449e-20, -2.3634204461865107e-20, 1},
+{-2.1863210770389074e-20, 1.1521798752251122e-20, 2.2347938609345149e-20, 0.5},
+{-4.2351647362715017e-22, 5.0458017365734688e-22, 1.3483043984614351e-22, 0.5},
+{3.4286636390322997e-21, 2.6912321229412755e-20, -1.2945376586454883e-21, 0.5},
+{-3.8579703769473211e-21, 1.5412029173088012e-20, 1.5412029173088012e-20, 0.25},
+{-1.9571093293004635e-20, 2.0958275180256062e-20, 2.0705157912814836e-20, 4},
+{-3.1416319664763991e-21, 1.0383598229378156e-20, 7.3552900068215221e-21, 4},
+{2.2046017685763294e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
+{2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25}};
+
+static int rays, misses;
+
+/* The ray from h above S(u,v) down the unit normal there (a regular normal, |d.N| = 1): a hit no
+ * later than h (an earlier one may come from another part of the surface). */
+static void shoot(const bs_locator *L, const bs_patch *p, double u, double v, double h,
+                  const char *what)
+{
+    double P[3], N[3], o[3], d[3], t = -1;
+    unsigned char kind = 9;
+    bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+    bs_view pv[3] = {{&P[0], 1, 0}, {&P[1], 1, 0}, {&P[2], 1, 0}};
+    bs_view nv[3] = {{&N[0], 1, 0}, {&N[1], 1, 0}, {&N[2], 1, 0}};
+    CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, pv, nv, &kind), BS_OK);
+    if (kind != BS_NORMAL_REGULAR)
+        return;
+    for (int c = 0; c < 3; c++) {
+        o[c] = P[c] + h * N[c];
+        d[c] = -N[c];
+    }
+    bs_cview ov[3] = {{&o[0], 1, 0}, {&o[1], 1, 0}, {&o[2], 1, 0}};
+    bs_cview dv[3] = {{&d[0], 1, 0}, {&d[1], 1, 0}, {&d[2], 1, 0}};
+    bs_view tv = {&t, 1, 0};
+    uint32_t id = 7;
+    CHECK_STATUS(bs_locator_intersect(L, 1, ov, dv, NULL, &id, NULL, &tv, NULL), BS_OK);
+    rays++;
+    int ok = id == 0 && t <= h * (1 + 1e-9) + 1e-9 * 4.0;
+    misses += !ok;
+    CHECKF(ok, "%s: (u,v) = (%.17g, %.17g), h = %g: patch %u t = %.17g", what, u, v, h, id, t);
+}
+
+static bs_locator *locator_of(const bs_patch *p)
+{
+    bs_surface *s = NULL;
+    bs_locator *L = NULL;
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
+    CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
+    CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
+    bs_surface_destroy(s);
+    return L;
+}
+
+/* Points 2^-k from the u = 1 pole, k = 8 .. 30, at several v, rays from h = 1/128 .. 2 times
+ * size above them. */
+static void sweep(const bs_patch *p, double size, const double *vs, int nvs, const char *what)
+{
+    bs_locator *L = locator_of(p);
+    if (L == NULL)
+        return;
+    for (int k = 8; k <= 30; k += bs_test_quick() ? 7 : 1)
+        for (int j = 0; j < nvs; j++)
+            for (double h = 1.0 / 128; h <= 2.0; h *= 2)
+                shoot(L, p, 1.0 - ldexp(1.0, -k), vs[j], h * size, what);
+    bs_locator_destroy(L);
+}
+
+static void reproducers(void)
+{
+    double c2[24], c1[48], w1[16], sc = ldexp(1.0, 65);
+    for (int k = 0; k < 8; k++)
+        for (int c = 0; c < 3; c++)
+            c2[3 * k + c] = raw2[k][c] / 17179869184.0;
+    for (int k = 0; k < 16; k++) {
+        for (int c = 0; c < 3; c++)
+            c1[3 * k + c] = raw1[k][c] * sc;
+        w1[k] = raw1[k][3];
+    }
+    bs_patch *p2 = NULL, *p1 = NULL;
+    CHECK_STATUS(bs_patch_create(3, 1, 3, c2, NULL, &p2), BS_OK);
+    CHECK_STATUS(bs_patch_create(3, 3, 3, c1, w1, &p1), BS_OK);
+    double v2[4] = {0.9999847412109375, 0.5, 0.125, 1.0 - 0x1p-30};
+    double v1[4] = {0.3242034912109375, 0.9999847412109375, 0.5, 0x1p-20};
+    if (p2 != NULL)
+        sweep(p2, 1.0, v2, 4, "pole_miss2 (polynomial 3x1)");
+    if (p1 != NULL)
+        sweep(p1, 2.0, v1, 4, "pole_miss (rational bicubic)");
+    bs_patch_destroy(p2);
+    bs_patch_destroy(p1);
+}
+
+/* Random patches with the u = 1 side collapsed to one point. */
+static void random_poles(int count)
+{
+    for (int t = 0; t < count; t++) {
+        size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 1 + (size_t)(bs_test_rand_u64(&rng) % 5);
+        double ctrl[3 * 36], wt[36], pole[3];
+        int rational = t % 2;
+        for (size_t c = 0; c < 3; c++)
+            pole[c] = bs_test_rand(&rng, -1, 1);
+        for (size_t i = 0; i <= m; i++)
+            for (size_t j = 0; j <= n; j++) {
+                size_t k = i * (n + 1) + j;
+                for (size_t c = 0; c < 3; c++)
+                    ctrl[3 * k + c] = i == m ? pole[c] : bs_test_rand(&rng, -1, 1);
+                wt[k] = rational ? ldexp(1.0, (int)(bs_test_rand_u64(&rng) % 9) - 4) : 1.0;
+            }
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? wt : NULL, &p), BS_OK);
+        if (p == NULL)
+            continue;
+        double vs[3] = {bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), 1.0 - 0x1p-16};
+        char what[64];
+        (void)snprintf(what, sizeof what, "random patch %d (%zu,%zu)%s", t, m, n, rational ? " rational" : "");
+        sweep(p, 0.5, vs, 3, what);
+        bs_patch_destroy(p);
+    }
+}
+
+int main(void)
+{
+    reproducers();
+    random_poles(bs_test_quick() ? 6 : 40);
+    printf("%d rays down normals next to poles, %d missed or hit later\n", rays, misses);
+    return bs_test_exit("test_ray_poles");
+}

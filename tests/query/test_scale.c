@@ -1,0 +1,156 @@
+/* Scale invariance: a patch and its copies scaled by 2^e, e from -1000 to 1000, give the same
+ * normals and normal kinds, the same curvature kinds and curvatures scaled by 2^-e, closest
+ * distances (through the patch and through a locator) scaled by 2^e, and rays that hit the
+ * scaled point at the scaled t; the hostile boxes (tests/hostile/huge_box, tiny_box,
+ * subnormal_box) tessellate with a relative tolerance into the unit box's mesh and normals.
+ * Before 1.2: normals (0,0,0) beyond 1e154 and below 1e-162, no closest point through a locator
+ * beyond 1e154, rays missing at 1e-170 and 1e200, 2 triangles for huge_box. */
+#include "harness.h"
+
+#include <bezsurf.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+/* A wavy bicubic net in [-1, 1]^3, and its weights when rational. */
+static void net(double *ctrl, double *w)
+{
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double *p = ctrl + 3 * (4 * i + j);
+            p[0] = (double)i / 1.5 - 1.0;
+            p[1] = (double)j / 1.5 - 1.0;
+            p[2] = 0.25 * (double)((i * 3 + j * 5) % 7) / 7.0 - 0.125 * (double)(i == j);
+            w[4 * i + j] = 1.0 + 0.5 * (double)((i + 2 * j) % 3);
+        }
+}
+
+typedef struct answers {
+    double nrm[3], k[4], d, dl, t;
+    unsigned char kind, ck;
+    uint32_t id;
+    bs_status st;
+} answers;
+
+static void query(const bs_patch *p, double s, answers *a)
+{
+    double u = 0.3, v = 0.7, x[3];
+    bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+    bs_view xv[3] = {{&x[0], 1, 0}, {&x[1], 1, 0}, {&x[2], 1, 0}};
+    bs_view nv[3] = {{&a->nrm[0], 1, 0}, {&a->nrm[1], 1, 0}, {&a->nrm[2], 1, 0}};
+    bs_view kv[4] = {{&a->k[0], 1, 0}, {&a->k[1], 1, 0}, {&a->k[2], 1, 0}, {&a->k[3], 1, 0}};
+    CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, xv, nv, &a->kind), BS_OK);
+    CHECK_STATUS(bs_patch_eval_curvature(p, 1, &cu, &cv, kv, NULL, NULL, &a->ck), BS_OK);
+    double q[3] = {0.2 * s, -0.3 * s, 1.5 * s};
+    bs_cview qv[3] = {{&q[0], 1, 0}, {&q[1], 1, 0}, {&q[2], 1, 0}};
+    bs_view dv = {&a->d, 1, 0}, dl = {&a->dl, 1, 0};
+    a->st = bs_patch_closest_point(p, 1, qv, NULL, &dv, NULL);
+    bs_surface *S = NULL;
+    bs_locator *L = NULL;
+    CHECK_STATUS(bs_surface_create(&S), BS_OK);
+    CHECK_STATUS(bs_surface_add(S, p, NULL), BS_OK);
+    CHECK_STATUS(bs_locator_create(S, &L), BS_OK);
+    CHECK_STATUS(bs_locator_closest_point(L, 1, qv, NULL, NULL, &dl, NULL), a->st);
+    /* a ray down the normal from 0.5 s above the point */
+    double o[3], d[3];
+    for (int c = 0; c < 3; c++) {
+        o[c] = x[c] + 0.5 * s * a->nrm[c];
+        d[c] = -a->nrm[c];
+    }
+    bs_cview ov[3] = {{&o[0], 1, 0}, {&o[1], 1, 0}, {&o[2], 1, 0}};
+    bs_cview dw[3] = {{&d[0], 1, 0}, {&d[1], 1, 0}, {&d[2], 1, 0}};
+    bs_view tv = {&a->t, 1, 0};
+    CHECK_STATUS(bs_locator_intersect(L, 1, ov, dw, NULL, &a->id, NULL, &tv, NULL), BS_OK);
+    bs_locator_destroy(L);
+    bs_surface_destroy(S);
+}
+
+static void copies(int rational)
+{
+    double ctrl[48], w[16], sc[48];
+    net(ctrl, w);
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl, rational ? w : NULL, &p), BS_OK);
+    answers ref;
+    query(p, 1.0, &ref);
+    bs_patch_destroy(p);
+    CHECK(ref.kind == BS_NORMAL_REGULAR && ref.ck == BS_CURV_REGULAR && ref.st == BS_OK && ref.id == 0);
+    int worst_e = 0;
+    double worst = 0.0;
+    for (int e = -1000; e <= 1020; e += e == 1000 ? 20 : bs_test_quick() ? 100 : 20) {
+        double s = ldexp(1.0, e);
+        for (int k = 0; k < 48; k++)
+            sc[k] = ctrl[k] * s;
+        p = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, sc, rational ? w : NULL, &p), BS_OK);
+        if (p == NULL)
+            continue;
+        answers a;
+        query(p, s, &a);
+        double dn = fabs(a.nrm[0] - ref.nrm[0]) + fabs(a.nrm[1] - ref.nrm[1]) + fabs(a.nrm[2] - ref.nrm[2]);
+        CHECKF(a.kind == ref.kind && dn <= 1e-13, "2^%d: normal kind %d, off by %g", e, a.kind, dn);
+        CHECKF(a.ck == ref.ck, "2^%d: curvature kind %d", e, a.ck);
+        for (int c = 1; c < 4; c++) /* H, k_min, k_max scale by 2^-e */
+            CHECKF(fabs(ldexp(a.k[c], e) - ref.k[c]) <= 1e-9 * (fabs(ref.k[2]) + fabs(ref.k[3]) + 1.0),
+                   "2^%d: curvature %d is %g, %g expected", e, c, ldexp(a.k[c], e), ref.k[c]);
+        CHECKF(a.st == BS_OK && fabs(ldexp(a.d, -e) - ref.d) <= 1e-12 && fabs(ldexp(a.dl, -e) - ref.d) <= 1e-12,
+               "2^%d: closest status %d, distances %g and %g, %g expected", e, a.st, ldexp(a.d, -e),
+               ldexp(a.dl, -e), ref.d);
+        CHECKF(a.id == 0 && fabs(ldexp(a.t, -e) - ref.t) <= 1e-12, "2^%d: ray patch %u t %g, %g expected", e,
+               a.id, ldexp(a.t, -e), ref.t);
+        double off = fabs(ldexp(a.d, -e) - ref.d);
+        if (off > worst) {
+            worst = off;
+            worst_e = e;
+        }
+        bs_patch_destroy(p);
+    }
+    printf("%s: scaled copies 2^-1000 .. 2^1020 agree (closest distances within %.2g, at 2^%d)\n",
+           rational ? "rational" : "polynomial", worst, worst_e);
+}
+
+/* The hostile boxes: a relative tolerance gives the unit box's triangles and normals. */
+static void boxes(void)
+{
+    const char *names[4] = {"unit_box.bpt", "huge_box.bpt", "tiny_box.bpt", "subnormal_box.bpt"};
+    size_t ntri0 = 0;
+    double n0[3] = {0, 0, 0};
+    for (int k = 0; k < 4; k++) {
+        char path[512];
+        (void)snprintf(path, sizeof path, "%s/%s", BS_HOSTILE_DIR, names[k]);
+        bs_surface *s = NULL;
+        CHECK_STATUS(bs_surface_read_bpt_file(path, NULL, &s), BS_OK);
+        if (s == NULL)
+            continue;
+        bs_tess_options o;
+        bs_tess_options_init(&o);
+        o.method = BS_TESS_PER_PATCH;
+        o.flags = BS_TESS_RELATIVE;
+        bs_mesh *m = NULL;
+        CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_OK);
+        size_t nt = bs_mesh_triangle_count(m), nv = bs_mesh_vertex_count(m);
+        double *nrm = malloc(3 * (nv ? nv : 1) * sizeof(double));
+        bs_view nvw[3] = {{nrm, nv, 3 * sizeof(double)}, {nrm + 1, nv, 3 * sizeof(double)}, {nrm + 2, nv, 3 * sizeof(double)}};
+        CHECK_STATUS(bs_mesh_copy_normals(m, nvw), BS_OK);
+        if (k == 0) {
+            ntri0 = nt;
+            for (int c = 0; c < 3; c++)
+                n0[c] = nrm[c];
+        }
+        CHECKF(nt == ntri0 && nt > 2, "%s: %zu triangles, the unit box %zu", names[k], nt, ntri0);
+        CHECKF(fabs(nrm[0] - n0[0]) + fabs(nrm[1] - n0[1]) + fabs(nrm[2] - n0[2]) <= 1e-12,
+               "%s: first normal (%g %g %g), the unit box's (%g %g %g)", names[k], nrm[0], nrm[1], nrm[2],
+               n0[0], n0[1], n0[2]);
+        free(nrm);
+        bs_mesh_destroy(m);
+        bs_surface_destroy(s);
+    }
+}
+
+int main(void)
+{
+    copies(0);
+    copies(1);
+    boxes();
+    return bs_test_exit("test_scale");
+}
