@@ -5,6 +5,7 @@
 #include "legend.h"
 #include "raycast.h"
 #include "closest_draw.h"
+#include "model_draw.h"
 #include "cmds.h"
 
 #include <math.h>
@@ -30,6 +31,10 @@ static const char usage[] =
     "  -r, --relative F      tessellation tolerance as a fraction of the model's size (default 0.0002)\n"
     "  -m, --method M        tessellation: per-patch (default) or subdivide\n"
     "      --wire            draw the triangles' edges over the surface\n"
+    "      --faces           colour each face of a model by its surface kind (legend on the right),\n"
+    "                        the faces' boundaries dark. A model file (STEP, IGES, OBJ) is drawn\n"
+    "                        with each face cut at its trim loops (except with --rays, --curvature,\n"
+    "                        --patch or --split, which draw its patches whole)\n"
     "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
     "      --curvature mean|gauss\n"
     "                        colour by the mean or Gaussian curvature at the mesh vertices: blue\n"
@@ -64,6 +69,8 @@ typedef struct render_opts {
     int curvature; /* 0 none, 1 mean, 2 Gaussian */
     int rays;      /* ray-cast instead of tessellated */
     double unit;   /* the factor unit_scale() applied to the model */
+    int faces;     /* --faces */
+    model_draw *md; /* a model's trimmed faces (NULL, or md->model NULL: patches drawn whole) */
 } render_opts;
 
 static int parse_args(int argc, char **argv, render_opts *o)
@@ -75,6 +82,10 @@ static int parse_args(int argc, char **argv, render_opts *o)
         if (r != CLI_NOT_COMMON)
             return r;
         const char *a = argv[i];
+        if (strcmp(a, "--faces") == 0) {
+            o->faces = 1;
+            continue;
+        }
         if (strcmp(a, "--nets") == 0 || strcmp(a, "--split") == 0 || strcmp(a, "--rays") == 0 ||
             strcmp(a, "--wire") == 0) {
             if (a[2] == 'n')
@@ -287,6 +298,8 @@ static int face_outwards(const double *pos, double *nrm, size_t nv, uint32_t *tr
  * holds the range); *ntri receives the triangle count. CLI_OK or the exit code after a message. */
 static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_t *ntri, curvature_range *cr)
 {
+    if (o->md != NULL && o->md->model != NULL)
+        return model_draw_faces(o->md, r, o->unit, o->color, o->wire, o->budget, ntri);
     bs_tess_options to;
     bs_tess_options_init(&to);
     to.method = o->method;
@@ -351,6 +364,8 @@ static int render(const render_opts *o, const bs_surface *s)
     if (rc == CLI_OK) {
         if (o->curvature)
             raster_reserve_right(&r, legend_strip(o->w, o->h));
+        else if (o->md != NULL)
+            raster_reserve_right(&r, model_draw_legend_strip(o->md, o->w, o->h));
         rc = o->rays ? draw_rays(o, s, &r, &hits) : draw_mesh(o, s, &r, &nt, &cr);
     }
     if (rc == CLI_OK) {
@@ -366,6 +381,8 @@ static int render(const render_opts *o, const bs_surface *s)
         raster_finish(&r, rgb);
         if (o->curvature)
             legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
+        else if (o->md != NULL && o->md->model != NULL)
+            model_draw_legend(o->md, rgb, o->w, o->h);
         if (png_write_rgb(o->output, rgb, o->w, o->h) != 0)
             rc = cli_fail_write("render", strcmp(o->output, "-") == 0 ? "standard output" : o->output);
     }
@@ -440,7 +457,7 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
 int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL, 0}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
-                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0};
+                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0, 0, NULL};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;
@@ -471,11 +488,19 @@ int cmd_render(int argc, char **argv)
         bs_surface_destroy(s);
         return cli_fail("render", CLI_INPUT, "the surface is not 3-D");
     }
+    model_draw md = {NULL, 0, 0};
+    if (o.faces && (o.rays || o.curvature || o.split || o.patch != (size_t)-1))
+        rc = cli_fail("render", CLI_USAGE, "--faces does not go with --rays, --curvature, --patch or --split");
+    else if (!o.rays && !o.curvature && !o.split && o.patch == (size_t)-1)
+        rc = model_draw_open("render", &o.in, o.faces, &md);
+    o.md = &md;
     bs_surface *picked = NULL;
-    rc = select_patches(&o, s, &picked);
+    if (rc == CLI_OK)
+        rc = select_patches(&o, s, &picked);
     if (rc == CLI_OK)
         rc = render(&o, picked);
     bs_surface_destroy(picked);
     bs_surface_destroy(s);
+    model_draw_close(&md);
     return rc;
 }

@@ -1,5 +1,6 @@
 /* A 5 x 7 bitmap font for the numbers and names written into pictures (digits, + - . e and the
- * letters of "H (mean)" and "K (Gauss)"); other characters are drawn as blanks. */
+ * letters of "H (mean)" and "K (Gauss)", the lower case letters); other characters are drawn as
+ * blanks. */
 #ifndef BEZSURF_TOOLS_FONT_H
 #define BEZSURF_TOOLS_FONT_H
 
