@@ -14,6 +14,7 @@ static const cli_command commands[] = {
     {"render",     "shaded picture of the surface to a PNG file", cmd_render},
     {"convert",    "the surface to another file format (.bpt, OBJ)", cmd_convert},
     {"closest",    "the point of the surface closest to a given point", cmd_closest},
+    {"trims",      "one face of a model and its trim loops in its parameters, to a PNG file", cmd_trims},
 };
 
 static void usage(FILE *f)

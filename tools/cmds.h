@@ -28,6 +28,7 @@ int cmd_tessellate(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_convert(int argc, char **argv);
 int cmd_closest(int argc, char **argv);
+int cmd_trims(int argc, char **argv);
 
 /* ---- surface file formats (tools/formats.c) ---- */
 typedef struct cli_format {
