@@ -78,7 +78,7 @@ bs_status bsi_stp_placement(const stp *s, size_t i, size_t dim, bsi_frame *f)
         f->z[2] = 1.0;
         return BS_OK;
     }
-    double x[3];
+    double x[3] = {0, 0, 0};
     if ((st = opt_direction(s, i, list, 2, 3, ez, f->z)) != BS_OK ||
         (st = opt_direction(s, i, list, 3, 3, fabs(f->z[0]) < 0.9 ? ex : ey, x)) != BS_OK)
         return st;
@@ -266,7 +266,7 @@ static void deboor(const stp_curve *c, double t, double *p)
     size_t deg = c->degree, span = deg, dim = c->dim;
     while (span + 1 < c->count && t >= c->knots[span + 1])
         span++;
-    double h[BS_MAX_DEGREE + 1][4];
+    double h[BS_MAX_DEGREE + 1][4] = {{0}}; /* 2-D curves leave the third coordinate 0 */
     for (size_t j = 0; j <= deg; j++) {
         double w = c->weights ? c->weights[span - deg + j] : 1.0;
         for (size_t k = 0; k < dim; k++)

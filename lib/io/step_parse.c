@@ -139,7 +139,7 @@ bs_status bsi_stp_fail(const stp *s, size_t i, const char *fmt, ...)
     const char *name = bsi_stp_name(s, i, &len);
     va_list ap;
     va_start(ap, fmt);
-    (void)vsnprintf(msg, sizeof msg, fmt, ap);
+    (void)vsnprintf(msg, sizeof msg, fmt, ap); /* NOLINT(clang-analyzer-valist.Uninitialized): va_start is above */
     va_end(ap);
     return bsi_fail(s->err, in->line, in->col, "#%zu %.*s: %s", in->id, len > 60 ? 60 : len, name, msg);
 }
@@ -209,7 +209,7 @@ static int is_enum(const stp *s, size_t n, const char *word)
 /* Radians per unit of the plane angle unit at instance u (SI radian, or converted). */
 static bs_status angle_unit(const stp *s, size_t u, int depth, double *out)
 {
-    size_t list, n, m;
+    size_t list = 0, n = 0, m = 0;
     if (depth > STP_DEPTH)
         return bsi_stp_fail(s, u, "units defined in a cycle");
     if (bsi_stp_part(s, u, "SI_UNIT", &list)) {
@@ -220,7 +220,7 @@ static bs_status angle_unit(const stp *s, size_t u, int depth, double *out)
     }
     if (!bsi_stp_part(s, u, "CONVERSION_BASED_UNIT", &list))
         return bsi_stp_fail(s, u, "plane angle unit not understood");
-    double f, base;
+    double f = 0.0, base = 0.0;
     bs_status st;
     if ((st = bsi_stp_ref(s, u, list, 1, "the conversion factor", &m)) != BS_OK)
         return st;

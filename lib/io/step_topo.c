@@ -105,7 +105,7 @@ static bs_status edge_trim(stp *s, size_t oe, size_t surf, const stp_surf *sf, t
 {
     size_t list, e, elist, geom, glist, c3, pcs, n, pc;
     int orient, same, on;
-    double p0[3], p1[3], t0, t1;
+    double p0[3] = {0, 0, 0}, p1[3] = {0, 0, 0}, t0, t1;
     bs_status st;
     memset(slot, 0, sizeof *slot);
     if (!bsi_stp_part(s, oe, "ORIENTED_EDGE", &list))
@@ -396,11 +396,13 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
             size_t at = 0;
             for (size_t l = 0; l < nloop; l++) {
                 size_t from = l == 0 ? outer : (l <= outer ? l - 1 : l);
-                memcpy(sorted + at, (bsi_trim *)trims.data + first[from], len[from] * sizeof *sorted);
+                if (len[from] > 0)
+                    memcpy(sorted + at, (bsi_trim *)trims.data + first[from], len[from] * sizeof *sorted);
                 len2[l] = len[from];
                 at += len[from];
             }
-            memcpy(trims.data, sorted, trims.n * sizeof *sorted);
+            if (trims.n > 0)
+                memcpy(trims.data, sorted, trims.n * sizeof *sorted);
             bsi_face_spec spec;
             memset(&spec, 0, sizeof spec);
             spec.def = &sf.def;

@@ -63,6 +63,7 @@ static bs_status add_patch_face(bs_model *m, const bs_surface *s, const bsi_topo
         if (link->collapsed)
             continue;
         uint32_t *mine = &side_edge[4 * p + (size_t)side];
+        /* NOLINTNEXTLINE(clang-analyzer-core.UndefinedBinaryOperatorResult): all 4n set after the allocation */
         if (*mine == BSI_NO_EDGE && (st = bsi_model_add_edge(m, mine)) != BS_OK) {
             bsi_curve_free(&trims[side].uv);
             break;
@@ -120,12 +121,12 @@ bs_status bs_model_from_surface(const bs_surface *s, bs_model **out)
     uint32_t *side_edge = malloc(4 * n * sizeof *side_edge);
     if (shell == NULL || side_edge == NULL)
         st = BS_ERR_NO_MEMORY;
+    for (size_t k = 0; side_edge != NULL && k < 4 * n; k++)
+        side_edge[k] = BSI_NO_EDGE;
     if (st == BS_OK)
         st = shells_of(&topo, n, shell);
     if (st == BS_OK)
         st = bsi_model_create(&m);
-    for (size_t k = 0; st == BS_OK && k < 4 * n; k++)
-        side_edge[k] = BSI_NO_EDGE;
     for (size_t p = 0; st == BS_OK && p < n; p++)
         st = add_patch_face(m, s, &topo, side_edge, p, shell[p]);
     if (st == BS_OK)

@@ -62,7 +62,7 @@ static void derivatives(const fitter *F, node *a)
  * the same point on the near side, when the surface is there within tol of it. */
 static void across_seam(const bsi_pc_surf *S, const double *c, const double *start, node *out)
 {
-    for (int k = 0; k < 2; k++) {
+    for (size_t k = 0; k < 2; k++) {
         double lo = S->box[2 * k], hi = S->box[2 * k + 1], width = hi - lo;
         if (S->period[k] > 0.0 || !(width > 0.0) || !(fabs(out->uv[k] - start[k]) > 0.5 * width))
             continue;

@@ -29,7 +29,7 @@ static int rule(bsi_quad_fn fn, void *ctx, size_t k, double a, double b, double 
 {
     double x[BSI_QUAD_NODES], f[BSI_QUAD_NODES * BSI_QUAD_MAX_K];
     double mid = 0.5 * (a + b), half = 0.5 * (b - a);
-    for (int i = 0; i < 7; i++) {
+    for (size_t i = 0; i < 7; i++) {
         x[2 * i] = mid - half * xk[i];
         x[2 * i + 1] = mid + half * xk[i];
     }
