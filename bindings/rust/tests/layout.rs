@@ -201,7 +201,7 @@ fn sys_matches_the_c_header() {
         ("const BS_TRIM_INSIDE", sys::BS_TRIM_INSIDE as i64),
         ("const BS_TRIM_ON", sys::BS_TRIM_ON as i64),
     ];
-    let consts: [(&str, i64); 37] = [
+    let consts: [(&str, i64); 38] = [
         ("BS_OK", sys::BS_OK as i64),
         ("BS_ERR_INVALID_ARG", sys::BS_ERR_INVALID_ARG as i64),
         ("BS_ERR_NO_MEMORY", sys::BS_ERR_NO_MEMORY as i64),
