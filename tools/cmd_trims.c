@@ -282,8 +282,8 @@ int cmd_trims(int argc, char **argv)
     }
     if (rc == CLI_OK) {
         FILE *report = strcmp(output, "-") == 0 ? stderr : stdout;
-        fprintf(report, "%s: %zux%zu, face %zu (%s), %zu loops, u %.17g..%.17g, v %.17g..%.17g\n",
-                strcmp(output, "-") == 0 ? "<stdout>" : output, size, size, face,
+        fprintf(report, "%s: %zux%zu, face %zu of %zu (%s), %zu loops, u %.17g..%.17g, v %.17g..%.17g\n",
+                strcmp(output, "-") == 0 ? "<stdout>" : output, size, size, face, nf,
                 fi.kind >= 0 && fi.kind < 9 ? kind_names[fi.kind] : "?", fi.loop_count, fi.u0, fi.u1,
                 fi.v0, fi.v1);
         rc = cli_finish(cmd);

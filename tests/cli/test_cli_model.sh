@@ -1,0 +1,77 @@
+#!/bin/sh
+# Models in the tool: info on the CAD parts of data/cad/ (the face counts of their .ref files, one
+# closed shell), STEP converted to OBJ and read back, render --faces and trims pictures, errors.
+# usage: test_cli_model.sh TOOL PNG_CHECK CAD_DIR WORK_DIR
+tool=$1 png_check=$2 cad=$3 work=$4
+rm -rf "$work" && mkdir -p "$work" || exit 1
+. "$(dirname "$0")/assert.sh"
+
+faces_of() { sed -n 's/^faces \([0-9]*\)$/\1/p' "$cad/$1.ref"; }
+
+# every file of every part: the kernel's face count and one closed shell (block.igs, trimmed
+# surfaces without topology, is sewn into an open shell: docs/models.md)
+for f in "$cad"/*.step "$cad"/*.igs; do
+    name=$(basename "$f")
+    part=${name%%.*}
+    part=${part%-3d-edges}
+    part=${part%-brep}
+    n=$(faces_of "$part")
+    expect 0 "info $name" -- "$tool" info "$f"
+    has out "faces: $n (" "$name: $n faces"
+    if [ "$name" = block.igs ]; then
+        has out "shells: 1 (0 closed, 1 open)" "$name: its open shell"
+    else
+        has out "shells: 1 (1 closed, 0 open)" "$name: one closed shell"
+    fi
+done
+
+# STEP -> OBJ -> the same faces and patches (the parts whose trims OBJ holds exactly:
+# bs_model_write_obj). info describes an OBJ file by its patches; trims reads it as a model.
+for part in bottle duct sphere torus wedge; do
+    n=$(faces_of "$part")
+    expect 0 "info $part.step" -- "$tool" info "$cad/$part.step"
+    patches=$(sed -n 's/^patches: //p' "$work/out")
+    expect 0 "convert $part.step" -- "$tool" convert "$cad/$part.step" "$work/$part.obj"
+    expect 0 "info $part.obj" -- "$tool" info "$work/$part.obj"
+    has out "patches: $patches" "$part.obj: the $patches patches of $part.step"
+    expect 0 "trims $part.obj" -- "$tool" trims --size 128 -o "$work/$part-trims.png" "$work/$part.obj"
+    has out " of $n (" "$part.obj: $n faces"
+done
+
+# pictures: render --faces (trimmed faces, a legend) and trims
+expect 0 "render --faces" -- "$tool" render --faces --size 320x200 --ss 1 --max-triangles 20000 \
+    -o "$work/block.png" "$cad/block.step"
+has out "320x200" "render's report"
+expect 0 "block.png" -- "$png_check" "$work/block.png" 320 200
+expect 0 "render of a model without --faces" -- "$tool" render --size 160x120 --ss 1 --max-triangles 20000 \
+    -o "$work/wedge.png" "$cad/wedge-brep.igs"
+expect 0 "wedge.png" -- "$png_check" "$work/wedge.png" 160 120
+expect 0 "render --faces of a .bpt surface" -- "$tool" render --faces -b teacup --size 160x120 --ss 1 \
+    --max-triangles 20000 -o "$work/cup.png"
+expect 0 "cup.png" -- "$png_check" "$work/cup.png" 160 120
+expect 0 "trims" -- "$tool" trims --size 200 -o "$work/trims.png" "$cad/block.step"
+has out "face 8 of 28 (plane), 3 loops" "the block's face with two holes is the default"
+expect 0 "trims.png" -- "$png_check" "$work/trims.png" 200 200
+expect 0 "trims --face" -- "$tool" trims --face 1 --size 128 -o "$work/bell.png" "$cad/bell.step"
+has out "face 1 of 7 (revolution), 2 loops" "the bell's face 1"
+expect 0 "bell.png" -- "$png_check" "$work/bell.png" 128 128
+
+# errors
+printf 'ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT(%s,(0.,0.,0.);\nENDSEC;\nEND-ISO-10303-21;\n' "''" \
+    > "$work/bad.step"
+expect 2 "a STEP syntax error" -- "$tool" info "$work/bad.step"
+has err "bad.step:5:" "the error's line and column"
+expect 2 "trims of a bad file" -- "$tool" trims -o "$work/x.png" "$work/bad.step"
+expect 2 "render of a bad file" -- "$tool" render --faces -o "$work/x.png" "$work/bad.step"
+expect 2 "no such face" -- "$tool" trims --face 99 -o "$work/x.png" "$cad/cone.step"
+has err "no face 99 (the model has 3)" "the face count in the message"
+expect 1 "bad trims size" -- "$tool" trims --size 12 "$cad/cone.step"
+expect 1 "bad face id" -- "$tool" trims --face x "$cad/cone.step"
+expect 1 "unknown trims option" -- "$tool" trims --bogus 1 "$cad/cone.step"
+expect 1 "--faces with --rays" -- "$tool" render --faces --rays -o "$work/x.png" "$cad/cone.step"
+check "[ ! -e '$work/x.png' ]" "nothing written after errors"
+expect 0 "trims --help" -- "$tool" trims --help
+has out "usage: bezsurf trims" "trims' usage"
+
+echo "test_cli_model: $checks checks, $fails failures"
+[ "$fails" -eq 0 ]
