@@ -237,6 +237,28 @@ class Model(Handle):
         patch = ids.result()
         return (patch[0] if call.scalar else patch), call.finish(st.result())
 
+    def patch_to_face(self, patches: Any, s: Any, t: Any) -> Tuple[Any, Any]:
+        """The inverse of :meth:`face_to_patch`: the face holding each patch of :attr:`surface`
+        (one id for all points, or one per point) and the native (u, v) of local (s, t) there:
+        (face ids, uv of shape (n, 2)); (s, t) outside [0, 1]: face 4294967295 and NaN."""
+        call = _Call(s, t, inputs=[("patches", patches)])
+        if isinstance(patches, int) and not isinstance(patches, bool) and not call.scalar:
+            patches = [patches] * call.n
+        keep, addr, n = B.uint32s(patches, "patches")
+        if n != call.n:
+            raise ValueError(f"patches and s must have the same length ({n} != {call.n})")
+        count = LIB.bs_surface_count(LIB.bs_model_surface(self._ptr))
+        ids = keep if B.is_ndarray(keep) else list(keep)
+        if n and max(ids) >= count:
+            raise IndexError(f"a patch id is out of range: the model has {count} patches")
+        uv = call.output(2, None, "uv")
+        faces = B.UInt32Output(call.n, (call.n,))
+        LIB.bs_model_patch_to_face(self._ptr, call.n, addr, call.u, call.v, faces.address,
+                                   uv.views)
+        del keep
+        face = faces.result()
+        return (face[0] if call.scalar else face), call.finish(uv.result())
+
     def classify(self, faces: Any, u: Any, v: Any, tol: float = 0.0) -> Any:
         """Where native (u, v) lies on each face: TRIM_INSIDE, TRIM_OUTSIDE, or TRIM_ON within
         ``tol`` (a 3-D distance >= 0) of the face's boundary. A uint8 array (a list without

@@ -81,6 +81,14 @@ class ModelOfSurfaceTest(PlainTestCase):
         patch, st = m.face_to_patch(faces, u, v)
         self.assertEqual(list(plain(patch)), faces)
         self.assertEqual([tuple(x) for x in plain(st)], list(zip(u, v)))
+        face, uv = m.patch_to_face(faces, u, v)  # each patch its own face on (0,1)^2
+        self.assertEqual(list(plain(face)), faces)
+        self.assertEqual([tuple(x) for x in plain(uv)], list(zip(u, v)))
+        face, uv = m.patch_to_face(3, 1.5, 0.5)
+        self.assertEqual(face, 4294967295)
+        self.assertTrue(math.isnan(plain(uv)[0]))
+        with self.assertRaises(IndexError):
+            m.patch_to_face(32, 0.5, 0.5)
         one = m.face_eval(3, 0.5, 0.5)
         self.assertEqual(len(plain(one.position)), 3)
         self.assertEqual(len(m.surface), 32)
@@ -156,6 +164,13 @@ class CadPartsTest(PlainTestCase):
             self.assertAlmostEqual(math.dist(p, (1.0, 2.0, 3.0)), 5.0, delta=1e-12 * 5.0)
         where = m.classify(0, us, vs, 1e-9)
         self.assertTrue(all(w == bezsurf.TRIM_INSIDE for w in plain(where)))
+        # native -> (patch, s, t) -> native again, along the sphere's angular directions
+        patch, st = m.face_to_patch(0, us[1:-1], vs[1:-1])
+        face, uv = m.patch_to_face(patch, [p[0] for p in plain(st)], [p[1] for p in plain(st)])
+        self.assertEqual(list(plain(face)), [0] * 6)
+        for (u, v), (ub, vb) in zip(zip(us[1:-1], vs[1:-1]), plain(uv)):
+            self.assertAlmostEqual(u, ub, delta=1e-13)
+            self.assertAlmostEqual(v, vb, delta=1e-13)
 
 
 if __name__ == "__main__":
