@@ -109,6 +109,9 @@ pub struct FaceEval {
 /// Patch ids (`None` outside a face) and local (s, t) of [`Model::face_to_patch`].
 pub type PatchParams = (Vec<Option<u32>>, Vec<[f64; 2]>);
 
+/// Face ids (`None` for (s, t) outside [0, 1]) and native (u, v) of [`Model::patch_to_face`].
+pub type FaceParams = (Vec<Option<u32>>, Vec<[f64; 2]>);
+
 /// A trimmed B-rep model: faces joined along edges into shells. Immutable, `Send + Sync`.
 ///
 /// ```
@@ -386,6 +389,36 @@ impl Model {
         Ok((
             ids.iter().map(|&p| if p == u32::MAX { None } else { Some(p) }).collect(),
             st.chunks_exact(2).map(|p| [p[0], p[1]]).collect(),
+        ))
+    }
+
+    /// The inverse of [`face_to_patch`](Model::face_to_patch) (`bs_model_patch_to_face`): the
+    /// face holding each patch of [`surface`](Model::surface) and the native (u, v) of local
+    /// (s, t) there; `None` and NaN for (s, t) outside [0, 1]. A patch id out of range is
+    /// `InvalidArg`.
+    pub fn patch_to_face(&self, patches: &[u32], s: &[f64], t: &[f64]) -> Result<FaceParams> {
+        let (cs, ct) = scattered_inputs(patches, s, t)?;
+        let n = patches.len();
+        let mut ids = vec![0u32; n];
+        let mut uv = vec![0.0; 2 * n];
+        if n > 0 {
+            let views = packed_views(&mut uv, 2);
+            // SAFETY: as in face_eval; ids holds n values, views address uv's 2 n doubles.
+            check(unsafe {
+                sys::bs_model_patch_to_face(
+                    self.as_ptr(),
+                    n,
+                    patches.as_ptr(),
+                    &cs,
+                    &ct,
+                    ids.as_mut_ptr(),
+                    views.as_ptr(),
+                )
+            })?;
+        }
+        Ok((
+            ids.iter().map(|&f| if f == u32::MAX { None } else { Some(f) }).collect(),
+            uv.chunks_exact(2).map(|p| [p[0], p[1]]).collect(),
         ))
     }
 

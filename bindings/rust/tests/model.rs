@@ -52,6 +52,14 @@ fn teapot_model_evaluates_as_its_patches() {
     assert_eq!(st[1], [0.5, 0.0]);
     let (outside, _) = m.face_to_patch(&[0], &[1.5], &[0.5]).unwrap();
     assert_eq!(outside, vec![None]);
+    // back from the patches: each patch its own face on (0,1)^2
+    let (face, uv) = m.patch_to_face(&ids, &u, &v).unwrap();
+    assert_eq!(face, vec![Some(0), Some(9), Some(20)]);
+    assert_eq!(uv[1], [0.5, 0.0]);
+    let (outside, uv) = m.patch_to_face(&[0], &[1.5], &[0.5]).unwrap();
+    assert!(outside == vec![None] && uv[0][0].is_nan());
+    assert_eq!(m.patch_to_face(&[32], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::InvalidArg);
+    assert_eq!(m.patch_to_face(&[0, 1], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::Size);
     assert_eq!(m.classify(&[0], &[0.5], &[0.5], 1e-9).unwrap(), vec![Trim::Inside]);
     assert_eq!(m.classify(&[0], &[0.5], &[0.5], -1.0).unwrap_err().kind(), ErrorKind::Domain);
     assert_eq!(m.face_eval(&[0, 1], &[0.5], &[0.5]).unwrap_err().kind(), ErrorKind::Size);
