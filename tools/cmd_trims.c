@@ -161,7 +161,7 @@ static void label(const plot *p, double value, size_t x, size_t y, size_t s, int
 {
     static const unsigned char ink[3] = {20, 20, 20};
     char text[32];
-    snprintf(text, sizeof text, "%.6g", value);
+    (void)snprintf(text, sizeof text, "%.6g", value);
     size_t w = font_width(text, s);
     font_draw(p->rgb, p->size, p->size, right ? (x > w ? x - w : 0) : x, y, text, s, ink);
 }
@@ -272,7 +272,7 @@ int cmd_trims(int argc, char **argv)
     }
     memset(p.rgb, 255, 3 * size * size);
     char title[96];
-    snprintf(title, sizeof title, "face %zu, %s, %zu loops", face,
+    (void)snprintf(title, sizeof title, "face %zu, %s, %zu loops", face,
              fi.kind >= 0 && fi.kind < 9 ? kind_names[fi.kind] : "", fi.loop_count);
     rc = draw_face(&p, span / 3) == 0 ? CLI_OK : cli_fail(cmd, CLI_INTERNAL, "out of memory");
     if (rc == CLI_OK) {
@@ -282,7 +282,7 @@ int cmd_trims(int argc, char **argv)
     }
     if (rc == CLI_OK) {
         FILE *report = strcmp(output, "-") == 0 ? stderr : stdout;
-        fprintf(report, "%s: %zux%zu, face %zu of %zu (%s), %zu loops, u %.17g..%.17g, v %.17g..%.17g\n",
+        (void)fprintf(report, "%s: %zux%zu, face %zu of %zu (%s), %zu loops, u %.17g..%.17g, v %.17g..%.17g\n",
                 strcmp(output, "-") == 0 ? "<stdout>" : output, size, size, face, nf,
                 fi.kind >= 0 && fi.kind < 9 ? kind_names[fi.kind] : "?", fi.loop_count, fi.u0, fi.u1,
                 fi.v0, fi.v1);

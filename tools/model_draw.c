@@ -171,8 +171,8 @@ static int emit_triangle(draw_out *o, const double *p[3], const double *n[3])
         o->cap = cap;
     }
     for (int k = 0; k < 3; k++) {
-        memcpy(o->tri_pos + 9 * o->ntri + 3 * k, p[k], 3 * sizeof(double));
-        memcpy(o->tri_nrm + 9 * o->ntri + 3 * k, n[k], 3 * sizeof(double));
+        memcpy(o->tri_pos + 9 * o->ntri + 3 * (size_t)k, p[k], 3 * sizeof(double));
+        memcpy(o->tri_nrm + 9 * o->ntri + 3 * (size_t)k, n[k], 3 * sizeof(double));
     }
     o->ntri++;
     return 0;
