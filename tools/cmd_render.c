@@ -470,6 +470,8 @@ int cmd_render(int argc, char **argv)
     }
     if (o.rays && o.curvature)
         return cli_usage_error("render", "--rays and --curvature do not go together", NULL);
+    if (o.faces && (o.rays || o.curvature || o.split || o.patch != (size_t)-1))
+        return cli_usage_error("render", "--faces does not go with --rays, --curvature, --patch or --split", NULL);
     if (o.w * o.h * o.ss * o.ss > RENDER_MAX_SAMPLES) /* each at most 8192 and 4: no overflow */
         return cli_usage_error("render", "--size W x H times --ss N squared exceeds 67108864 samples (1 GiB)",
                                NULL);
@@ -489,9 +491,7 @@ int cmd_render(int argc, char **argv)
         return cli_fail("render", CLI_INPUT, "the surface is not 3-D");
     }
     model_draw md = {NULL, 0, 0};
-    if (o.faces && (o.rays || o.curvature || o.split || o.patch != (size_t)-1))
-        rc = cli_fail("render", CLI_USAGE, "--faces does not go with --rays, --curvature, --patch or --split");
-    else if (!o.rays && !o.curvature && !o.split && o.patch == (size_t)-1)
+    if (!o.rays && !o.curvature && !o.split && o.patch == (size_t)-1)
         rc = model_draw_open("render", &o.in, o.faces, &md);
     o.md = &md;
     bs_surface *picked = NULL;
