@@ -43,7 +43,18 @@ int model_draw_open(const char *cmd, const cli_input *in, int faces, model_draw 
         fmt = in->format ? cli_format_named(in->format) : cli_format_of_path(in->path);
     if (!faces && (fmt == NULL || fmt->read_model_file == NULL))
         return CLI_OK; /* a surface drawn as before; with --faces: the model of the surface */
-    return cli_load_model(cmd, in, &md->model);
+    int rc = cli_load_model(cmd, in, &md->model);
+    if (rc != CLI_OK || faces)
+        return rc;
+    /* without trims (an OBJ file of Bezier patches) the patches are drawn as before */
+    for (size_t f = 0; f < bs_model_face_count(md->model); f++) {
+        bs_face_info fi;
+        fi.size = sizeof fi;
+        if (bs_model_face_info(md->model, f, &fi) == BS_OK && fi.loop_count > 0)
+            return CLI_OK;
+    }
+    model_draw_close(md);
+    return CLI_OK;
 }
 
 void model_draw_close(model_draw *md)

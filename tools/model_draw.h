@@ -13,8 +13,9 @@ typedef struct model_draw {
     unsigned kinds;  /* bit k: a face of kind k was drawn */
 } model_draw;
 
-/* The input as a model when it is a STEP, IGES or OBJ file (md->model stays NULL for anything
- * else). CLI_OK or the exit code after a message. */
+/* The input as a model when it is a STEP, IGES or OBJ file with trimmed faces (md->model stays
+ * NULL for anything else), or with faces whatever it is. CLI_OK or the exit code after a
+ * message. */
 int model_draw_open(const char *cmd, const cli_input *in, int faces, model_draw *md);
 void model_draw_close(model_draw *md);
 
