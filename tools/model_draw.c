@@ -9,7 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define DEFAULT_TRIANGLES ((size_t)300000)
+#define DEFAULT_TRIANGLES ((size_t)300000) /* at most, whatever the picture's size */
+#define MIN_TRIANGLES ((size_t)20000)
 #define MAX_RATE 400
 #define BISECTIONS 6
 
@@ -416,7 +417,12 @@ int model_draw_faces(model_draw *md, raster *r, double unit, const double rgb[3]
         net_lengths(bs_surface_get(s, p), &len[2 * p], &len[2 * p + 1]);
         area += len[2 * p] * len[2 * p + 1];
     }
-    size_t target = budget == 0 || budget > DEFAULT_TRIANGLES ? DEFAULT_TRIANGLES : budget;
+    /* about one triangle per two pixels of the picture is as fine as it shows */
+    size_t target = r->w * r->h / 2 < MIN_TRIANGLES ? MIN_TRIANGLES : r->w * r->h / 2;
+    if (target > DEFAULT_TRIANGLES)
+        target = DEFAULT_TRIANGLES;
+    if (budget != 0 && budget < target)
+        target = budget;
     double k = area > 0.0 ? sqrt((double)target / (2.0 * area)) : 0.0;
     draw_out o;
     memset(&o, 0, sizeof o);

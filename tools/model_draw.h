@@ -23,9 +23,9 @@ void model_draw_close(model_draw *md);
 void model_draw_kind_color(int kind, double rgb[3]);
 
 /* Draw the model's trimmed faces into r (framed for the model's coordinates times unit): in rgb,
- * or by kind with md->faces; with wire the triangles' edges. About budget triangles at most (0:
- * the default, 300000); *ntri receives the count drawn. CLI_OK or the exit code after a
- * message. */
+ * or by kind with md->faces; with wire the triangles' edges. About one triangle per two pixels of
+ * the picture (from 20000 to 300000), budget at most (0: no budget); *ntri receives the count
+ * drawn. CLI_OK or the exit code after a message. */
 int model_draw_faces(model_draw *md, raster *r, double unit, const double rgb[3], int wire,
                      size_t budget, size_t *ntri);
 
