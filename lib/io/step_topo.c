@@ -424,5 +424,9 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
     free(len);
     free_trims(&trims);
     bsi_stp_surf_free(&sf);
+    /* a value the model's builders refuse (a zero radius, a degenerate range, a knot vector)
+     * is the file's error: say where */
+    if (st != BS_OK && st != BS_ERR_NO_MEMORY && st != BS_ERR_PARSE && st != BS_ERR_UNSUPPORTED && st != BS_ERR_SIZE)
+        st = bsi_stp_fail(s, i, "a curve or surface of the face is out of range (status %d)", st);
     return st;
 }
