@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 seconds=${1:-90}
 build=${FUZZ_BUILD:-$root/build-fuzz}
-readers="fuzz_obj fuzz_iges fuzz_iges_model fuzz_obj_model"
+readers="fuzz_obj fuzz_iges fuzz_iges_model fuzz_obj_model fuzz_step"
 targets="fuzz_bpt fuzz_api $readers fuzz_locator"
 CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF -DBS_BUILD_BENCH=OFF \
   -DBS_BUILD_TOOLS=OFF >/dev/null
@@ -21,7 +21,7 @@ for target in $targets; do
   budget=$seconds
   case " $readers " in *" $target "*) if [ "$budget" -gt 45 ]; then budget=45; fi ;; esac
   max_len=4096
-  case $target in fuzz_iges_model) max_len=8192 ;; esac # the seeds are whole CAD parts
+  case $target in fuzz_iges_model | fuzz_step) max_len=8192 ;; esac # the seeds are whole CAD parts
   # a locator input runs several certified searches on rational patches with wide weights: up to
   # some seconds under the sanitizers
   timeout=10

@@ -57,6 +57,7 @@ typedef struct stp {
     bs_model *model;
     uint32_t *edge_id;    /* per instance: its model edge (EDGE_CURVE), BSI_NO_EDGE before use */
     unsigned char *busy;  /* per instance: being resolved (reference cycles) */
+    unsigned char *flip;  /* per instance: a shell used reversed (ORIENTED_CLOSED_SHELL .F.) */
 } stp;
 
 /* ---- step_lex.c ---- */
@@ -138,7 +139,8 @@ void bsi_stp_surf_free(stp_surf *sf);
 bs_status bsi_stp_surface(stp *s, size_t i, stp_surf *out);
 
 /* ---- step_topo.c ---- */
-/* The face of instance i (ADVANCED_FACE or FACE_SURFACE) into shell `shell`. */
-bs_status bsi_stp_face(stp *s, size_t i, size_t shell);
+/* The face of instance i (ADVANCED_FACE or FACE_SURFACE) into shell `shell`, turned inside out
+ * when flip (a shell used reversed: a void of BREP_WITH_VOIDS). */
+bs_status bsi_stp_face(stp *s, size_t i, size_t shell, int flip);
 
 #endif

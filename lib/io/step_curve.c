@@ -225,7 +225,7 @@ bs_status bsi_stp_curve(stp *s, size_t i, size_t dim, int depth, stp_curve *out)
         return conic(s, i, list, dim, 0, out);
     if (bsi_stp_part(s, i, "ELLIPSE", &list))
         return conic(s, i, list, dim, 1, out);
-    if (bsi_stp_is(s, i, "B_SPLINE_CURVE_WITH_KNOTS")) {
+    if (bsi_stp_is(s, i, "B_SPLINE_CURVE_WITH_KNOTS") || bsi_stp_is(s, i, "B_SPLINE_CURVE")) {
         if ((st = bspline(s, i, dim, out)) != BS_OK)
             bsi_stp_curve_free(out);
         return st;

@@ -13,6 +13,7 @@ void bsi_stp_free(stp *s)
     free(s->order);
     free(s->edge_id);
     free(s->busy);
+    free(s->flip);
     memset(s, 0, sizeof *s);
 }
 
@@ -34,7 +35,8 @@ bs_status bsi_stp_index(stp *s)
     s->order = malloc((n ? n : 1) * sizeof *s->order);
     s->edge_id = malloc((n ? n : 1) * sizeof *s->edge_id);
     s->busy = calloc(n ? n : 1, 1);
-    if (p == NULL || s->order == NULL || s->edge_id == NULL || s->busy == NULL) {
+    s->flip = calloc(n ? n : 1, 1);
+    if (p == NULL || s->order == NULL || s->edge_id == NULL || s->busy == NULL || s->flip == NULL) {
         free(p);
         return BS_ERR_NO_MEMORY;
     }

@@ -33,6 +33,24 @@ static void extent(stp *s)
     s->tol = 1e-7 * (d > 0.0 ? d : 1.0);
 }
 
+/* The shells used reversed: the voids of BREP_WITH_VOIDS, ORIENTED_CLOSED_SHELL(.., #shell, .F.),
+ * whose faces point out of the void (into the solid) as written. */
+static bs_status reversed_shells(stp *s)
+{
+    for (size_t i = 0; i < s->inst.n; i++) {
+        size_t list, r;
+        int orient;
+        bs_status st;
+        if (!bsi_stp_part(s, i, "ORIENTED_CLOSED_SHELL", &list))
+            continue;
+        if ((st = bsi_stp_ref(s, i, list, 2, "the shell", &r)) != BS_OK ||
+            (st = bsi_stp_bool(s, i, list, 3, "the orientation", &orient)) != BS_OK)
+            return st;
+        s->flip[r] = (unsigned char)!orient;
+    }
+    return BS_OK;
+}
+
 /* The faces of shell instance i as model shell `shell`. */
 static bs_status shell_faces(stp *s, size_t i, size_t shell, size_t *nface)
 {
@@ -50,7 +68,7 @@ static bs_status shell_faces(stp *s, size_t i, size_t shell, size_t *nface)
             return bsi_stp_fail(s, f, "%s", "oriented faces are not supported");
         if (!bsi_stp_is(s, f, "ADVANCED_FACE") && !bsi_stp_is(s, f, "FACE_SURFACE"))
             return bsi_stp_fail(s, i, "#%zu is not a face", stp_inst_at(s, f)->id);
-        if ((st = bsi_stp_face(s, f, shell)) != BS_OK)
+        if ((st = bsi_stp_face(s, f, shell, s->flip[i])) != BS_OK)
             return st;
         (*nface)++;
     }
@@ -60,7 +78,8 @@ static bs_status shell_faces(stp *s, size_t i, size_t shell, size_t *nface)
 static bs_status read_model(stp *s)
 {
     bs_status st = bsi_stp_lex(s);
-    if (st != BS_OK || (st = bsi_stp_index(s)) != BS_OK || (st = bsi_stp_units(s)) != BS_OK)
+    if (st != BS_OK || (st = bsi_stp_index(s)) != BS_OK || (st = bsi_stp_units(s)) != BS_OK ||
+        (st = reversed_shells(s)) != BS_OK)
         return st;
     extent(s);
     if ((st = bsi_model_create(&s->model)) != BS_OK)

@@ -214,7 +214,7 @@ bs_status bsi_stp_surface(stp *s, size_t i, stp_surf *sf)
         st = analytic(s, i, list, BS_FACE_SPHERE, 1, sf);
     else if (bsi_stp_part(s, i, "TOROIDAL_SURFACE", &list))
         st = analytic(s, i, list, BS_FACE_TORUS, 2, sf);
-    else if (bsi_stp_is(s, i, "B_SPLINE_SURFACE_WITH_KNOTS"))
+    else if (bsi_stp_is(s, i, "B_SPLINE_SURFACE_WITH_KNOTS") || bsi_stp_is(s, i, "B_SPLINE_SURFACE"))
         st = bspline(s, i, sf);
     else if (bsi_stp_part(s, i, "SURFACE_OF_REVOLUTION", &list)) {
         sf->def.kind = BS_FACE_REVOLUTION;

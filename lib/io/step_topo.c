@@ -100,6 +100,30 @@ static void edge_range(const stp *s, const stp_curve *c, const double *p0, const
     *t1 = b;
 }
 
+/* The range of a straight PCURVE c2 between the surface points of the edge's ends q0 (at t0) and
+ * q1 (at t1), where the surface's closed form inverts them: a PCURVE need not share the 3-D
+ * curve's parametrisation (a cone's seam runs along the slant in 3-D, along the axis in (u, v)).
+ * Each end's angles are taken nearest the PCURVE's point at the 3-D parameter. */
+static void line_range(const stp *s, const stp_surf *sf, const stp_curve *c2, const double *q0, const double *q1,
+                       double *t0, double *t1)
+{
+    const double *q[2] = {q0, q1};
+    double *t[2] = {t0, t1}, r[2];
+    for (int k = 0; k < 2; k++) {
+        double hint[2] = {(c2->p[0] + *t[k] * c2->d[0]) * sf->scale[0], (c2->p[1] + *t[k] * c2->d[1]) * sf->scale[1]};
+        double uv[2];
+        if (c2->kind != STP_LINE || !bsi_surface_def_inverse(&sf->def, q[k], hint, uv))
+            return;
+        uv[0] /= sf->scale[0];
+        uv[1] /= sf->scale[1];
+        r[k] = bsi_stp_curve_param(s, c2, uv);
+    }
+    if (isfinite(r[0]) && isfinite(r[1]) && r[0] != r[1]) {
+        *t0 = r[0];
+        *t1 = r[1];
+    }
+}
+
 /* The trim(s) of one ORIENTED_EDGE on the face's surface. */
 static bs_status edge_trim(stp *s, size_t oe, size_t surf, const stp_surf *sf, trim_slot *slot)
 {
@@ -143,7 +167,9 @@ static bs_status edge_trim(stp *s, size_t oe, size_t surf, const stp_surf *sf, t
                 (st = pcurve_on(s, pc, surf, &on, &c2)) != BS_OK || !on)
                 continue;
             bsi_trim *t = found == 0 ? &slot->trim : &slot->alt;
-            st = bsi_stp_curve_make(s, &c2, t0, t1, &t->uv);
+            double s0 = t0, s1 = t1;
+            line_range(s, sf, &c2, same ? p0 : p1, same ? p1 : p0, &s0, &s1);
+            st = bsi_stp_curve_make(s, &c2, s0, s1, &t->uv);
             bsi_stp_curve_free(&c2);
             if (st == BS_OK) {
                 bsi_curve_transform(&t->uv, scale);
@@ -333,7 +359,7 @@ static void free_trims(bsi_growing *g)
     free(g->data);
 }
 
-bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
+bs_status bsi_stp_face(stp *s, size_t i, size_t shell, int flip)
 {
     size_t list, bounds, n, b, blist, lp, surf;
     int same = 1, orient;
@@ -385,14 +411,15 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
             st = BS_ERR_NO_MEMORY;
         } else {
             double widest = -1.0;
+            size_t wide = 0;
             for (size_t l = 0, at = 0; l < nloop; at += len[l], l++) {
                 first[l] = at;
                 double a = loop_box_area((bsi_trim *)trims.data + at, len[l]);
-                if (outer == SIZE_MAX && a > widest)
-                    widest = a, outer = l;
+                if (a > widest)
+                    widest = a, wide = l;
             }
             if (outer == SIZE_MAX)
-                outer = 0;
+                outer = wide;
             size_t at = 0;
             for (size_t l = 0; l < nloop; l++) {
                 size_t from = l == 0 ? outer : (l <= outer ? l - 1 : l);
@@ -406,7 +433,7 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell)
             bsi_face_spec spec;
             memset(&spec, 0, sizeof spec);
             spec.def = &sf.def;
-            spec.reversed = !same;
+            spec.reversed = !same != (flip != 0);
             spec.shell = shell;
             spec.trims = (bsi_trim *)trims.data;
             spec.ntrim = trims.n;
