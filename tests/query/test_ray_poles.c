@@ -2,8 +2,11 @@
  * hit no later than their height above the point: the two patches of tests/hostile/pole_miss.py
  * and pole_miss2.py (a rational bicubic patch and a polynomial (3,1) one, their u = 1 sides
  * collapsed), whose rays from h = 1/128 .. 2 above (u,v) = (1 - 2^-16, ...) were missed, points
- * 2^-8 .. 2^-30 from the pole, and random patches of degrees up to 5, polynomial and rational,
- * with one side collapsed. */
+ * 2^-8 .. 2^-30 from the pole, random patches of degrees up to 5, polynomial and rational,
+ * with one side collapsed, and the patch of tests/hostile/fuzz_locator_ray_pole_miss.bin: a
+ * rational (5,3) patch at 2^-239 whose v = 0 side is a pole and whose last two rows coincide
+ * (points and weights), so that S_u vanishes along all of u = 1 (a cusp edge); its rays next to
+ * that side were missed. */
 #include "harness.h"
 
 #include <bezsurf.h>
@@ -37,12 +40,39 @@ static const double raw1[16][4] = {
 {2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25},
 {2.7104227131525058e-20, 2.7104227131525058e-20, 2.7104227131525058e-20, 0.25}};
 
+/* fuzz_locator_ray_pole_miss.bin: the net as the fuzz target made it (about 2^-239) and its weights */
+static const double raw3[24][4] = {
+{-7.9590929403750402e-73, -2.6530309801250134e-74, 7.7822242083667059e-73, 512},
+{-6.6325774503125335e-73, -6.1904056202916979e-74, 6.278839986295865e-73, 0.015625},
+{1.0081517724475051e-72, 5.5713650582625281e-73, -2.2108591501041778e-73, 512},
+{-9.9930833584708838e-73, -1.0258386456483385e-72, -5.9251025222791966e-73, 256},
+{-7.9590929403750402e-73, -2.6530309801250134e-74, 7.7822242083667059e-73, 0.00390625},
+{-7.9590929403750402e-74, 2.8298997121333476e-73, 1.0965861384516722e-72, 512},
+{-1.8571216860875094e-73, -1.0612123920500054e-73, 1.0700558286504221e-72, 0.001953125},
+{8.8434366004167113e-75, -8.2243960383875415e-73, 7.074749280333369e-74, 0.0625},
+{-7.9590929403750402e-73, -2.6530309801250134e-74, 7.7822242083667059e-73, 4},
+{-8.9318709664208784e-73, -3.5373746401666845e-73, -9.0203053324250455e-73, 0.0625},
+{-2.0339904180958436e-73, -1.0258386456483385e-72, 3.891112104183353e-73, 512},
+{1.0788992652508388e-72, 1.4149498560666738e-73, 3.7142433721750187e-73, 2},
+{-7.9590929403750402e-73, -2.6530309801250134e-74, 7.7822242083667059e-73, 256},
+{7.4284867443500375e-73, 5.3944963262541939e-73, -5.5713650582625281e-73, 64},
+{-2.5645966141208463e-73, -9.9046489924667167e-73, -1.131959884853339e-72, 0.0078125},
+{-8.2243960383875415e-73, 2.7414653461291805e-73, -1.131959884853339e-72, 0.001953125},
+{-7.9590929403750402e-73, -2.6530309801250134e-74, 7.7822242083667059e-73, 0.001953125},
+{-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
+{-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
+{-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
+{-7.9590929403750402e-73, -2.6530309801250134e-74, 7.7822242083667059e-73, 0.001953125},
+{-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
+{-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
+{-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125}};
+
 static int rays, misses;
 
 /* The ray from h above S(u,v) down the unit normal there (a regular normal, |d.N| = 1): a hit no
  * later than h (an earlier one may come from another part of the surface). */
 static void shoot(const bs_locator *L, const bs_patch *p, double u, double v, double h,
-                  const char *what)
+                  double size, const char *what)
 {
     double P[3], N[3], o[3], d[3], t = -1;
     unsigned char kind = 9;
@@ -62,7 +92,7 @@ static void shoot(const bs_locator *L, const bs_patch *p, double u, double v, do
     uint32_t id = 7;
     CHECK_STATUS(bs_locator_intersect(L, 1, ov, dv, NULL, &id, NULL, &tv, NULL), BS_OK);
     rays++;
-    int ok = id == 0 && t <= h * (1 + 1e-9) + 1e-9 * 4.0;
+    int ok = id == 0 && t <= h * (1 + 1e-9) + 2e-9 * size;
     misses += !ok;
     CHECKF(ok, "%s: (u,v) = (%.17g, %.17g), h = %g: patch %u t = %.17g", what, u, v, h, id, t);
 }
@@ -88,7 +118,7 @@ static void sweep(const bs_patch *p, double size, const double *vs, int nvs, con
     for (int k = 8; k <= 30; k += bs_test_quick() ? 7 : 1)
         for (int j = 0; j < nvs; j++)
             for (double h = 1.0 / 128; h <= 2.0; h *= 2)
-                shoot(L, p, 1.0 - ldexp(1.0, -k), vs[j], h * size, what);
+                shoot(L, p, 1.0 - ldexp(1.0, -k), vs[j], h * size, size, what);
     bs_locator_destroy(L);
 }
 
@@ -114,6 +144,18 @@ static void reproducers(void)
         sweep(p1, 2.0, v1, 4, "pole_miss (rational bicubic)");
     bs_patch_destroy(p2);
     bs_patch_destroy(p1);
+    double c3[72], w3[24];
+    for (int k = 0; k < 24; k++) {
+        for (int c = 0; c < 3; c++)
+            c3[3 * k + c] = raw3[k][c];
+        w3[k] = raw3[k][3];
+    }
+    bs_patch *p3 = NULL;
+    CHECK_STATUS(bs_patch_create(5, 3, 3, c3, w3, &p3), BS_OK);
+    double v3[4] = {0.98994974874371855, 0.5, 0.25, 1.0 - 0x1p-20};
+    if (p3 != NULL)
+        sweep(p3, 3.5647e-72, v3, 4, "fuzz_locator_ray_pole_miss (rational 5x3, cusp edge)");
+    bs_patch_destroy(p3);
 }
 
 /* Random patches with the u = 1 side collapsed to one point. */
