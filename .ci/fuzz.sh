@@ -2,8 +2,8 @@
 # Build the libFuzzer targets with clang in their own build tree, replay the committed seed corpora,
 # then fuzz each target for N seconds (default 90; the readers' targets for at most 45 seconds
 # each) and print its execution count. fuzz_locator's corpus is replayed but not extended here:
-# its oracles still find open defects (tests/hostile/fuzz_locator_open_2.bin, cusp edges:
-# docs/reliability.md), so a run would fail on a known one; run it by hand with FUZZ_LOCATOR=1.
+# its ray oracle still finds misses next to cusp edges (docs/reliability.md), so a run would fail
+# on a known, open defect; run it by hand with FUZZ_LOCATOR=1.
 #   .ci/fuzz.sh [seconds]        FUZZ_BUILD=dir to choose the build tree (default build-fuzz)
 set -euo pipefail
 cd "$(dirname "$0")/.."

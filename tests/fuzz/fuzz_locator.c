@@ -305,6 +305,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             double big = fmax(fabs(curv[2]), fabs(curv[3])) + 1.0 / D;
             for (int c = 2; c < 4; c++) { /* equal infinities where the curvature overflows */
                 double want = ldexp(curv2[c], e2 - e1);
+                /* the copy's curvature may overflow where this one does not: then its infinity
+                 * is the right answer (curvature 2^40 times 2.2e298 seen) */
+                if (isinf(curv2[c]) && !(fabs(ldexp(curv[c], e1 - e2)) < 0x1p-1 * DBL_MAX))
+                    continue;
                 if (!(want == curv[c] || fabs(want - curv[c]) <= 1e-7 * big))
                     fail();
             }
