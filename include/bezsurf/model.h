@@ -26,6 +26,7 @@
 #include "core.h"
 #include "surface.h"
 #include "io.h"
+#include "query.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -355,6 +356,25 @@ BS_API bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *
  */
 BS_API bs_status bs_model_properties(const bs_model *m, double rel_tol, double *area,
                                      double *volume, double *centroid);
+
+/**
+ * @brief A locator of the model's trimmed faces, for rays (bs_locator_intersect() and its
+ * variants). A ray's answer is its first hit inside a trimmed face: hits on a face's surface
+ * outside its trims are skipped and the search goes on beyond them; a point within 1e-7 D of a
+ * trim (D the diagonal of the model's control points) counts as inside, so that a ray through the
+ * edge between two faces hits one of them even where the file's trims of the two stand a little
+ * apart. `patch` receives the **face** id, `uv` the native face parameters, `nrm` the face's
+ * outward normal (`reversed` applied; kinds as for a surface's locator). The guarantee of rays
+ * is that of bs_locator_intersect() on the faces' patches, restricted to the trimmed faces.
+ * Closest points on a model's locator are not served yet: bs_locator_closest_point() and
+ * bs_locator_closest_point_mt() return BS_ERR_UNSUPPORTED for it.
+ * The locator refers to the model: m must outlive it (m is not changed; models are immutable).
+ * @param[in]  m    the model.
+ * @param[out] out  receives the locator (bs_locator_destroy()); NULL on failure.
+ * @return BS_OK; BS_ERR_INVALID_ARG if m or out is NULL; BS_ERR_NO_MEMORY.
+ * @since 1.2
+ */
+BS_API bs_status bs_locator_create_model(const bs_model *m, bs_locator **out);
 
 #ifdef __cplusplus
 }

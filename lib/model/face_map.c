@@ -198,7 +198,7 @@ bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *faces, 
 
 /* The face holding patch p: faces' patches are appended in face order, so a binary search over
  * their first patches finds it. */
-static size_t face_of_patch(const bs_model *m, uint32_t p)
+size_t bsi_face_of_patch(const bs_model *m, uint32_t p)
 {
     size_t lo = 0, hi = m->nface;
     while (hi - lo > 1) {
@@ -209,6 +209,18 @@ static size_t face_of_patch(const bs_model *m, uint32_t p)
             hi = mid;
     }
     return lo;
+}
+
+size_t bsi_patch_native(const bs_model *m, uint32_t p, double s, double t, double native[2])
+{
+    size_t f = bsi_face_of_patch(m, p);
+    const bsi_face *fc = &m->faces[f];
+    size_t local = p - fc->first_patch;
+    double cu = bsi_axis_native(&fc->au, local / fc->av.n, s);
+    double cv = bsi_axis_native(&fc->av, local % fc->av.n, t);
+    native[0] = fc->swap ? cv : cu;
+    native[1] = fc->swap ? cu : cv;
+    return f;
 }
 
 bs_status bs_model_patch_to_face(const bs_model *m, size_t n, const uint32_t *patch,
@@ -230,16 +242,8 @@ bs_status bs_model_patch_to_face(const bs_model *m, size_t n, const uint32_t *pa
     for (size_t k = 0; k < n; k++) {
         double sk = bsi_cget(s, k), tk = bsi_cget(t, k), native[2] = {NAN, NAN};
         uint32_t id = UINT32_MAX;
-        if (sk >= 0.0 && sk <= 1.0 && tk >= 0.0 && tk <= 1.0) {
-            size_t f = face_of_patch(m, patch[k]);
-            const bsi_face *fc = &m->faces[f];
-            size_t local = patch[k] - fc->first_patch;
-            double cu = bsi_axis_native(&fc->au, local / fc->av.n, sk);
-            double cv = bsi_axis_native(&fc->av, local % fc->av.n, tk);
-            native[0] = fc->swap ? cv : cu;
-            native[1] = fc->swap ? cu : cv;
-            id = (uint32_t)f;
-        }
+        if (sk >= 0.0 && sk <= 1.0 && tk >= 0.0 && tk <= 1.0)
+            id = (uint32_t)bsi_patch_native(m, patch[k], sk, tk, native);
         if (face != NULL)
             face[k] = id;
         if (uv != NULL) {

@@ -216,6 +216,10 @@ int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p);
  * 1, or 0 outside. */
 int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
                       double *pv);
+/* The face holding patch p (a valid patch id of the model). */
+size_t bsi_face_of_patch(const bs_model *m, uint32_t p);
+/* The face of patch p and the native (u, v) of the patch's (s, t) there. */
+size_t bsi_patch_native(const bs_model *m, uint32_t p, double s, double t, double native[2]);
 /* Bring u into [lo, lo + period) when period > 0. */
 double bsi_wrap(double u, double lo, double period);
 

@@ -170,6 +170,8 @@ void bs_locator_destroy(bs_locator *L)
     free(L->box);
     free(L->leaf_box);
     free(L->nscale);
+    if (L->trim)
+        L->trim->release(L->trim);
     free(L);
 }
 

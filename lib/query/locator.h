@@ -34,6 +34,19 @@ typedef struct bsi_loc_node {
     uint32_t first, count;
 } bsi_loc_node;
 
+/* What a locator of a model's trimmed faces adds (bs_locator_create_model, lib/model/), which
+ * this layer sees only through these calls: a ray's hit on patch `patch` at (u, v) counts only
+ * where inside() says so (the walk goes on to later hits otherwise), and answers are reported by
+ * to_face() as a face id and native face parameters, the patch's normal nrm turned into the
+ * face's outward one. release() frees the whole record with the locator. */
+typedef struct bsi_loc_trim bsi_loc_trim;
+struct bsi_loc_trim {
+    int (*inside)(const bsi_loc_trim *t, uint32_t patch, double u, double v);
+    void (*to_face)(const bsi_loc_trim *t, uint32_t patch, double u, double v, uint32_t *face,
+                    double uv[2], double nrm[3]);
+    void (*release)(bsi_loc_trim *t);
+};
+
 struct bs_locator {
     size_t dim;          /* 0 for an empty surface */
     size_t npatch, nleaf, nnode;
@@ -46,6 +59,7 @@ struct bs_locator {
     double *box;         /* node k: lower corner box[2*k*dim ...], upper corner right after */
     double *leaf_box;    /* leaf k's box, as node boxes: tested before its net is projected */
     bsi_nscale *nscale;  /* per patch, for its normals (3-D locators): bsi_normal_scale's once */
+    bsi_loc_trim *trim;  /* NULL, or the trimmed faces of a model's locator (owned) */
 };
 
 /* Halve a net of (m+1) x (n+1) points of nc interleaved doubles at the parameter 1/2 along dir

@@ -127,6 +127,8 @@ bs_status bsi_loc_closest_check(const bs_locator *L, size_t n, const bs_cview *q
 {
     if (L == NULL)
         return BS_ERR_INVALID_ARG;
+    if (L->trim) /* a model's trimmed faces: not served yet (docs/models.md) */
+        return BS_ERR_UNSUPPORTED;
     if (n == 0)
         return BS_OK;
     if (q == NULL)

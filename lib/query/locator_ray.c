@@ -177,6 +177,12 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, const double 
         double a[3] = {pos[0] - ray->o[0], pos[1] - ray->o[1], pos[2] - ray->o[2]};
         /* t of the point reported, kept within the range the hit was found in */
         tt = fmin(DBL_MAX, fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len[0] / len[1]);
+        if (L->trim) { /* a model's: its face, native parameters and outward normal */
+            double fuv[2];
+            L->trim->to_face(L->trim, id, u, v, &id, fuv, nv);
+            u = fuv[0];
+            v = fuv[1];
+        }
     }
     if (kind)
         kind[k] = kd;

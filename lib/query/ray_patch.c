@@ -340,6 +340,13 @@ static double leaf_scale(double big)
     return ldexp(1.0, -e);
 }
 
+/* 1 unless the locator is a model's and the point (s, r) of the leaf lies outside its face's trim */
+static int inside_trim(const bs_locator *L, const bsi_loc_leaf *leaf, double s, double r)
+{
+    const double side = 1.0 / BSI_LOC_SPLIT;
+    return L->trim == NULL || L->trim->inside(L->trim, leaf->patch, leaf->u0 + s * side, leaf->v0 + r * side);
+}
+
 static int wanted(const bsi_ray *ray, double t, double best)
 {
     return (ray->open ? t > ray->tmin : t >= ray->tmin) && t <= ray->tmax && t < best;
@@ -402,7 +409,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         bilinear_start(net, m, n, rat, &e, &s, &r);
         int found = newton(root, m, n, rat, &e, s, r, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
-        if (found && wanted(ray, t / sig, hit->t)) {
+        if (found && wanted(ray, t / sig, hit->t) && inside_trim(L, leaf, s, r)) {
             hit->t = t / sig;
             hit->s = s;
             hit->r = r;

@@ -30,7 +30,7 @@ from .mesh import Mesh
 from .bspline import BSpline
 from .query import NO_PATCH, ClosestPoints, Locator, RayHits
 from .model import (FACE_KINDS, TRIM_INSIDE, TRIM_ON, TRIM_OUTSIDE, Face, FaceEvaluation,
-                    Model, Properties)
+                    Model, ModelLocator, Properties)
 from .surface import (SIDE_U0, SIDE_U1, SIDE_V0, SIDE_V1, Continuity, EdgeContinuity, OpenEdge,
                       Surface, builtin_names)
 
@@ -77,6 +77,6 @@ __all__ = [
     "BezsurfNotADirectoryError", "IncompatibleError", "UnsupportedError", "PrecisionError",
     "DIR_U", "DIR_V", "NORMAL_REGULAR", "NORMAL_LIMIT", "NORMAL_UNDEFINED", "MAX_DEGREE",
     "MAX_DIM", "builtin_names", "version", "version_number", "status_string", "library_path",
-    "have_numpy", "Model", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_OUTSIDE",
+    "have_numpy", "Model", "ModelLocator", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_OUTSIDE",
     "TRIM_INSIDE", "TRIM_ON",
 ]

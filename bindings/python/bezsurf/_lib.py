@@ -251,6 +251,7 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_model_patch_to_face", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, IDS, VIEWS), STATUS),
     ("bs_model_classify", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, c_double, BYTES), STATUS),
     ("bs_model_properties", (HANDLE, c_double, DOUBLES, DOUBLES, DOUBLES), STATUS),
+    ("bs_locator_create_model", (HANDLE, HANDLE_OUT), STATUS),
 )
 
 #: C functions of the library deliberately left without a binding, with the reason.

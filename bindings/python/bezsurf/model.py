@@ -11,6 +11,7 @@ from ._errors import BezsurfError, BezsurfIOError, io_error
 from ._handle import Handle
 from ._lib import BS_ERR_IO, LIB, CFaceInfo, CParseError
 from .patch import _Call
+from .query import Locator
 from .surface import Surface, _located, _with_file
 
 #: Surface kinds of faces (``Face.kind``), in the order of the C constants BS_FACE_*.
@@ -292,6 +293,11 @@ class Model(Handle):
                                 ctypes.addressof(volume), ctypes.addressof(centroid))
         return Properties(area.value, volume.value, (centroid[0], centroid[1], centroid[2]))
 
+    def locator(self) -> "ModelLocator":
+        """A locator of the model's trimmed faces, for rays (since 1.2): see
+        :class:`ModelLocator`."""
+        return ModelLocator(self)
+
     def to_obj(self) -> str:
         """The model as OBJ free-form text (surfaces with trim and hole loops), read back
         exactly by :meth:`read_obj`."""
@@ -339,3 +345,34 @@ def _rebuild(fmt: str, source: Any) -> Model:
 
 __all__ = ["Model", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_OUTSIDE", "TRIM_INSIDE",
            "TRIM_ON"]
+
+
+class ModelLocator(Locator):
+    """Rays on the trimmed faces of a :class:`Model` (``bs_locator_create_model``, since 1.2).
+
+    :meth:`intersect` answers with the first hit inside a trimmed face (hits on a face's surface
+    outside its trims are skipped): ``patch`` holds **face** ids, ``uv`` native face parameters
+    and ``normal`` the outward normals. A point within 1e-7 of the model's size from a trim
+    counts as inside, so that a ray through an edge hits one of its two faces. Closest points on
+    models are not served yet: :meth:`closest_point` raises :class:`UnsupportedError`. The
+    locator keeps its model alive; copies and pickles rebuild it from the model.
+    """
+
+    def __init__(self, model: Model) -> None:  # pylint: disable=super-init-not-called
+        A.instance(model, Model, "model")
+        out = ctypes.c_void_p()
+        LIB.bs_locator_create_model(model._ptr, ctypes.byref(out))
+        self._adopt(out.value)  # type: ignore[arg-type]
+        self._model = model  # the C locator refers to the model: keep it alive
+
+    def __reduce__(self) -> Tuple[Any, ...]:
+        self._ptr  # a closed locator is not copied
+        return (ModelLocator, (self._model,))
+
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "ModelLocator":
+        return ModelLocator(self._model)
+
+    def __repr__(self) -> str:
+        if self.closed:
+            return "<bezsurf.ModelLocator (closed)>"
+        return f"<bezsurf.ModelLocator of {len(self._model)} faces>"

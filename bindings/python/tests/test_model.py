@@ -173,5 +173,54 @@ class CadPartsTest(PlainTestCase):
             self.assertAlmostEqual(v, vb, delta=1e-13)
 
 
+def ref_rays(part):
+    """The kernel's rays of a part: (origin, direction, t or None for a miss)."""
+    out = []
+    for line in (CAD_DIR / f"{part}.ref").read_text().splitlines():
+        w = line.split()
+        if w and w[0] == "ray":
+            out.append((tuple(map(float, w[1:4])), tuple(map(float, w[4:7])),
+                        float(w[8]) if w[7] == "hit" else None))
+    return out
+
+
+@requires("bs_locator_create_model")
+class ModelLocatorTest(PlainTestCase):
+    def test_rays_of_the_block_as_the_kernel(self):
+        m = bezsurf.Model.read(CAD_DIR / "block.step")
+        loc = m.locator()
+        rays = ref_rays("block")[:80]
+        hits = loc.intersect([r[0] for r in rays], [r[1] for r in rays])
+        diag = 50.0  # the block is about 40 x 30 x 20
+        for (o, d, t), face, tt in zip(rays, plain(hits.patch), plain(hits.t)):
+            if t is None:
+                self.assertEqual(face, bezsurf.NO_PATCH)
+            else:
+                self.assertLess(face, len(m))
+                self.assertAlmostEqual(tt, t, delta=1e-6 * diag)
+
+    def test_face_uv_and_outward_normal(self):
+        m = bezsurf.Model.read(CAD_DIR / "sphere.step")  # centre (1, 2, 3), radius 5
+        hit = m.locator().intersect((1.0, 2.0, 20.0), (0.0, 0.0, -1.0))
+        self.assertEqual(hit.patch, 0)
+        self.assertAlmostEqual(hit.t, 12.0, delta=1e-9)
+        self.assertAlmostEqual(plain(hit.normal)[2], 1.0, delta=1e-12)  # outward: +z at the top
+        ev = m.face_eval(0, [plain(hit.uv)[0]], [plain(hit.uv)[1]])
+        self.assertAlmostEqual(plain(ev.position)[0][2], 8.0, delta=1e-9)
+
+    def test_closest_points_refused_copies_and_pickles(self):
+        m = bezsurf.Model.read(CAD_DIR / "cone.step")
+        loc = m.locator()
+        with self.assertRaises(bezsurf.UnsupportedError):
+            loc.closest_point((0.0, 0.0, 100.0))
+        for other in (copy.deepcopy(loc), pickle.loads(pickle.dumps(loc))):
+            a = loc.intersect((0.0, 0.0, 100.0), (0.0, 0.0, -1.0))
+            b = other.intersect((0.0, 0.0, 100.0), (0.0, 0.0, -1.0))
+            self.assertEqual(plain(a.t), plain(b.t))
+        self.assertIn("ModelLocator", repr(loc))
+        with self.assertRaises(TypeError):
+            bezsurf.ModelLocator(cube())
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -59,7 +59,7 @@ pub use float32::GridF32;
 pub use io::builtin_names;
 pub use locator::{Hit, Locator, Ray};
 pub use mesh::{Mesh, MeshFormat, TessFlags, TessMethod, TessOptions, TESS_MAX_RATE};
-pub use model::{Face, FaceEval, FaceKind, FaceParams, Model, PatchParams, Properties, Trim};
+pub use model::{Face, FaceEval, FaceKind, FaceParams, Model, ModelLocator, PatchParams, Properties, Trim};
 pub use ops::{Curve, Dir};
 pub use patch::{Patch, PatchRef};
 pub use query::{ClosestPoints, Curvature, CurvatureKind};

@@ -90,6 +90,12 @@ impl Locator {
         Ok(Locator { ptr })
     }
 
+    /// Takes ownership of a locator the library made.
+    pub(crate) fn from_raw(out: *mut sys::bs_locator) -> Locator {
+        let ptr = NonNull::new(out).expect("bezsurf returned a NULL locator on success");
+        Locator { ptr }
+    }
+
     /// The C handle, valid while `self` is borrowed.
     pub fn as_ptr(&self) -> *const sys::bs_locator {
         self.ptr.as_ptr()

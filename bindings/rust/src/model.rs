@@ -9,6 +9,7 @@ use std::ptr::{self, NonNull};
 use crate::error::{check, Error, Result};
 use crate::eval::NormalKind;
 use crate::io::c_path;
+use crate::locator::Locator;
 use crate::surface::Surface;
 use crate::sys;
 
@@ -480,5 +481,47 @@ impl Model {
         let path = c_path(path.as_ref())?;
         // SAFETY: self is live; path is NUL-terminated.
         check(unsafe { sys::bs_model_write_obj_file(self.as_ptr(), path.as_ptr()) })
+    }
+}
+
+/// Rays on the trimmed faces of a [`Model`] (`bs_locator_create_model`, since 1.2), borrowed
+/// from the model it was made of. Derefs to [`Locator`]: [`Locator::intersect`] answers with the
+/// first hit inside a trimmed face (hits outside a face's trims are skipped), `patch` holding the
+/// **face** id, `uv` native face parameters and `normal` the outward normal; a point within 1e-7
+/// of the model's size from a trim counts as inside, so a ray through an edge hits one of its
+/// faces. Closest points on models are not served yet: [`Locator::closest_points`] returns an
+/// `Unsupported` error.
+///
+/// ```no_run
+/// use bezsurf::{Model, Ray};
+///
+/// let part = Model::read_file("part.step")?;
+/// let loc = part.locator()?;
+/// let hits = loc.intersect(&[Ray::new([0., 0., 100.], [0., 0., -1.])])?;
+/// if let Some(face) = hits[0].patch {
+///     println!("face {face} at t = {}", hits[0].t);
+/// }
+/// # Ok::<(), bezsurf::Error>(())
+/// ```
+#[derive(Debug)]
+pub struct ModelLocator<'m> {
+    locator: Locator,
+    _model: std::marker::PhantomData<&'m Model>,
+}
+
+impl std::ops::Deref for ModelLocator<'_> {
+    type Target = Locator;
+    fn deref(&self) -> &Locator {
+        &self.locator
+    }
+}
+
+impl Model {
+    /// A locator of the model's trimmed faces, for rays ([`ModelLocator`]).
+    pub fn locator(&self) -> Result<ModelLocator<'_>> {
+        let mut out = std::ptr::null_mut();
+        // SAFETY: the model is live and outlives the locator (the borrow); out is valid.
+        check(unsafe { sys::bs_locator_create_model(self.as_ptr(), &mut out) })?;
+        Ok(ModelLocator { locator: Locator::from_raw(out), _model: std::marker::PhantomData })
     }
 }

@@ -905,6 +905,9 @@ extern "C" {
         tol: f64,
         where_: *mut u8,
     ) -> bs_status;
+    /// `bs_locator_create_model` (model.h, since 1.2): a locator of a model's trimmed faces
+    /// (rays only); the model must outlive it.
+    pub fn bs_locator_create_model(m: *const bs_model, out: *mut *mut bs_locator) -> bs_status;
     /// `bs_model_properties` (model.h, since 1.2).
     pub fn bs_model_properties(
         m: *const bs_model,

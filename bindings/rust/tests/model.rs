@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use bezsurf::{ErrorKind, FaceKind, Model, NormalKind, Outputs, Surface, Trim};
+use bezsurf::{ErrorKind, FaceKind, Model, NormalKind, Outputs, Ray, Surface, Trim};
 
 fn cad_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/cad")
@@ -102,4 +102,33 @@ fn unknown_extension_and_missing_file() {
     assert_eq!(e.kind(), ErrorKind::InvalidArg);
     let e = Model::read_file("/nonexistent-directory/part.step").unwrap_err();
     assert_eq!(e.kind(), ErrorKind::Io);
+}
+
+#[test]
+fn model_locator_hits_as_the_kernel() {
+    // the first rays of the block's .ref (OpenCASCADE's IntCurvesFace_ShapeIntersector)
+    let text = std::fs::read_to_string(cad_dir().join("block.ref")).unwrap();
+    let part = Model::read_file(cad_dir().join("block.step")).unwrap();
+    let loc = part.locator().unwrap();
+    let mut rays = Vec::new();
+    let mut want = Vec::new();
+    for line in text.lines().filter(|l| l.starts_with("ray ")).take(80) {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        let num = |k: usize| w[k].parse::<f64>().unwrap();
+        rays.push(Ray::new([num(1), num(2), num(3)], [num(4), num(5), num(6)]));
+        want.push(if w[7] == "hit" { Some(num(8)) } else { None });
+    }
+    let hits = loc.intersect(&rays).unwrap();
+    for (h, t) in hits.iter().zip(&want) {
+        match t {
+            None => assert_eq!(h.patch, None),
+            Some(t) => {
+                assert!((h.patch.unwrap() as usize) < part.face_count());
+                assert!((h.t - t).abs() <= 1e-6 * 50.0, "t {} against the kernel's {}", h.t, t);
+            }
+        }
+    }
+    // closest points on models are refused
+    let err = loc.closest_points(&[0.0, 0.0, 100.0]).unwrap_err();
+    assert_eq!(err.kind(), ErrorKind::Unsupported);
 }
