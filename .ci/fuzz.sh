@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Build the libFuzzer targets with clang in their own build tree, replay the committed seed corpora,
-# then fuzz each target for N seconds (default 90; the readers' targets for at most 45 seconds
+# then fuzz each target for N seconds (default 90; the readers' targets for at most 30 seconds
 # each) and print its execution count. fuzz_locator's corpus is replayed but not extended here:
 # its ray oracle still finds misses next to cusp edges (docs/reliability.md), so a run would fail
 # on a known, open defect; run it by hand with FUZZ_LOCATOR=1.
@@ -18,7 +18,7 @@ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF
 cmake --build "$build" -j2 --target $targets
 for target in $targets; do
   budget=$seconds
-  case " $readers " in *" $target "*) if [ "$budget" -gt 45 ]; then budget=45; fi ;; esac
+  case " $readers " in *" $target "*) if [ "$budget" -gt 30 ]; then budget=30; fi ;; esac
   max_len=4096
   case $target in fuzz_iges_model | fuzz_step) max_len=8192 ;; esac # the seeds are whole CAD parts
   # a locator input runs several certified searches on rational patches with wide weights: up to

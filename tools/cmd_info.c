@@ -10,7 +10,8 @@ static const char usage[] =
     "Print the number of patches, their degrees, the bounds of the control points (which\n"
     "contain the surface) and the numbers of shared and open edges (sides matched when their\n"
     "control points agree within T per coordinate, default 1e-9). For a model (a STEP or IGES\n"
-    "file), also its faces by surface kind, its edges and its shells, open or closed.\n";
+    "file), also its faces by surface kind, its edges, its shells, open or closed, and its\n"
+    "area and the volume its closed shells enclose (on the exact faces, to 1e-9 relative).\n";
 
 static const char *const kind_names[] = {"bezier", "bspline", "plane", "cylinder", "cone",
                                          "sphere", "torus", "revolution", "extrusion"};
@@ -42,6 +43,15 @@ static void print_model(const bs_model *m)
         closed += bs_model_shell_closed(m, sh) == 1;
     printf("model edges: %zu\nshells: %zu (%zu closed, %zu open)\ninstances: %zu\n",
            bs_model_edge_count(m), ns, closed, ns - closed, instances);
+    /* on the exact faces, to 1e-9 relative: more digits than the files' own */
+    double area = 0.0, volume = 0.0;
+    if (bs_model_properties(m, 1e-9, &area, &volume, NULL) != BS_OK)
+        return;
+    printf("area: %.12g\n", area);
+    if (closed > 0)
+        printf("volume: %.12g\n", volume);
+    else
+        printf("volume: none (no closed shell)\n");
 }
 
 int cmd_info(int argc, char **argv)

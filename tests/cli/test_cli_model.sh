@@ -1,12 +1,20 @@
 #!/bin/sh
-# Models in the tool: info on the CAD parts of data/cad/ (the face counts of their .ref files, one
-# closed shell), STEP converted to OBJ and read back, render --faces and trims pictures, errors.
+# Models in the tool: info on the CAD parts of data/cad/ (the face counts, area and volume of their
+# .ref files, one closed shell), STEP converted to OBJ and read back, render --faces and trims
+# pictures, errors.
 # usage: test_cli_model.sh TOOL PNG_CHECK CAD_DIR WORK_DIR
 tool=$1 png_check=$2 cad=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" || exit 1
 . "$(dirname "$0")/assert.sh"
 
 faces_of() { sed -n 's/^faces \([0-9]*\)$/\1/p' "$cad/$1.ref"; }
+ref_of() { sed -n "s/^$2 //p" "$cad/$1.ref"; }
+# 1 when the value printed on line "KEY: value" of the last output is within 1e-7 (relative) of
+# the .ref's (the kernel's own area and volume are good to about 1e-8 on the duct and the bell)
+near_ref() {
+    awk -v a="$(sed -n "s/^$2: //p" "$work/out")" -v b="$(ref_of "$1" "$2")" \
+        'BEGIN { d = a - b; if (d < 0) d = -d; exit !(a != "" && d <= 1e-7 * b) }'
+}
 
 # every file of every part: the kernel's face count and one closed shell (block.igs, trimmed
 # surfaces without topology, is sewn into an open shell: docs/models.md)
@@ -20,9 +28,12 @@ for f in "$cad"/*.step "$cad"/*.igs; do
     has out "faces: $n (" "$name: $n faces"
     if [ "$name" = block.igs ]; then
         has out "shells: 1 (0 closed, 1 open)" "$name: its open shell"
+        has out "volume: none (no closed shell)" "$name: no volume"
     else
         has out "shells: 1 (1 closed, 0 open)" "$name: one closed shell"
+        check 'near_ref "$part" volume' "$name: volume $(sed -n 's/^volume: //p' "$work/out"), the kernel's $(ref_of "$part" volume)"
     fi
+    check 'near_ref "$part" area' "$name: area $(sed -n 's/^area: //p' "$work/out"), the kernel's $(ref_of "$part" area)"
 done
 
 # STEP -> OBJ -> the same faces and patches (the parts whose trims OBJ holds exactly:
