@@ -33,7 +33,7 @@ static const char usage[] =
     "      --wire            draw the triangles' edges over the surface\n"
     "      --faces           colour each face of a model by its surface kind (legend on the right),\n"
     "                        the faces' boundaries dark. A model file (STEP, IGES, OBJ) is drawn\n"
-    "                        with each face cut at its trim loops (except with --rays, --curvature,\n"
+    "                        with each face cut at its trim loops (except with --curvature,\n"
     "                        --patch or --split, which draw its patches whole)\n"
     "      --color R,G,B     base colour, each 0..1 (default 0.72,0.76,0.86)\n"
     "      --curvature mean|gauss\n"
@@ -53,7 +53,8 @@ static const char usage[] =
     "      --max-triangles N refuse, before any work, a mesh of more than N triangles\n"
     "                        (default 4000000, about 0.5 GB of memory; 0: no limit)\n"
     "      --rays            cast one ray per sample at the patches (through a locator) instead of\n"
-    "                        drawing a tessellation: the same camera, lights and colours\n"
+    "                        drawing a tessellation: the same camera, lights and colours; a\n"
+    "                        model's rays hit its trimmed faces only\n"
     "  -h, --help            this text\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
@@ -341,9 +342,11 @@ static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_
 static int draw_rays(const render_opts *o, const bs_surface *s, raster *r, size_t *hits)
 {
     bs_locator *L = NULL;
-    bs_status st = bs_locator_create(s, &L);
+    /* a model's trimmed faces through its own locator, in the model's own coordinates */
+    int trimmed = o->md != NULL && o->md->model != NULL;
+    bs_status st = trimmed ? bs_locator_create_model(o->md->model, &L) : bs_locator_create(s, &L);
     if (st == BS_OK)
-        st = raycast_draw(r, L, o->color, hits);
+        st = raycast_draw(r, L, trimmed ? o->unit : 1.0, o->color, hits);
     bs_locator_destroy(L);
     return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
 }
@@ -491,7 +494,7 @@ int cmd_render(int argc, char **argv)
         return cli_fail("render", CLI_INPUT, "the surface is not 3-D");
     }
     model_draw md = {NULL, 0, 0};
-    if (!o.rays && !o.curvature && !o.split && o.patch == (size_t)-1)
+    if (!o.curvature && !o.split && o.patch == (size_t)-1)
         rc = model_draw_open("render", &o.in, o.faces, &md);
     o.md = &md;
     bs_surface *picked = NULL;

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-bs_status raycast_draw(raster *r, const bs_locator *L, const double rgb[3], size_t *hits)
+bs_status raycast_draw(raster *r, const bs_locator *L, double unit, const double rgb[3], size_t *hits)
 {
     size_t W = r->W;
     double *org = malloc(3 * W * sizeof(double)), *dir = malloc(3 * W * sizeof(double));
@@ -18,12 +18,15 @@ bs_status raycast_draw(raster *r, const bs_locator *L, const double rgb[3], size
     const bs_view nv[3] = {{nrm, W, s3}, {nrm + 1, W, s3}, {nrm + 2, W, s3}};
     *hits = 0;
     for (size_t y = 0; st == BS_OK && y < r->H; y++) {
-        for (size_t x = 0; x < W; x++)
+        for (size_t x = 0; x < W; x++) {
             raster_ray(r, x, y, org + 3 * x, dir + 3 * x);
+            for (int c = 0; c < 3; c++) /* into the locator's coordinates (unit a power of two) */
+                org[3 * x + (size_t)c] /= unit;
+        }
         st = bs_locator_intersect(L, W, ov, dv, NULL, patch, NULL, &tv, nv);
         for (size_t x = 0; st == BS_OK && x < W; x++)
             if (patch[x] != UINT32_MAX && isfinite(t[x])) {
-                raster_put(r, x, y, r->reach - t[x], nrm + 3 * x, rgb);
+                raster_put(r, x, y, r->reach - t[x] * unit, nrm + 3 * x, rgb);
                 ++*hits;
             }
     }

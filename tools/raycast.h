@@ -8,8 +8,9 @@
 
 #include <bezsurf.h>
 
-/* Cast the rays of every sample of r (framed already) at the surface L holds and shade the hits
- * in the colour rgb (0..1); *hits receives their number. BS_OK or the locator's status. */
-bs_status raycast_draw(raster *r, const bs_locator *L, const double rgb[3], size_t *hits);
+/* Cast the rays of every sample of r (framed already) at the surface L holds, whose coordinates
+ * are the picture's divided by unit (a power of two), and shade the hits in the colour rgb
+ * (0..1); *hits receives their number. BS_OK or the locator's status. */
+bs_status raycast_draw(raster *r, const bs_locator *L, double unit, const double rgb[3], size_t *hits);
 
 #endif

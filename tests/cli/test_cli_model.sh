@@ -60,6 +60,16 @@ expect 0 "wedge.png" -- "$png_check" "$work/wedge.png" 160 120
 expect 0 "render --faces of a .bpt surface" -- "$tool" render --faces -b teacup --size 160x120 --ss 1 \
     --max-triangles 20000 -o "$work/cup.png"
 expect 0 "cup.png" -- "$png_check" "$work/cup.png" 160 120
+# render --rays of a model hits its trimmed faces only: the bell's planes are discs cut by the
+# revolution's 300 degrees, far smaller than their square patches (fewer hits than those give)
+expect 0 "render --rays of a model" -- "$tool" render --rays --size 160x120 --ss 1 -o "$work/bell-rays.png" "$cad/bell.step"
+trimmed_hits=$(sed -n 's/.* rays, \([0-9]*\) hits$/\1/p' "$work/out")
+expect 0 "bell-rays.png" -- "$png_check" "$work/bell-rays.png" 160 120
+expect 0 "convert bell.step bell.bpt (its patches, untrimmed)" -- "$tool" convert "$cad/bell.step" "$work/bell.bpt"
+expect 0 "render --rays of its patches" -- "$tool" render --rays --size 160x120 --ss 1 -o "$work/bell-patches.png" "$work/bell.bpt"
+whole_hits=$(sed -n 's/.* rays, \([0-9]*\) hits$/\1/p' "$work/out")
+check '[ "$trimmed_hits" -gt 1000 ] && [ "$trimmed_hits" -lt $((whole_hits * 3 / 4)) ]' \
+    "render --rays of the bell: $trimmed_hits hits on its trimmed faces, $whole_hits on its patches"
 expect 0 "trims" -- "$tool" trims --size 200 -o "$work/trims.png" "$cad/block.step"
 has out "face 8 of 28 (plane), 3 loops" "the block's face with two holes is the default"
 expect 0 "trims.png" -- "$png_check" "$work/trims.png" 200 200
