@@ -161,23 +161,49 @@ static size_t shifts(double x, double lo, double hi, double period, double *out)
     return n;
 }
 
+/* (u, v) of face f brought into its box by whole periods, every way it lands there (us, vs and
+ * their counts; 0 when outside the box or NaN). */
+static int placed(const bsi_face *face, double u, double v, double *us, size_t *nu, double *vs, size_t *nv)
+{
+    if (isnan(u) || isnan(v))
+        return 0;
+    *nu = shifts(u, face->box[0], face->box[1], face->period[0], us);
+    *nv = shifts(v, face->box[2], face->box[3], face->period[1], vs);
+    return *nu > 0 && *nv > 0;
+}
+
+/* 1 when the loops' parity puts some placement of the point inside */
+static int parity_inside(const bs_model *m, const bsi_face *face, const double *us, size_t nu,
+                         const double *vs, size_t nv)
+{
+    for (size_t i = 0; i < nu; i++)
+        for (size_t j = 0; j < nv; j++)
+            if (loops_parity(m, face, us[i], vs[j]))
+                return 1;
+    return 0;
+}
+
 int bsi_face_classify(const bs_model *m, size_t f, double u, double v, double tol)
 {
     const bsi_face *face = &m->faces[f];
-    if (isnan(u) || isnan(v))
-        return BS_TRIM_OUTSIDE;
     double us[MAX_SHIFTS], vs[MAX_SHIFTS];
-    size_t nu = shifts(u, face->box[0], face->box[1], face->period[0], us);
-    size_t nv = shifts(v, face->box[2], face->box[3], face->period[1], vs);
-    if (nu == 0 || nv == 0)
+    size_t nu = 0, nv = 0;
+    if (!placed(face, u, v, us, &nu, vs, &nv))
         return BS_TRIM_OUTSIDE;
     if (face->loop_count == 0)
         return BS_TRIM_INSIDE;
     if (bsi_face_near_boundary(m, f, us[0], vs[0], tol))
         return BS_TRIM_ON;
-    for (size_t i = 0; i < nu; i++)
-        for (size_t j = 0; j < nv; j++)
-            if (loops_parity(m, face, us[i], vs[j]))
-                return BS_TRIM_INSIDE;
-    return BS_TRIM_OUTSIDE;
+    return parity_inside(m, face, us, nu, vs, nv) ? BS_TRIM_INSIDE : BS_TRIM_OUTSIDE;
+}
+
+int bsi_face_covers(const bs_model *m, size_t f, double u, double v, double tol)
+{
+    const bsi_face *face = &m->faces[f];
+    double us[MAX_SHIFTS], vs[MAX_SHIFTS];
+    size_t nu = 0, nv = 0;
+    if (!placed(face, u, v, us, &nu, vs, &nv))
+        return 0;
+    return face->loop_count == 0 || parity_inside(m, face, us, nu, vs, nv) ||
+           bsi_face_near_boundary(m, f, us[0], vs[0], tol);
 }

@@ -226,6 +226,9 @@ double bsi_wrap(double u, double lo, double period);
 /* ---- Classification (classify.c) ---- */
 /* BS_TRIM_* of native (u, v) on face f (a valid id), tol a finite 3-D distance >= 0. */
 int bsi_face_classify(const bs_model *m, size_t f, double u, double v, double tol);
+/* 1 when bsi_face_classify would not say OUTSIDE, answered by the cheap parity test first: the
+ * certified search for nearness to the boundary runs only for points outside the loops. */
+int bsi_face_covers(const bs_model *m, size_t f, double u, double v, double tol);
 
 /* ---- Sewing (sew.c): trims without an edge whose 3-D images coincide within tol become one
  * edge; called by bsi_model_finish. BS_ERR_NO_MEMORY. ---- */

@@ -27,7 +27,7 @@ static int inside(const bsi_loc_trim *t, uint32_t patch, double u, double v)
     const model_trim *mt = (const model_trim *)t;
     double native[2];
     size_t f = bsi_patch_native(mt->m, patch, u, v, native);
-    return bsi_face_classify(mt->m, f, native[0], native[1], mt->tol) != BS_TRIM_OUTSIDE;
+    return bsi_face_covers(mt->m, f, native[0], native[1], mt->tol);
 }
 
 static void to_face(const bsi_loc_trim *t, uint32_t patch, double u, double v, uint32_t *face,
