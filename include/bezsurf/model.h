@@ -26,6 +26,7 @@
 #include "core.h"
 #include "surface.h"
 #include "io.h"
+#include "mesh.h"
 #include "query.h"
 
 #ifdef __cplusplus
@@ -356,6 +357,52 @@ BS_API bs_status bs_model_classify(const bs_model *m, size_t n, const uint32_t *
  */
 BS_API bs_status bs_model_properties(const bs_model *m, double rel_tol, double *area,
                                      double *volume, double *centroid);
+
+/**
+ * @brief Tessellate the model's trimmed faces into one watertight triangle mesh.
+ * Each model edge is sampled once, adaptively, and its vertices are shared by the faces on both
+ * sides, so a closed shell gives a closed mesh (every mesh edge in exactly two triangles) and no
+ * T-junctions. Each face is meshed in its native parameters as a constrained Delaunay
+ * triangulation in a metric of its surface, its trim loops the constraints, refined inside until
+ * the error estimate of every triangle is within the tolerance (docs/tessellation.md: a
+ * second-order estimate from its sides' middles and centroid, as rational patches are in 1.1: an
+ * estimate, not a bound) and, within a budget, until no corner angle is below 20 degrees in
+ * that metric where the point that would fix it lies inside the face. Triangles wind
+ * counter-clockwise seen from outside (the face's `reversed` applied); bs_mesh_copy_patch_ids()
+ * and bs_mesh_copy_triangle_patch_ids() give **face** ids, bs_mesh_copy_uv() a vertex's native
+ * parameters on the face it was made on, bs_mesh_copy_corner_uv() each corner's native
+ * parameters on its triangle's face. Normals are the faces' outward unit normals (at poles the
+ * mean of the triangles around). Vertices closer than 1e-6 D (D the diagonal of the model's
+ * control points) are one. Faces are meshed on up to o->threads threads; the mesh is
+ * bit-identical for every count.
+ * @param[in]  m    the model.
+ * @param[in]  o    options: method BS_TESS_SUBDIVIDE or BS_TESS_PER_PATCH (the same method here),
+ *                  tolerance (absolute, or with BS_TESS_RELATIVE a fraction of D), BS_TESS_REVERSE,
+ *                  max_vertices, max_triangles, threads.
+ * @param[out] out  receives the mesh (bs_mesh_destroy()); NULL on failure.
+ * @return BS_OK (an empty model gives an empty mesh); BS_ERR_INVALID_ARG if m, o or out is NULL,
+ *         o->size is too small, the method is unknown or flags has unknown bits;
+ *         BS_ERR_UNSUPPORTED for BS_TESS_UNIFORM, BS_TESS_STRIPS, and a face without trim loops
+ *         (models of bs_model_from_surface(): tessellate bs_model_surface() instead);
+ *         BS_ERR_DOMAIN if the tolerance is NaN, Inf, zero or negative, or a face's trim loops
+ *         cross or are not closed; BS_ERR_SIZE over a budget (a face's points are counted as they
+ *         are made, so the work stops soon after) or past 32-bit indices; BS_ERR_NO_MEMORY.
+ * @since 1.2
+ */
+BS_API bs_status bs_model_tessellate(const bs_model *m, const bs_tess_options *o, bs_mesh **out);
+
+/**
+ * @brief The vertex and triangle counts bs_model_tessellate() would give with the same options,
+ * without building the mesh (the faces are meshed, which is most of the work).
+ * @param[in]  m          the model.
+ * @param[in]  o          as for bs_model_tessellate().
+ * @param[out] vertices   NULL or the vertex count.
+ * @param[out] triangles  NULL or the triangle count.
+ * @return the statuses of bs_model_tessellate() (BS_ERR_INVALID_ARG if m or o is NULL).
+ * @since 1.2
+ */
+BS_API bs_status bs_model_tessellate_count(const bs_model *m, const bs_tess_options *o,
+                                           size_t *vertices, size_t *triangles);
 
 /**
  * @brief A locator of the model's trimmed faces, for rays (bs_locator_intersect() and its

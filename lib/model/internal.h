@@ -207,6 +207,9 @@ bs_status bsi_model_add_edge(bs_model *m, uint32_t *edge);
  * without an edge first). BS_ERR_NO_MEMORY. */
 bs_status bsi_model_finish(bs_model *m);
 
+/* The diagonal of the bounding box of the model's patches (0 for an empty model). */
+double bsi_model_diagonal(const bs_model *m);
+
 /* Native (u, v) of face f -> patch id and local (s, t): 1, or 0 outside its patches. Periodic
  * directions are first brought into the face's box by whole periods. */
 int bsi_face_locate(const bs_model *m, size_t f, double u, double v, uint32_t *patch, double *st);

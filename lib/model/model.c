@@ -181,8 +181,7 @@ bs_status bsi_model_add_edge(bs_model *m, uint32_t *edge)
     return BS_OK;
 }
 
-/* The diagonal of the bounding box of the model's patches (0 for an empty model). */
-static double model_diagonal(const bs_model *m)
+double bsi_model_diagonal(const bs_model *m)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t p = 0; p < bs_surface_count(m->surface); p++) {
@@ -221,7 +220,7 @@ static int trim_degenerate(const bs_model *m, size_t f, const bsi_trim *t, doubl
 
 bs_status bsi_model_finish(bs_model *m)
 {
-    double tol = 1e-7 * model_diagonal(m);
+    double tol = 1e-7 * bsi_model_diagonal(m);
     bs_status st = bsi_model_sew(m, tol);
     if (st != BS_OK)
         return st;
