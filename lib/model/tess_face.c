@@ -327,15 +327,85 @@ static bs_status refine(face_run *r, size_t boundary_points)
 
 /* ---- The face ---- */
 
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* rep[i]: the first loop point of the same vertex at the same place as point i (the two sides of
+ * a slit, an edge a loop runs along there and back, are one), found among the points sorted by
+ * vertex. */
+static bs_status same_points(const face_run *r, const loop_pt *pts, size_t n, size_t *rep)
+{
+    uint64_t *key = malloc((n ? n : 1) * sizeof(uint64_t));
+    if (key == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t i = 0; i < n; i++) {
+        key[i] = (uint64_t)pts[i].vid << 32 | (uint64_t)i;
+        rep[i] = i;
+    }
+    qsort(key, n, sizeof(uint64_t), cmp_u64);
+    for (size_t g = 0; g < n;) {
+        size_t e = g + 1;
+        while (e < n && key[e] >> 32 == key[g] >> 32)
+            e++;
+        for (size_t a = g + 1; a < e; a++)
+            for (size_t b = g; b < a; b++) {
+                size_t ia = (size_t)(key[a] & 0xffffffffu), ib = (size_t)(key[b] & 0xffffffffu);
+                if (rep[ib] == ib && same_place(r->j, r->f, &pts[ia], &pts[ib])) {
+                    rep[ia] = ib;
+                    break;
+                }
+            }
+        g = e;
+    }
+    free(key);
+    return BS_OK;
+}
+
+/* The loops' segments as constraints. A segment the loops run along an even number of times (a
+ * slit: an edge used twice by the face, there and back at the same place) bounds nothing and is
+ * left free. */
+static bs_status constrain(face_run *r, const uint32_t *ids, const size_t *start, size_t nloop)
+{
+    size_t n = start[nloop], ns = 0;
+    uint64_t *seg = malloc((n ? n : 1) * sizeof(uint64_t));
+    if (seg == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t l = 0; l < nloop; l++)
+        for (size_t i = start[l]; i < start[l + 1]; i++) {
+            size_t next = i + 1 < start[l + 1] ? i + 1 : start[l];
+            uint32_t a = ids[i], b = ids[next];
+            if (a != b)
+                seg[ns++] = a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+        }
+    qsort(seg, ns, sizeof(uint64_t), cmp_u64);
+    bs_status st = BS_OK;
+    for (size_t g = 0; g < ns && st == BS_OK;) {
+        size_t e = g + 1;
+        while (e < ns && seg[e] == seg[g])
+            e++;
+        if ((e - g) % 2 == 1)
+            st = bsi_cdt_force(&r->cdt, (uint32_t)(seg[g] >> 32), (uint32_t)(seg[g] & 0xffffffffu));
+        g = e;
+    }
+    free(seg);
+    return st;
+}
+
 static bs_status triangulate(face_run *r, const loop_pt *pts, const size_t *start, size_t nloop)
 {
     size_t n = start[nloop];
     uint32_t *ids = malloc((n ? n : 1) * sizeof(uint32_t));
-    if (ids == NULL)
-        return BS_ERR_NO_MEMORY;
+    size_t *rep = malloc((n ? n : 1) * sizeof(size_t));
+    bs_status st = ids != NULL && rep != NULL ? same_points(r, pts, n, rep) : BS_ERR_NO_MEMORY;
     const tm_vertex *vert = r->j->edges.vert;
-    bs_status st = BS_OK;
     for (size_t i = 0; i < n && st == BS_OK; i++) {
+        if (rep[i] != i) {
+            ids[i] = ids[rep[i]];
+            continue;
+        }
         int64_t gx = to_grid(pts[i].uv[0] * r->su, r->cx, r->k), gy = to_grid(pts[i].uv[1] * r->sv, r->cy, r->k);
         int outcome;
         if (gx == INT64_MAX || gy == INT64_MAX)
@@ -345,12 +415,10 @@ static bs_status triangulate(face_run *r, const loop_pt *pts, const size_t *star
         if (st == BS_OK && outcome == BSI_CDT_ADDED)
             st = put_point(r, ids[i], pts[i].uv, vert[pts[i].vid].p, pts[i].vid);
     }
-    for (size_t l = 0; l < nloop && st == BS_OK; l++)
-        for (size_t i = start[l]; i < start[l + 1] && st == BS_OK; i++) {
-            size_t next = i + 1 < start[l + 1] ? i + 1 : start[l];
-            st = bsi_cdt_force(&r->cdt, ids[i], ids[next]);
-        }
+    if (st == BS_OK)
+        st = constrain(r, ids, start, nloop);
     free(ids);
+    free(rep);
     if (st == BS_OK)
         st = bsi_cdt_mark_inside(&r->cdt);
     return st;
