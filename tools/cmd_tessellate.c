@@ -2,6 +2,7 @@
 #include "cmds.h"
 
 #include <errno.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,7 +10,9 @@
 static const char usage[] =
     "usage: bezsurf tessellate [options] [FILE]\n"
     "Tessellate a surface from FILE (.bpt, OBJ or IGES by its extension, or --from; '-':\n"
-    "standard input; default: the built-in teapot) into a triangle mesh file.\n"
+    "standard input; default: the built-in teapot) into a triangle mesh file. A STEP or IGES\n"
+    "file is a model: its trimmed faces become one watertight mesh (every edge sampled once and\n"
+    "shared by the faces on both sides), and the report says whether it is closed.\n"
     "  -o, --output FILE     output file (default: FILE's name, or the built-in's, + .obj);\n"
     "                        '-': standard output (OBJ unless -f; the counts go to stderr)\n"
     "  -f, --format FMT      obj, ply (binary), ply-ascii or stl (default: from the output's\n"
@@ -69,6 +72,61 @@ static bs_status write_stdout(const bs_mesh *m, int format)
         st = BS_ERR_IO;
     free(buf);
     return st;
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* 1 when every edge of the mesh is used by two triangles, once in each direction; -1 when that
+ * cannot be told (out of memory). */
+static int mesh_closed(const bs_mesh *m)
+{
+    size_t nt = bs_mesh_triangle_count(m);
+    uint32_t *tri = malloc((3 * nt + 1) * sizeof(uint32_t));
+    uint64_t *e = malloc((3 * nt + 1) * sizeof(uint64_t));
+    int closed = tri != NULL && e != NULL && bs_mesh_copy_triangles(m, tri, 3 * nt) == BS_OK ? 1 : -1;
+    for (size_t k = 0; closed == 1 && k < 3 * nt; k++)
+        e[k] = (uint64_t)tri[k] << 32 | tri[k % 3 == 2 ? k - 2 : k + 1];
+    if (closed == 1)
+        qsort(e, 3 * nt, sizeof(uint64_t), cmp_u64);
+    for (size_t k = 0; closed == 1 && k < 3 * nt; k++) {
+        uint64_t back = (e[k] & 0xffffffffu) << 32 | e[k] >> 32;
+        if ((k > 0 && e[k] == e[k - 1]) || bsearch(&back, e, 3 * nt, sizeof(uint64_t), cmp_u64) == NULL)
+            closed = 0;
+    }
+    free(tri);
+    free(e);
+    return closed;
+}
+
+/* A STEP or IGES file's model tessellated (uniform rates do not apply to trimmed faces). */
+static int tessellate_model(const cli_input *in, const bs_tess_options *o, size_t budget, bs_mesh **out)
+{
+    if (o->method == BS_TESS_UNIFORM)
+        return cli_fail("tessellate", CLI_USAGE, "a model's trimmed faces take a tolerance (-t or -r), not -u");
+    bs_model *model = NULL;
+    int rc = cli_load_model("tessellate", in, &model);
+    if (rc != CLI_OK)
+        return rc;
+    bs_tess_options b = *o;
+    b.method = BS_TESS_SUBDIVIDE;
+    b.max_triangles = budget;
+    bs_status st = bs_model_tessellate(model, &b, out);
+    bs_model_destroy(model);
+    if (st == BS_ERR_SIZE && budget != 0)
+        return cli_fail("tessellate", CLI_INPUT,
+                        "the mesh would have more triangles than the budget of %zu (--max-triangles N raises it, "
+                        "0 removes it)",
+                        budget);
+    if (st == BS_ERR_UNSUPPORTED && (o->flags & BS_TESS_STRIPS))
+        return cli_fail("tessellate", CLI_USAGE, "--strips is not available for models");
+    if (st != BS_OK)
+        return cli_fail("tessellate", st == BS_ERR_DOMAIN ? CLI_INPUT : CLI_INTERNAL, "%s: %s", in->path,
+                        bs_status_string(st));
+    return CLI_OK;
 }
 
 int cmd_tessellate(int argc, char **argv)
@@ -148,10 +206,17 @@ int cmd_tessellate(int argc, char **argv)
     int rc = to_stdout ? CLI_OK : cli_check_output("tessellate", output); /* before the work */
     if (rc != CLI_OK)
         return rc;
+    const cli_format *fmt = NULL;
+    if (in.path != NULL && strcmp(in.path, "-") != 0)
+        fmt = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
+    /* STEP and IGES files are models; an OBJ file is tessellated as its surfaces, as in 1.1 */
+    int is_model = fmt && fmt->read_model_file && strcmp(fmt->name, "obj") != 0;
     bs_surface *s = NULL;
-    rc = cli_load("tessellate", &in, &s);
-    if (rc != CLI_OK)
-        return rc;
+    if (!is_model) {
+        rc = cli_load("tessellate", &in, &s);
+        if (rc != CLI_OK)
+            return rc;
+    }
     bs_tess_options o;
     bs_tess_options_init(&o);
     o.method = mode == 2 ? BS_TESS_UNIFORM : method;
@@ -160,7 +225,7 @@ int cmd_tessellate(int argc, char **argv)
     o.nv = nv;
     o.tolerance = tol;
     bs_mesh *m = NULL;
-    rc = cli_tessellate("tessellate", s, &o, budget, &m);
+    rc = is_model ? tessellate_model(&in, &o, budget, &m) : cli_tessellate("tessellate", s, &o, budget, &m);
     bs_surface_destroy(s);
     if (rc != CLI_OK)
         return rc;
@@ -178,6 +243,10 @@ int cmd_tessellate(int argc, char **argv)
             bs_mesh_triangle_count(m));
     if (flags & BS_TESS_STRIPS)
         fprintf(report, ", %zu strips", bs_mesh_strip_count(m));
+    if (is_model) {
+        int closed = mesh_closed(m);
+        fprintf(report, closed == 1 ? ", closed" : closed == 0 ? ", not closed" : "");
+    }
     fprintf(report, "\n");
     bs_mesh_destroy(m);
     return cli_finish("tessellate");

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Models in the tool: info on the CAD parts of data/cad/ (the face counts, area and volume of their
 # .ref files, one closed shell), STEP converted to OBJ and read back, render --faces and trims
-# pictures, errors.
+# pictures, watertight meshes by tessellate, errors.
 # usage: test_cli_model.sh TOOL PNG_CHECK CAD_DIR WORK_DIR
 tool=$1 png_check=$2 cad=$3 work=$4
 rm -rf "$work" && mkdir -p "$work" || exit 1
@@ -76,6 +76,19 @@ expect 0 "trims.png" -- "$png_check" "$work/trims.png" 200 200
 expect 0 "trims --face" -- "$tool" trims --face 1 --size 128 -o "$work/bell.png" "$cad/bell.step"
 has out "face 1 of 7 (revolution), 2 loops" "the bell's face 1"
 expect 0 "bell.png" -- "$png_check" "$work/bell.png" 128 128
+
+# tessellate: a watertight mesh of each part's STEP file, the report says it is closed; an STL
+# of it has the triangles reported; -u is refused for models
+for part in bottle block sphere torus cone wedge bell duct; do
+    expect 0 "tessellate $part.step" -- "$tool" tessellate -r 1e-3 -o "$work/$part.stl" "$cad/$part.step"
+    has out ", closed" "$part.step: a closed mesh"
+    n=$(sed -n 's/.* \([0-9]*\) triangles.*/\1/p' "$work/out")
+    check '[ "$(wc -c < "$work/$part.stl")" -eq $((84 + 50 * n)) ]' "$part.stl holds the $n triangles reported"
+done
+expect 0 "tessellate block-brep.igs" -- "$tool" tessellate -o "$work/bb.obj" "$cad/block-brep.igs"
+has out ", not closed" "block-brep.igs: its known crack reported (tests/model/test_model_tessellate.c)"
+expect 1 "tessellate a model with -u" -- "$tool" tessellate -u 4 -o "$work/u.obj" "$cad/cone.step"
+check "[ ! -e '$work/u.obj' ]" "nothing written after -u on a model"
 
 # errors
 printf 'ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT(%s,(0.,0.,0.);\nENDSEC;\nEND-ISO-10303-21;\n' "''" \
