@@ -105,16 +105,36 @@ static int mesh_closed(const bs_mesh *m)
 /* A STEP or IGES file's model tessellated (uniform rates do not apply to trimmed faces). */
 static int tessellate_model(const cli_input *in, const bs_tess_options *o, size_t budget, bs_mesh **out)
 {
-    if (o->method == BS_TESS_UNIFORM)
-        return cli_fail("tessellate", CLI_USAGE, "a model's trimmed faces take a tolerance (-t or -r), not -u");
     bs_model *model = NULL;
     int rc = cli_load_model("tessellate", in, &model);
     if (rc != CLI_OK)
         return rc;
+    int trimmed = 0;
+    for (size_t f = 0; f < bs_model_face_count(model); f++) {
+        bs_face_info info;
+        info.size = sizeof info;
+        trimmed |= bs_model_face_info(model, f, &info) == BS_OK && info.loop_count > 0;
+    }
+    if (o->method == BS_TESS_UNIFORM && trimmed) {
+        bs_model_destroy(model);
+        return cli_fail("tessellate", CLI_USAGE, "a model's trimmed faces take a tolerance (-t or -r), not -u");
+    }
+    if (o->method == BS_TESS_UNIFORM) {
+        /* an IGES file of lone surfaces: their patches, as in 1.1 */
+        rc = cli_tessellate("tessellate", bs_model_surface(model), o, budget, out);
+        bs_model_destroy(model);
+        return rc;
+    }
     bs_tess_options b = *o;
     b.method = BS_TESS_SUBDIVIDE;
     b.max_triangles = budget;
     bs_status st = bs_model_tessellate(model, &b, out);
+    if (st == BS_ERR_UNSUPPORTED && !(o->flags & BS_TESS_STRIPS)) {
+        /* faces without trim loops (an IGES file of lone surfaces): their patches, as in 1.1 */
+        rc = cli_tessellate("tessellate", bs_model_surface(model), o, budget, out);
+        bs_model_destroy(model);
+        return rc;
+    }
     bs_model_destroy(model);
     if (st == BS_ERR_SIZE && budget != 0)
         return cli_fail("tessellate", CLI_INPUT,

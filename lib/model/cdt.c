@@ -9,15 +9,12 @@
  * segment crosses are removed, and the two polygons on its sides are triangulated again by
  * choosing, for a base edge, the vertex whose circle holds no other.
  */
-#include "model/cdt.h"
+#include "model/cdt_internal.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-#define NEXT(i) (((i) + 1) % 3)
-#define PREV(i) (((i) + 2) % 3)
-
-static int grow(void **p, size_t *cap, size_t need, size_t size)
+int bsi_cdt_grow(void **p, size_t *cap, size_t need, size_t size)
 {
     if (need <= *cap)
         return 1;
@@ -45,13 +42,13 @@ int bsi_cdt_orient(const bsi_cdt *c, uint32_t a, uint32_t b, const int64_t *p)
     return (d > 0) - (d < 0);
 }
 
-static int orient3(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t p)
+int bsi_cdt_orient3(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t p)
 {
     return bsi_cdt_orient(c, a, b, c->q + 2 * p);
 }
 
 /* > 0 when p is inside the circle through the counter-clockwise a, b, c. */
-static long double incircle(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t d, const int64_t *p)
+long double bsi_cdt_incircle(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t d, const int64_t *p)
 {
     const int64_t *pa = c->q + 2 * a, *pb = c->q + 2 * b, *pd = c->q + 2 * d;
     long double ax = (long double)(pa[0] - p[0]), ay = (long double)(pa[1] - p[1]);
@@ -65,7 +62,7 @@ static bs_status new_point(bsi_cdt *c, int64_t x, int64_t y, uint32_t *id)
 {
     if (c->np >= UINT32_MAX - 1)
         return BS_ERR_SIZE;
-    if (!grow((void **)&c->q, &c->pcap, c->np + 1, 2 * sizeof(int64_t)))
+    if (!bsi_cdt_grow((void **)&c->q, &c->pcap, c->np + 1, 2 * sizeof(int64_t)))
         return BS_ERR_NO_MEMORY;
     size_t cap = c->pcap;
     void *vt = realloc(c->vtri, cap * sizeof(uint32_t));
@@ -79,14 +76,14 @@ static bs_status new_point(bsi_cdt *c, int64_t x, int64_t y, uint32_t *id)
     return BS_OK;
 }
 
-static bs_status new_tri(bsi_cdt *c, uint32_t *id)
+bs_status bsi_cdt_new_tri(bsi_cdt *c, uint32_t *id)
 {
     if (c->nspare > 0) {
         *id = c->spare[--c->nspare];
     } else {
         if (c->nt >= UINT32_MAX - 1)
             return BS_ERR_SIZE;
-        if (!grow((void **)&c->t, &c->tcap, c->nt + 1, sizeof(bsi_cdt_tri)))
+        if (!bsi_cdt_grow((void **)&c->t, &c->tcap, c->nt + 1, sizeof(bsi_cdt_tri)))
             return BS_ERR_NO_MEMORY;
         *id = (uint32_t)c->nt++;
     }
@@ -94,9 +91,9 @@ static bs_status new_tri(bsi_cdt *c, uint32_t *id)
     return BS_OK;
 }
 
-static bs_status retire(bsi_cdt *c, uint32_t t)
+bs_status bsi_cdt_retire(bsi_cdt *c, uint32_t t)
 {
-    if (!grow((void **)&c->spare, &c->spare_cap, c->nspare + 1, sizeof(uint32_t)))
+    if (!bsi_cdt_grow((void **)&c->spare, &c->spare_cap, c->nspare + 1, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     c->t[t].dead = 1;
     c->spare[c->nspare++] = t;
@@ -112,7 +109,7 @@ bs_status bsi_cdt_init(bsi_cdt *c)
     for (int k = 0; k < 3; k++)
         if (new_point(c, corner[k][0], corner[k][1], &id) != BS_OK)
             return BS_ERR_NO_MEMORY;
-    if (new_tri(c, &t) != BS_OK)
+    if (bsi_cdt_new_tri(c, &t) != BS_OK)
         return BS_ERR_NO_MEMORY;
     for (int k = 0; k < 3; k++) {
         c->t[t].v[k] = (uint32_t)k;
@@ -137,7 +134,7 @@ void bsi_cdt_free(bsi_cdt *c)
 }
 
 /* Index of vertex v in triangle t, or 3. */
-static int slot_of(const bsi_cdt_tri *t, uint32_t v)
+int bsi_cdt_slot_of(const bsi_cdt_tri *t, uint32_t v)
 {
     for (int i = 0; i < 3; i++)
         if (t->v[i] == v)
@@ -170,7 +167,7 @@ static uint32_t locate(const bsi_cdt *c, uint32_t t, const int64_t *p, int guard
 
 static int add_edge(bsi_cdt *c, uint32_t from, uint32_t to, uint32_t outer, uint32_t fixed)
 {
-    if (!grow((void **)&c->edge, &c->edge_cap, 4 * (c->nedge + 1), sizeof(uint32_t)))
+    if (!bsi_cdt_grow((void **)&c->edge, &c->edge_cap, 4 * (c->nedge + 1), sizeof(uint32_t)))
         return 0;
     uint32_t *e = c->edge + 4 * c->nedge++;
     e[0] = from;
@@ -181,7 +178,7 @@ static int add_edge(bsi_cdt *c, uint32_t from, uint32_t to, uint32_t outer, uint
 }
 
 /* The boundary of the marked triangles c->cav: their edges whose other side is unmarked. */
-static int collect_boundary(bsi_cdt *c)
+int bsi_cdt_collect_boundary(bsi_cdt *c)
 {
     c->nedge = 0;
     for (size_t k = 0; k < c->ncav; k++) {
@@ -199,7 +196,7 @@ static int collect_boundary(bsi_cdt *c)
 
 /* Neighbours of the triangles c->fresh: among themselves where they share an edge, else the
  * outer triangle of the boundary edge they stand on (whose own link is turned to them). */
-static void link_fresh(bsi_cdt *c)
+void bsi_cdt_link_fresh(bsi_cdt *c)
 {
     for (size_t k = 0; k < c->nfresh; k++) {
         uint32_t tk = c->fresh[k];
@@ -212,7 +209,7 @@ static void link_fresh(bsi_cdt *c)
                 if (j == k)
                     continue;
                 const bsi_cdt_tri *U = &c->t[c->fresh[j]];
-                int a = slot_of(U, y);
+                int a = bsi_cdt_slot_of(U, y);
                 if (a < 3 && U->v[NEXT(a)] == x) {
                     T->nb[i] = c->fresh[j];
                     T->fixed[i] = U->fixed[PREV(a)];
@@ -228,7 +225,7 @@ static void link_fresh(bsi_cdt *c)
                 T->fixed[i] = (unsigned char)E[3];
                 if (E[2] != BSI_CDT_NONE) {
                     bsi_cdt_tri *O = &c->t[E[2]];
-                    int b = slot_of(O, y);
+                    int b = bsi_cdt_slot_of(O, y);
                     if (b < 3 && O->v[NEXT(b)] == x)
                         O->nb[PREV(b)] = tk;
                 }
@@ -239,16 +236,16 @@ static void link_fresh(bsi_cdt *c)
     }
 }
 
-static int push_cav(bsi_cdt *c, uint32_t t)
+int bsi_cdt_push_cav(bsi_cdt *c, uint32_t t)
 {
-    if (!grow((void **)&c->cav, &c->cav_cap, c->ncav + 1, sizeof(uint32_t)))
+    if (!bsi_cdt_grow((void **)&c->cav, &c->cav_cap, c->ncav + 1, sizeof(uint32_t)))
         return 0;
     c->cav[c->ncav++] = t;
     c->t[t].mark = c->stamp;
     return 1;
 }
 
-static void next_stamp(bsi_cdt *c)
+void bsi_cdt_next_stamp(bsi_cdt *c)
 {
     if (++c->stamp == 0) {
         for (size_t k = 0; k < c->nt; k++)
@@ -261,9 +258,9 @@ static void next_stamp(bsi_cdt *c)
  * point cannot go in there (a constraint would be lost, or p lies on one). */
 static int cavity(bsi_cdt *c, uint32_t t0, const int64_t *p, int *nomem)
 {
-    next_stamp(c);
+    bsi_cdt_next_stamp(c);
     c->ncav = 0;
-    if (!push_cav(c, t0))
+    if (!bsi_cdt_push_cav(c, t0))
         return *nomem = 1, 0;
     for (size_t k = 0; k < c->ncav; k++) {
         uint32_t tk = c->cav[k];
@@ -279,13 +276,13 @@ static int cavity(bsi_cdt *c, uint32_t t0, const int64_t *p, int *nomem)
                 continue;
             }
             const bsi_cdt_tri *N = &c->t[n];
-            if (on_side || incircle(c, N->v[0], N->v[1], N->v[2], p) > 0.0L)
-                if (!push_cav(c, n))
+            if (on_side || bsi_cdt_incircle(c, N->v[0], N->v[1], N->v[2], p) > 0.0L)
+                if (!bsi_cdt_push_cav(c, n))
                     return *nomem = 1, 0;
         }
     }
     for (;;) {
-        if (!collect_boundary(c))
+        if (!bsi_cdt_collect_boundary(c))
             return *nomem = 1, 0;
         size_t bad = c->ncav;
         for (size_t e = 0; e < c->nedge && bad == c->ncav; e++) {
@@ -294,7 +291,7 @@ static int cavity(bsi_cdt *c, uint32_t t0, const int64_t *p, int *nomem)
                 continue;
             for (size_t k = 0; k < c->ncav; k++) {
                 const bsi_cdt_tri *T = &c->t[c->cav[k]];
-                int a = slot_of(T, E[0]);
+                int a = bsi_cdt_slot_of(T, E[0]);
                 if (a < 3 && T->v[NEXT(a)] == E[1])
                     bad = k;
             }
@@ -354,14 +351,14 @@ bs_status bsi_cdt_insert(bsi_cdt *c, int64_t x, int64_t y, int mode, uint32_t hi
     bs_status st = new_point(c, x, y, &pid);
     if (st != BS_OK)
         return st;
-    if (!grow((void **)&c->fresh, &c->fresh_cap, c->nedge, sizeof(uint32_t)))
+    if (!bsi_cdt_grow((void **)&c->fresh, &c->fresh_cap, c->nedge, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     c->nfresh = 0;
     for (size_t e = 0; e < c->nedge; e++) {
         uint32_t t;
         if (e < c->ncav)
             t = c->cav[e];
-        else if ((st = new_tri(c, &t)) != BS_OK)
+        else if ((st = bsi_cdt_new_tri(c, &t)) != BS_OK)
             return st;
         bsi_cdt_tri *T = &c->t[t];
         memset(T, 0, sizeof *T);
@@ -371,184 +368,20 @@ bs_status bsi_cdt_insert(bsi_cdt *c, int64_t x, int64_t y, int mode, uint32_t hi
         T->inside = inside;
         c->fresh[c->nfresh++] = t;
     }
-    link_fresh(c);
+    bsi_cdt_link_fresh(c);
     c->last = c->fresh[0];
     *id = pid;
     return *outcome = BSI_CDT_ADDED, BS_OK;
 }
 
-/* ---- Constraints ---- */
-
-/* Set the constraint flag on edge a-b (an edge of triangle t) from both sides. */
-static void fix_edge(bsi_cdt *c, uint32_t t, uint32_t a, uint32_t b)
-{
-    bsi_cdt_tri *T = &c->t[t];
-    for (int i = 0; i < 3; i++) {
-        uint32_t x = T->v[NEXT(i)], y = T->v[PREV(i)];
-        if ((x == a && y == b) || (x == b && y == a)) {
-            T->fixed[i] = 1;
-            uint32_t n = T->nb[i];
-            if (n != BSI_CDT_NONE) {
-                bsi_cdt_tri *N = &c->t[n];
-                for (int j = 0; j < 3; j++)
-                    if (N->v[j] != a && N->v[j] != b)
-                        N->fixed[j] = 1;
-            }
-        }
-    }
-}
-
-/* Triangulate the pseudo-polygon a, b, chain (chain to the left of a->b, in order from a to b)
- * into c->fresh. */
-static bs_status fill_polygon(bsi_cdt *c, uint32_t a, uint32_t b, const uint32_t *chain, size_t k)
-{
-    if (k == 0)
-        return BS_OK;
-    size_t ci = 0;
-    for (size_t j = 1; j < k; j++)
-        if (incircle(c, a, b, chain[ci], c->q + 2 * chain[j]) > 0.0L)
-            ci = j;
-    uint32_t t;
-    bs_status st = new_tri(c, &t);
-    if (st != BS_OK)
-        return st;
-    if (!grow((void **)&c->fresh, &c->fresh_cap, c->nfresh + 1, sizeof(uint32_t)))
-        return BS_ERR_NO_MEMORY;
-    bsi_cdt_tri *T = &c->t[t];
-    T->v[0] = a;
-    T->v[1] = b;
-    T->v[2] = chain[ci];
-    c->fresh[c->nfresh++] = t;
-    st = fill_polygon(c, a, chain[ci], chain, ci);
-    if (st == BS_OK)
-        st = fill_polygon(c, chain[ci], b, chain + ci + 1, k - ci - 1);
-    return st;
-}
-
-bs_status bsi_cdt_force(bsi_cdt *c, uint32_t a, uint32_t b)
-{
-    if (a == b)
-        return BS_OK;
-    const int64_t *qa = c->q + 2 * a, *qb = c->q + 2 * b;
-    /* the triangle of a's fan that the segment leaves a through */
-    uint32_t t = c->vtri[a];
-    size_t guard = c->nt + 8;
-    uint32_t lo = BSI_CDT_NONE, hi = BSI_CDT_NONE;
-    for (;;) {
-        if (guard-- == 0 || t == BSI_CDT_NONE)
-            return BS_ERR_DOMAIN;
-        const bsi_cdt_tri *T = &c->t[t];
-        int i = slot_of(T, a);
-        if (i == 3)
-            return BS_ERR_DOMAIN;
-        uint32_t cv = T->v[NEXT(i)], dv = T->v[PREV(i)];
-        if (cv == b || dv == b) {
-            fix_edge(c, t, a, b);
-            return BS_OK;
-        }
-        int oc = orient3(c, a, cv, b), od = orient3(c, a, dv, b);
-        for (int s = 0; s < 2; s++) {
-            uint32_t w = s ? dv : cv;
-            const int64_t *qw = c->q + 2 * w;
-            if ((s ? od : oc) == 0 && w > 2 &&
-                (qw[0] - qa[0]) * (qb[0] - qa[0]) + (qw[1] - qa[1]) * (qb[1] - qa[1]) > 0) {
-                bs_status st = bsi_cdt_force(c, a, w);
-                return st != BS_OK ? st : bsi_cdt_force(c, w, b);
-            }
-        }
-        if (oc > 0 && od < 0) {
-            lo = cv;
-            hi = dv;
-            break;
-        }
-        t = T->nb[NEXT(i)]; /* across a-d: the next triangle counter-clockwise around a */
-    }
-    /* walk along the segment, collecting the crossed triangles and the chains on both sides */
-    size_t need = 2 * (c->nt + 2);
-    if (!grow((void **)&c->chain, &c->chain_cap, need, sizeof(uint32_t)))
-        return BS_ERR_NO_MEMORY;
-    uint32_t *upper = c->chain, *lower = c->chain + c->nt + 2;
-    size_t nup = 0, nlow = 0;
-    lower[nlow++] = lo;
-    upper[nup++] = hi;
-    next_stamp(c);
-    c->ncav = 0;
-    if (!push_cav(c, t))
-        return BS_ERR_NO_MEMORY;
-    for (;;) {
-        const bsi_cdt_tri *T = &c->t[t];
-        int i = 3;
-        for (int j = 0; j < 3; j++)
-            if (T->v[j] != lo && T->v[j] != hi)
-                i = j;
-        if (i == 3 || T->fixed[i] || T->nb[i] == BSI_CDT_NONE)
-            return BS_ERR_DOMAIN; /* crosses a constraint */
-        uint32_t n = T->nb[i];
-        const bsi_cdt_tri *N = &c->t[n];
-        uint32_t e = BSI_CDT_NONE;
-        for (int j = 0; j < 3; j++)
-            if (N->v[j] != lo && N->v[j] != hi)
-                e = N->v[j];
-        if (e == BSI_CDT_NONE || c->ncav > c->nt)
-            return BS_ERR_DOMAIN;
-        if (!push_cav(c, n))
-            return BS_ERR_NO_MEMORY;
-        if (e == b)
-            break;
-        int o = orient3(c, a, b, e);
-        if (o == 0) {
-            for (size_t k = 0; k < c->ncav; k++)
-                c->t[c->cav[k]].mark = 0;
-            bs_status st = bsi_cdt_force(c, a, e);
-            return st != BS_OK ? st : bsi_cdt_force(c, e, b);
-        }
-        if (o > 0)
-            upper[nup++] = hi = e;
-        else
-            lower[nlow++] = lo = e;
-        t = n;
-    }
-    if (!collect_boundary(c))
-        return BS_ERR_NO_MEMORY;
-    unsigned char inside = c->t[c->cav[0]].inside;
-    for (size_t k = 0; k < c->ncav; k++) {
-        bs_status st = retire(c, c->cav[k]);
-        if (st != BS_OK)
-            return st;
-    }
-    /* the lower chain, from b back to a, lies to the left of b->a */
-    for (size_t k = 0; k < nlow / 2; k++) {
-        uint32_t s = lower[k];
-        lower[k] = lower[nlow - 1 - k];
-        lower[nlow - 1 - k] = s;
-    }
-    c->nfresh = 0;
-    bs_status st = fill_polygon(c, a, b, upper, nup);
-    if (st == BS_OK)
-        st = fill_polygon(c, b, a, lower, nlow);
-    if (st != BS_OK)
-        return st;
-    for (size_t k = 0; k < c->nfresh; k++) {
-        bsi_cdt_tri *T = &c->t[c->fresh[k]];
-        T->inside = inside;
-        for (int i = 0; i < 3; i++) {
-            uint32_t x = T->v[NEXT(i)], y = T->v[PREV(i)];
-            T->fixed[i] = (x == a && y == b) || (x == b && y == a);
-        }
-    }
-    link_fresh(c);
-    c->last = c->fresh[0];
-    return BS_OK;
-}
-
 bs_status bsi_cdt_mark_inside(bsi_cdt *c)
 {
     /* BFS by parity from the triangle at the enclosing triangle's first corner */
-    next_stamp(c);
+    bsi_cdt_next_stamp(c);
     c->ncav = 0;
     uint32_t t0 = c->vtri[0];
     c->t[t0].inside = 0;
-    if (!push_cav(c, t0))
+    if (!bsi_cdt_push_cav(c, t0))
         return BS_ERR_NO_MEMORY;
     for (size_t k = 0; k < c->ncav; k++) {
         const bsi_cdt_tri *T = &c->t[c->cav[k]];
@@ -563,7 +396,7 @@ bs_status bsi_cdt_mark_inside(bsi_cdt *c)
                 continue;
             }
             c->t[n].inside = want;
-            if (!push_cav(c, n))
+            if (!bsi_cdt_push_cav(c, n))
                 return BS_ERR_NO_MEMORY;
             T = &c->t[c->cav[k]];
         }

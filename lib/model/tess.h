@@ -71,6 +71,8 @@ typedef struct tm_job {
     tm_face_mesh *face;    /* per face */
 } tm_job;
 
+/* Distance of two 3-D points. */
+double bsi_tm_dist3(const double *a, const double *b);
 /* The metric of each face. BS_ERR_NO_MEMORY. */
 bs_status bsi_tm_scales(tm_job *j);
 /* Phase 1. BS_ERR_NO_MEMORY, BS_ERR_SIZE. */

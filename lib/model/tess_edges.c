@@ -37,7 +37,7 @@ static int grow(void **p, size_t *cap, size_t need, size_t size)
     return 1;
 }
 
-static double dist3(const double *a, const double *b)
+double bsi_tm_dist3(const double *a, const double *b)
 {
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
@@ -106,7 +106,7 @@ static bs_status model_vertex(tm_job *j, const double *p, uint32_t face, const d
 {
     tm_edges *e = &j->edges;
     for (size_t k = 0; k < e->nmodel; k++)
-        if (dist3(e->vert[e->model[k]].p, p) <= j->merge) {
+        if (bsi_tm_dist3(e->vert[e->model[k]].p, p) <= j->merge) {
             *id = e->model[k];
             return BS_OK;
         }
@@ -172,7 +172,7 @@ static int interval_fine(const edge_run *r, const double *pa, const double *pb, 
             return 0;
         for (int k = 0; k < 3; k++)
             chord[k] = Pa[k] + f * (Pb[k] - Pa[k]);
-        if (dist3(p, chord) > half)
+        if (bsi_tm_dist3(p, chord) > half)
             return 0;
     }
     double mid[3];
@@ -183,7 +183,7 @@ static int interval_fine(const edge_run *r, const double *pa, const double *pb, 
         bsi_curve_eval(r->c[i].uv, pa[i], ua);
         bsi_curve_eval(r->c[i].uv, pb[i], ub);
         if (!bsi_face_point(r->j->m, r->c[i].face, 0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1]), p) ||
-            dist3(p, mid) > half)
+            bsi_tm_dist3(p, mid) > half)
             return 0;
     }
     return 1;
@@ -218,7 +218,7 @@ static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1,
     double uv[2], Q0[3], Q1[3];
     if (!curve_at(c, c->t0, uv, Q0) || !curve_at(c, c->t1, uv, Q1))
         return 0;
-    double same = dist3(Q0, P0) + dist3(Q1, P1), other = dist3(Q0, P1) + dist3(Q1, P0);
+    double same = bsi_tm_dist3(Q0, P0) + bsi_tm_dist3(Q1, P1), other = bsi_tm_dist3(Q0, P1) + bsi_tm_dist3(Q1, P0);
     double slack = 1e3 * r->j->merge;
     if ((same < other ? same : other) > slack)
         return 0;
@@ -231,8 +231,8 @@ static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1,
             return 0;
         for (int k = 0; k <= COARSE; k++) {
             double t = c->t0 + (c->t1 - c->t0) * k / COARSE, Q[3];
-            if (curve_at(c, t, uv, Q) && dist3(Q, P) < best) {
-                best = dist3(Q, P);
+            if (curve_at(c, t, uv, Q) && bsi_tm_dist3(Q, P) < best) {
+                best = bsi_tm_dist3(Q, P);
                 at = t;
             }
         }
@@ -331,7 +331,7 @@ static int is_pole(const tm_job *j, size_t t, double *P)
     if (!curve_at(&c, c.t0, uv, P))
         return 0;
     for (int k = 1; k <= 16; k++)
-        if (!curve_at(&c, c.t0 + (c.t1 - c.t0) * k / 16.0, uv, Q) || dist3(Q, P) > j->merge)
+        if (!curve_at(&c, c.t0 + (c.t1 - c.t0) * k / 16.0, uv, Q) || bsi_tm_dist3(Q, P) > j->merge)
             return 0;
     return 1;
 }
@@ -350,7 +350,7 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
     double uv0[2], uv1[2], P0[3], P1[3];
     if (!curve_at(mc, mc->t0, uv0, P0) || !curve_at(mc, mc->t1, uv1, P1))
         return BS_ERR_DOMAIN;
-    int closed = dist3(P0, P1) <= j->merge;
+    int closed = bsi_tm_dist3(P0, P1) <= j->merge;
     double par0[MAX_USES], par1[MAX_USES];
     par0[0] = mc->t0;
     par1[0] = mc->t1;

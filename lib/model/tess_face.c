@@ -26,36 +26,6 @@
 #define MIN_ANGLE_DEG 20.0
 #define PI 3.14159265358979323846
 #define MAX_PASSES 256
-#define SCALE_GRID 5
-
-bs_status bsi_tm_scales(tm_job *j)
-{
-    const bs_model *m = j->m;
-    j->scale = calloc(m->nface ? m->nface : 1, sizeof(tm_face_scale));
-    if (j->scale == NULL)
-        return BS_ERR_NO_MEMORY;
-    for (size_t f = 0; f < m->nface; f++) {
-        const bsi_face *face = &m->faces[f];
-        double su = 0.0, sv = 0.0;
-        for (int a = 0; a < SCALE_GRID; a++)
-            for (int b = 0; b < SCALE_GRID; b++) {
-                double u = face->box[0] + (face->box[1] - face->box[0]) * (a + 0.5) / SCALE_GRID;
-                double v = face->box[2] + (face->box[3] - face->box[2]) * (b + 0.5) / SCALE_GRID;
-                double p[3], pu[3], pv[3];
-                if (bsi_face_partials(m, f, u, v, p, pu, pv)) {
-                    su += sqrt(pu[0] * pu[0] + pu[1] * pu[1] + pu[2] * pu[2]);
-                    sv += sqrt(pv[0] * pv[0] + pv[1] * pv[1] + pv[2] * pv[2]);
-                }
-            }
-        if (!(su > 0.0) || !isfinite(su))
-            su = sv > 0.0 && isfinite(sv) ? sv : 1.0;
-        if (!(sv > 0.0) || !isfinite(sv))
-            sv = su;
-        j->scale[f].su = su / (SCALE_GRID * SCALE_GRID);
-        j->scale[f].sv = sv / (SCALE_GRID * SCALE_GRID);
-    }
-    return BS_OK;
-}
 
 void bsi_tm_face_free(tm_face_mesh *fm)
 {
@@ -173,11 +143,6 @@ static bs_status gather_loops(const tm_job *j, size_t f, loop_pt **pts_out, size
 
 /* ---- Assessment ---- */
 
-static double dist3(const double *a, const double *b)
-{
-    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
-}
-
 /* The error estimate of the triangle (module comment); INFINITY where the surface cannot be
  * evaluated. */
 static double triangle_error(const face_run *r, const fpoint *const *c)
@@ -190,7 +155,7 @@ static double triangle_error(const face_run *r, const fpoint *const *c)
             return INFINITY;
         for (int k = 0; k < 3; k++)
             mid[k] = 0.5 * (a->p[k] + b->p[k]);
-        double e = dist3(p, mid);
+        double e = bsi_tm_dist3(p, mid);
         worst_side = e > worst_side ? e : worst_side;
     }
     double p[3], cen[3];
@@ -199,7 +164,7 @@ static double triangle_error(const face_run *r, const fpoint *const *c)
         return INFINITY;
     for (int k = 0; k < 3; k++)
         cen[k] = (c[0]->p[k] + c[1]->p[k] + c[2]->p[k]) / 3.0;
-    double e = dist3(p, cen), est = worst_side * (4.0 / 3.0);
+    double e = bsi_tm_dist3(p, cen), est = worst_side * (4.0 / 3.0);
     return e > est ? e : est;
 }
 

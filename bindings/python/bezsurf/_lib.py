@@ -252,6 +252,8 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_model_classify", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, c_double, BYTES), STATUS),
     ("bs_model_properties", (HANDLE, c_double, DOUBLES, DOUBLES, DOUBLES), STATUS),
     ("bs_locator_create_model", (HANDLE, HANDLE_OUT), STATUS),
+    ("bs_model_tessellate", (HANDLE, POINTER(CTessOptions), HANDLE_OUT), STATUS),
+    ("bs_model_tessellate_count", (HANDLE, POINTER(CTessOptions), SIZE_OUT, SIZE_OUT), STATUS),
 )
 
 #: C functions of the library deliberately left without a binding, with the reason.

@@ -118,12 +118,17 @@ class Mesh(Handle):
                 LIB.bs_surface_tessellate_uniform(surface._ptr, *args, ctypes.byref(out))
             elif method == "adaptive":
                 LIB.bs_surface_tessellate_adaptive(surface._ptr, *args, ctypes.byref(out))
+            elif method == "model":
+                LIB.bs_model_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
+                                        ctypes.byref(out))
             elif method == "options":
                 LIB.bs_surface_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
                                           ctypes.byref(out))
             else:
                 raise ValueError(f"unknown tessellation method {method!r}")
         except (DomainError, SizeError) as exc:
+            if method == "model":
+                raise
             raise explain_tessellation(exc, surface, method, args) from None
         m = cls.__new__(cls)
         m._adopt(out.value)  # type: ignore[arg-type]

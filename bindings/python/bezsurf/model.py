@@ -10,6 +10,8 @@ from . import _buffers as B
 from ._errors import BezsurfError, BezsurfIOError, io_error
 from ._handle import Handle
 from ._lib import BS_ERR_IO, LIB, CFaceInfo, CParseError
+from ._enums import TessMethod
+from .mesh import Mesh, tess_options
 from .patch import _Call
 from .query import Locator
 from .surface import Surface, _located, _with_file
@@ -292,6 +294,30 @@ class Model(Handle):
         LIB.bs_model_properties(self._ptr, rel_tol, ctypes.addressof(area),
                                 ctypes.addressof(volume), ctypes.addressof(centroid))
         return Properties(area.value, volume.value, (centroid[0], centroid[1], centroid[2]))
+
+    def tessellate(self, tolerance: float, *, relative: bool = False, max_vertices: int = 0,
+                   max_triangles: int = 0, threads: int = 1, reverse: bool = False) -> "Mesh":
+        """One watertight mesh of the trimmed faces (since 1.2, bs_model_tessellate): every
+        triangle within ``tolerance`` of its face (a distance, or with ``relative`` a fraction
+        of the control points' box diagonal), each model edge sampled once and shared, so a
+        closed shell gives a closed mesh, wound outward. Triangle ids are face ids, corner
+        (u, v) native face parameters. Budgets, ``threads`` and ``reverse`` as for
+        :meth:`Surface.tessellate`; the mesh is the same bit for bit whatever ``threads``."""
+        args = Surface._tess_args(TessMethod.SUBDIVIDE, 16, 16, tolerance, relative, False,
+                                  max_vertices, max_triangles, threads, reverse)
+        return Mesh._tessellate(self.clone(), "model", args)
+
+    def tessellate_count(self, tolerance: float, *, relative: bool = False,
+                         reverse: bool = False) -> Tuple[int, int]:
+        """(vertices, triangles) of the mesh :meth:`tessellate` would make (the faces are
+        meshed, the mesh is not built)."""
+        args = Surface._tess_args(TessMethod.SUBDIVIDE, 16, 16, tolerance, relative, False, 0, 0,
+                                  1, reverse)
+        nverts = ctypes.c_size_t()
+        ntris = ctypes.c_size_t()
+        LIB.bs_model_tessellate_count(self._ptr, ctypes.byref(tess_options(*args)),
+                                      ctypes.byref(nverts), ctypes.byref(ntris))
+        return int(nverts.value), int(ntris.value)
 
     def locator(self) -> "ModelLocator":
         """A locator of the model's trimmed faces, for rays (since 1.2): see

@@ -224,3 +224,31 @@ class ModelLocatorTest(PlainTestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ModelTessellateTest(PlainTestCase):
+    def test_closed_outward_mesh_of_the_cone(self):
+        m = bezsurf.Model.read(CAD_DIR / "cone.step")
+        mesh = m.tessellate(1e-3, relative=True)
+        tris = [tuple(t) for t in plain(mesh.triangles())]
+        self.assertEqual(len(tris), mesh.triangle_count)
+        edges = {}
+        for a, b, c in tris:
+            for e in ((a, b), (b, c), (c, a)):
+                edges[e] = edges.get(e, 0) + 1
+        # closed: every directed edge once, and its reverse once
+        self.assertTrue(all(n == 1 and edges.get((e[1], e[0])) == 1 for e, n in edges.items()))
+        self.assertTrue(all(f < len(m) for f in plain(mesh.triangle_patch_ids())))
+        self.assertEqual(m.tessellate_count(1e-3, relative=True),
+                         (mesh.vertex_count, mesh.triangle_count))
+        two = m.tessellate(1e-3, relative=True, threads=2)
+        self.assertEqual(plain(two.triangles()), plain(mesh.triangles()))
+        again = pickle.loads(pickle.dumps(mesh))
+        self.assertEqual(again.triangle_count, mesh.triangle_count)
+
+    def test_tolerance_and_budget_errors(self):
+        m = bezsurf.Model.read(CAD_DIR / "wedge.step")
+        with self.assertRaises(ValueError):
+            m.tessellate(0.0)
+        with self.assertRaises(bezsurf.SizeError):
+            m.tessellate(1e-3, relative=True, max_triangles=10)
