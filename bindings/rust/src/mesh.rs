@@ -142,7 +142,7 @@ impl TessOptions {
         self
     }
 
-    fn raw(&self) -> sys::bs_tess_options {
+    pub(crate) fn raw(&self) -> sys::bs_tess_options {
         let mut o = std::mem::MaybeUninit::<sys::bs_tess_options>::uninit();
         // SAFETY: the library fills every field of the struct it is given.
         let mut o = unsafe {
@@ -283,7 +283,7 @@ impl std::fmt::Debug for Mesh {
     }
 }
 
-fn new_mesh(f: impl FnOnce(*mut *mut sys::bs_mesh) -> sys::bs_status) -> Result<Mesh> {
+pub(crate) fn new_mesh(f: impl FnOnce(*mut *mut sys::bs_mesh) -> sys::bs_status) -> Result<Mesh> {
     let mut out = ptr::null_mut();
     check(f(&mut out))?;
     let ptr = NonNull::new(out).expect("bezsurf returned a NULL mesh on success");

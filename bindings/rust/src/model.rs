@@ -10,6 +10,7 @@ use crate::error::{check, Error, Result};
 use crate::eval::NormalKind;
 use crate::io::c_path;
 use crate::locator::Locator;
+use crate::mesh::{new_mesh, Mesh, TessOptions};
 use crate::surface::Surface;
 use crate::sys;
 
@@ -517,6 +518,31 @@ impl std::ops::Deref for ModelLocator<'_> {
 }
 
 impl Model {
+    /// One watertight mesh of the trimmed faces (`bs_model_tessellate`, since 1.2): each model
+    /// edge sampled once and shared by the faces on both sides, so a closed shell gives a closed
+    /// mesh wound outward; every triangle within the options' tolerance of its face. Triangle
+    /// ids are face ids, corner (u, v) native face parameters. `Unsupported` for
+    /// [`TessMethod::Uniform`] and [`TessFlags::STRIPS`] (and faces without trims: tessellate
+    /// [`Model::surface`] instead); `Domain` for a tolerance that is not finite and positive;
+    /// `Size` over a budget.
+    ///
+    /// [`TessMethod::Uniform`]: crate::TessMethod::Uniform
+    /// [`TessFlags::STRIPS`]: crate::TessFlags::STRIPS
+    pub fn tessellate(&self, options: &TessOptions) -> Result<Mesh> {
+        let o = options.raw();
+        // SAFETY: self is live; o is a filled options struct; out is valid.
+        new_mesh(|out| unsafe { sys::bs_model_tessellate(self.as_ptr(), &o, out) })
+    }
+
+    /// The (vertices, triangles) [`Model::tessellate`] would give (`bs_model_tessellate_count`).
+    pub fn tessellate_count(&self, options: &TessOptions) -> Result<(usize, usize)> {
+        let o = options.raw();
+        let (mut nv, mut nt) = (0usize, 0usize);
+        // SAFETY: self is live; o is a filled options struct; both outputs are valid.
+        check(unsafe { sys::bs_model_tessellate_count(self.as_ptr(), &o, &mut nv, &mut nt) })?;
+        Ok((nv, nt))
+    }
+
     /// A locator of the model's trimmed faces, for rays ([`ModelLocator`]).
     pub fn locator(&self) -> Result<ModelLocator<'_>> {
         let mut out = std::ptr::null_mut();

@@ -908,6 +908,16 @@ extern "C" {
     /// `bs_locator_create_model` (model.h, since 1.2): a locator of a model's trimmed faces
     /// (rays only); the model must outlive it.
     pub fn bs_locator_create_model(m: *const bs_model, out: *mut *mut bs_locator) -> bs_status;
+    /// `bs_model_tessellate` (model.h, since 1.2): one watertight mesh of a model's trimmed faces.
+    pub fn bs_model_tessellate(m: *const bs_model, o: *const bs_tess_options, out: *mut *mut bs_mesh)
+        -> bs_status;
+    /// `bs_model_tessellate_count` (model.h, since 1.2).
+    pub fn bs_model_tessellate_count(
+        m: *const bs_model,
+        o: *const bs_tess_options,
+        vertices: *mut usize,
+        triangles: *mut usize,
+    ) -> bs_status;
     /// `bs_model_properties` (model.h, since 1.2).
     pub fn bs_model_properties(
         m: *const bs_model,

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use bezsurf::{ErrorKind, FaceKind, Model, NormalKind, Outputs, Ray, Surface, Trim};
+use bezsurf::{ErrorKind, FaceKind, Model, NormalKind, Outputs, Ray, Surface, TessFlags, TessMethod, TessOptions, Trim};
 
 fn cad_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/cad")
@@ -131,4 +131,26 @@ fn model_locator_hits_as_the_kernel() {
     // closest points on models are refused
     let err = loc.closest_points(&[0.0, 0.0, 100.0]).unwrap_err();
     assert_eq!(err.kind(), ErrorKind::Unsupported);
+}
+
+#[test]
+fn cone_meshes_closed_and_outward() {
+    let m = Model::read_step_file(cad_dir().join("cone.step")).unwrap();
+    let opts = TessOptions::new(TessMethod::Subdivide).tolerance(1e-3).flags(TessFlags::RELATIVE);
+    let mesh = m.tessellate(&opts).unwrap();
+    let tri = mesh.triangles();
+    let mut edges = std::collections::HashMap::new();
+    for t in tri.chunks(3) {
+        for k in 0..3 {
+            *edges.entry((t[k], t[(k + 1) % 3])).or_insert(0) += 1;
+        }
+    }
+    // closed: every directed edge once and its reverse once
+    assert!(edges.iter().all(|(&(a, b), &n)| n == 1 && edges.get(&(b, a)) == Some(&1)));
+    assert!(mesh.triangle_patch_ids().iter().all(|&f| (f as usize) < m.face_count()));
+    assert_eq!(m.tessellate_count(&opts).unwrap(), (mesh.vertex_count(), mesh.triangle_count()));
+    let uniform = TessOptions::new(TessMethod::Uniform { nu: 4, nv: 4 });
+    assert_eq!(m.tessellate(&uniform).unwrap_err().kind(), ErrorKind::Unsupported);
+    let bad = TessOptions::new(TessMethod::Subdivide).tolerance(-1.0);
+    assert_eq!(m.tessellate(&bad).unwrap_err().kind(), ErrorKind::Domain);
 }
