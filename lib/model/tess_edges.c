@@ -21,6 +21,7 @@
 #define PROJECT_STEPS 12
 #define COARSE 64          /* samples of a trim when telling the direction of a closed edge */
 #define MAX_POLE_SAMPLES 4096
+#define MAX_BREAKS 1024 /* a master's segment breaks that start intervals (more are left to refine) */
 
 static int grow(void **p, size_t *cap, size_t need, size_t size)
 {
@@ -46,13 +47,39 @@ typedef struct curve3 {
     const bs_model *m;
     size_t face;
     const bsi_curve *uv;
-    double t0, t1;
+    double t0, t1;     /* the trim's range */
+    double lo, hi;     /* the range of the parameters used: [t0, t1], or a turn from another start */
+    int wrap;          /* parameters past t1 (before t0) are a turn later (earlier): a closed trim
+                          walked from another point than its own start */
 } curve3;
+
+/* The trim's own parameter of t. */
+static double actual(const curve3 *c, double t)
+{
+    if (c->wrap && t > c->t1)
+        return t - (c->t1 - c->t0);
+    if (c->wrap && t < c->t0)
+        return t + (c->t1 - c->t0);
+    return t;
+}
+
+/* The trim's own parameter of an end of the interval from a to b (end 0: a, 1: b): at the seam
+ * of a wrapped trim, the interval's side of it (its (u, v) may differ there by a period). */
+static double interval_end(const curve3 *c, double a, double b, int end)
+{
+    double t = end ? b : a;
+    if (!c->wrap)
+        return t;
+    int up = a < b;
+    if (t == (up ? c->t1 : c->t0))
+        return end ? t : (up ? c->t0 : c->t1); /* the start of an interval leaving the seam */
+    return actual(c, t);
+}
 
 /* The trim's (u, v) at t, and its point on the face (0 when off the face). */
 static int curve_at(const curve3 *c, double t, double *uv, double *p)
 {
-    bsi_curve_eval(c->uv, t, uv);
+    bsi_curve_eval(c->uv, actual(c, t), uv);
     return bsi_face_point(c->m, c->face, uv[0], uv[1], p);
 }
 
@@ -63,6 +90,9 @@ static void curve_init(curve3 *c, const tm_job *j, size_t t)
     c->face = j->edges.trim_face[t];
     c->t0 = c->uv->axis.breaks[0];
     c->t1 = c->uv->axis.breaks[c->uv->axis.n];
+    c->lo = c->t0;
+    c->hi = c->t1;
+    c->wrap = 0;
 }
 
 /* The parameter in [lo, hi] (either order) of c's point nearest p, from guess. */
@@ -77,7 +107,7 @@ static double project(const curve3 *c, const double *p, double lo, double hi, do
     double h = 1e-7 * (c->t1 - c->t0);
     for (int it = 0; it < PROJECT_STEPS; it++) {
         double uv[2], q[3], qa[3], qb[3];
-        double sa = s - h < c->t0 ? c->t0 : s - h, sb = s + h > c->t1 ? c->t1 : s + h;
+        double sa = s - h < c->lo ? c->lo : s - h, sb = s + h > c->hi ? c->hi : s + h;
         if (!curve_at(c, s, uv, q) || !curve_at(c, sa, uv, qa) || !curve_at(c, sb, uv, qb) || sb <= sa)
             break;
         double d[3], num = 0.0, den = 0.0;
@@ -180,8 +210,8 @@ static int interval_fine(const edge_run *r, const double *pa, const double *pb, 
         mid[k] = 0.5 * (Pa[k] + Pb[k]);
     for (size_t i = 0; i < r->n; i++) {
         double ua[2], ub[2], p[3];
-        bsi_curve_eval(r->c[i].uv, pa[i], ua);
-        bsi_curve_eval(r->c[i].uv, pb[i], ub);
+        bsi_curve_eval(r->c[i].uv, interval_end(&r->c[i], pa[i], pb[i], 0), ua);
+        bsi_curve_eval(r->c[i].uv, interval_end(&r->c[i], pa[i], pb[i], 1), ub);
         if (!bsi_face_point(r->j->m, r->c[i].face, 0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1]), p) ||
             bsi_tm_dist3(p, mid) > half)
             return 0;
@@ -219,7 +249,7 @@ static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1,
     if (!curve_at(c, c->t0, uv, Q0) || !curve_at(c, c->t1, uv, Q1))
         return 0;
     double same = bsi_tm_dist3(Q0, P0) + bsi_tm_dist3(Q1, P1), other = bsi_tm_dist3(Q0, P1) + bsi_tm_dist3(Q1, P0);
-    double slack = 1e3 * r->j->merge;
+    double slack = 10.0 * r->j->merge;
     if ((same < other ? same : other) > slack)
         return 0;
     int forward = same <= other;
@@ -243,6 +273,102 @@ static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1,
     return 1;
 }
 
+/* The parameter in [lo, hi] of c's point nearest p: the nearest of COARSE samples, polished. */
+static double nearest(const curve3 *c, const double *p, double lo, double hi)
+{
+    double best = INFINITY, at = lo, step = (hi - lo) / COARSE, uv[2], q[3];
+    for (int k = 0; k <= COARSE; k++) {
+        double t = lo + step * k;
+        if (curve_at(c, t, uv, q) && bsi_tm_dist3(q, p) < best) {
+            best = bsi_tm_dist3(q, p);
+            at = t;
+        }
+    }
+    double t = project(c, p, at - step < lo ? lo : at - step, at + step > hi ? hi : at + step, at);
+    if (at == lo || at == hi) {
+        /* the ends of a closed curve are one point: the nearest may lie just inside the other */
+        double other = at == lo ? hi : lo;
+        double u = project(c, p, other == lo ? lo : hi - step, other == lo ? lo + step : hi, other);
+        double qt[3], qu[3];
+        if (curve_at(c, u, uv, qu) && (!curve_at(c, t, uv, qt) || bsi_tm_dist3(qu, p) < bsi_tm_dist3(qt, p)))
+            t = u;
+    }
+    return t;
+}
+
+/* A closed trim i that starts elsewhere on the closed master edge (files put a circle's seam
+ * where they like): walked a whole turn from the master's start, *s0 .. *s1, its parameters past
+ * its own end wrapping around. Its own start must be a sample too: *seam_master is the master's
+ * parameter there, *seam the trim's. 1, or 0 when the trim does not lie along the master. */
+static int match_rotated(edge_run *r, size_t i, const double *P0, double *s0, double *s1,
+                         double *seam_master, double *seam)
+{
+    curve3 *c = &r->c[i];
+    const curve3 *mc = &r->c[0];
+    double len = c->t1 - c->t0, slack = 10.0 * r->j->merge, uv[2], Q[3], P[3], Qs[3], Pq[3];
+    double star = nearest(c, P0, c->t0, c->t1);
+    if (!curve_at(c, star, uv, Q) || bsi_tm_dist3(Q, P0) > slack ||
+        !curve_at(mc, mc->t0 + 0.25 * (mc->t1 - mc->t0), uv, P) || !curve_at(c, c->t0, uv, Qs))
+        return 0;
+    double d = nearest(c, P, c->t0, c->t1) - star;
+    int forward = (d < 0.0 ? d + len : d) < 0.5 * len;
+    double tq = nearest(mc, Qs, mc->t0, mc->t1);
+    if (!curve_at(mc, tq, uv, Pq) || bsi_tm_dist3(Pq, Qs) > slack || tq <= mc->t0 || tq >= mc->t1)
+        return 0;
+    c->wrap = 1;
+    *s0 = star;
+    *s1 = forward ? star + len : star - len;
+    c->lo = fmin(*s0, *s1);
+    c->hi = fmax(*s0, *s1);
+    *seam_master = tq;
+    *seam = forward ? c->t1 : c->t0;
+    return 1;
+}
+
+typedef struct param_vid {
+    double t;
+    uint32_t vid;
+} param_vid;
+
+static int cmp_param(const void *a, const void *b)
+{
+    double x = ((const param_vid *)a)->t, y = ((const param_vid *)b)->t;
+    return (x > y) - (x < y);
+}
+
+/* A wrapped trim's samples in its own parameters, ascending, its seam sample at both ends. */
+static bs_status store_wrapped(tm_edges *e, const edge_run *r, size_t i, tm_trim *t)
+{
+    size_t n = r->ns - 1; /* the master's last sample is its first again */
+    param_vid *pv = malloc((n + 1) * sizeof(param_vid));
+    if (pv == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t k = 0; k < n; k++) {
+        pv[k].t = actual(&r->c[i], r->par[k * MAX_USES + i]);
+        pv[k].vid = r->vid[k];
+    }
+    qsort(pv, n, sizeof(param_vid), cmp_param);
+    t->first = e->nsample;
+    t->count = n + 1;
+    const curve3 *c = &r->c[i];
+    int seam_last = pv[n - 1].t >= c->t1; /* else the seam is first, at t0 */
+    if (!seam_last) {
+        e->param[e->nsample] = c->t0;
+        e->vid[e->nsample++] = pv[0].vid;
+    } else {
+        e->param[e->nsample] = c->t0;
+        e->vid[e->nsample++] = pv[n - 1].vid;
+    }
+    for (size_t k = seam_last ? 0 : 1; k < (seam_last ? n - 1 : n); k++) {
+        e->param[e->nsample] = pv[k].t;
+        e->vid[e->nsample++] = pv[k].vid;
+    }
+    e->param[e->nsample] = c->t1;
+    e->vid[e->nsample++] = seam_last ? pv[n - 1].vid : pv[0].vid;
+    free(pv);
+    return BS_OK;
+}
+
 /* Store the run's samples into each of its trims, ascending in the trim's own parameter. */
 static bs_status store(tm_job *j, edge_run *r)
 {
@@ -254,8 +380,14 @@ static bs_status store(tm_job *j, edge_run *r)
         if (q == NULL)
             return BS_ERR_NO_MEMORY;
         e->vid = q;
-        int descending = r->ns > 1 && r->par[(r->ns - 1) * MAX_USES + i] < r->par[i];
         tm_trim *t = &e->trim[r->trim[i]];
+        if (r->c[i].wrap) {
+            bs_status st = store_wrapped(e, r, i, t);
+            if (st != BS_OK)
+                return st;
+            continue;
+        }
+        int descending = r->ns > 1 && r->par[(r->ns - 1) * MAX_USES + i] < r->par[i];
         t->first = e->nsample;
         t->count = r->ns;
         for (size_t k = 0; k < r->ns; k++) {
@@ -336,6 +468,13 @@ static int is_pole(const tm_job *j, size_t t, double *P)
     return 1;
 }
 
+/* A master parameter where a sample must be: a break of its segments (trim 0), or where closed
+ * trim `trim` that starts elsewhere starts (its parameter there: seam). */
+typedef struct edge_stop {
+    double t, seam;
+    size_t trim;
+} edge_stop;
+
 /* Sample the edge whose trims are trims[0 .. n) (the first the master). */
 static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
 {
@@ -354,7 +493,11 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
     double par0[MAX_USES], par1[MAX_USES];
     par0[0] = mc->t0;
     par1[0] = mc->t1;
-    /* the other trims whose ends match; those that do not are sampled on their own */
+    /* the other trims whose ends match; those that do not are sampled on their own. stop[]: the
+     * master's parameters where a sample must be (its segments' breaks, and the starts of closed
+     * trims that start elsewhere: on those, the trim's parameter there is `seam`) */
+    edge_stop stop[MAX_USES + MAX_BREAKS];
+    size_t nstop = 0;
     size_t alone[MAX_USES * 4];
     size_t nalone = 0;
     for (size_t k = 1; k < n; k++) {
@@ -365,7 +508,10 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
         }
         curve_init(&r.c[r.n], j, trims[k]);
         double s0, s1;
-        if (match_ends(&r, r.n, P0, P1, closed, &s0, &s1)) {
+        if (match_ends(&r, r.n, P0, P1, closed, &s0, &s1) ||
+            (closed && match_rotated(&r, r.n, P0, &s0, &s1, &stop[nstop].t, &stop[nstop].seam))) {
+            if (r.c[r.n].wrap)
+                stop[nstop++].trim = r.n;
             r.trim[r.n] = trims[k];
             par0[r.n] = s0;
             par1[r.n] = s1;
@@ -384,24 +530,35 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
      * edge of one segment, so that it is never a two-gon) */
     const bsi_axis *ax = &mc->uv->axis;
     int forced = closed && ax->n < 2 ? 2 : 1;
+    for (size_t b = 1; b < ax->n && nstop < sizeof stop / sizeof stop[0]; b++) {
+        stop[nstop].t = ax->breaks[b];
+        stop[nstop++].trim = 0;
+    }
+    for (size_t a = 1; a < nstop; a++) /* ascending (insertion: a few stops) */
+        for (size_t b = a; b > 0 && stop[b].t < stop[b - 1].t; b--) {
+            edge_stop x = stop[b];
+            stop[b] = stop[b - 1];
+            stop[b - 1] = x;
+        }
     double pa[MAX_USES], Pa[3];
     memcpy(pa, par0, sizeof pa);
     memcpy(Pa, P0, sizeof Pa);
-    for (size_t s = 1; s <= ax->n && st == BS_OK; s++) {
+    for (size_t s = 0; s <= nstop && st == BS_OK; s++) {
         double pb[MAX_USES], Pb[3], uv[2];
         uint32_t vb = v1;
-        if (s == ax->n) {
+        if (s == nstop) {
             memcpy(pb, par1, sizeof pb);
             memcpy(Pb, P1, sizeof Pb);
         } else {
-            pb[0] = ax->breaks[s];
+            pb[0] = stop[s].t;
             if (!curve_at(mc, pb[0], uv, Pb)) {
                 st = BS_ERR_DOMAIN;
                 break;
             }
             for (size_t i = 1; i < r.n; i++)
-                pb[i] = project(&r.c[i], Pb, pa[i], par1[i],
-                                pa[i] + (par1[i] - pa[i]) * (pb[0] - pa[0]) / (par1[0] - pa[0]));
+                pb[i] = i == stop[s].trim ? stop[s].seam
+                                          : project(&r.c[i], Pb, pa[i], par1[i],
+                                                    pa[i] + (par1[i] - pa[i]) * (pb[0] - pa[0]) / (par1[0] - pa[0]));
             st = new_vertex(&j->edges, Pb, (uint32_t)mc->face, uv, &vb);
         }
         if (st == BS_OK)

@@ -2,7 +2,7 @@
 
 import ctypes
 import os
-from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Callable, Dict, List, Optional, Tuple, Union, cast
 
 from . import _args as A
 from . import _buffers as B
@@ -15,6 +15,7 @@ from ._lib import LIB, CTessOptions
 if TYPE_CHECKING:
     import numpy.typing as npt
 
+    from .model import Model
     from .surface import Surface
 
 #: Export formats of :meth:`Mesh.write` by name (Format members and their names work too).
@@ -104,14 +105,16 @@ class Mesh(Handle):
     """
 
     _destroy = LIB.bs_mesh_destroy
-    _recipe: Tuple["Surface", str, Tuple[Any, ...]]
+    _recipe: Tuple[Union["Surface", "Model"], str, Tuple[Any, ...]]
 
     def __init__(self) -> None:
         raise TypeError("meshes are made by Surface.tessellate() and Surface.tessellate_adaptive()")
 
     @classmethod
-    def _tessellate(cls, surface: "Surface", method: str, args: Tuple[Any, ...]) -> "Mesh":
-        """Tessellate ``surface`` (a copy the mesh keeps as its recipe)."""
+    def _tessellate(cls, surface: Union["Surface", "Model"], method: str,
+                    args: Tuple[Any, ...]) -> "Mesh":
+        """Tessellate ``surface`` (a copy the mesh keeps as its recipe): a Surface, or a Model
+        for method "model"."""
         out = ctypes.c_void_p()
         try:
             if method == "uniform":
@@ -129,7 +132,7 @@ class Mesh(Handle):
         except (DomainError, SizeError) as exc:
             if method == "model":
                 raise
-            raise explain_tessellation(exc, surface, method, args) from None
+            raise explain_tessellation(exc, cast("Surface", surface), method, args) from None
         m = cls.__new__(cls)
         m._adopt(out.value)  # type: ignore[arg-type]
         m._recipe = (surface, method, args)
