@@ -42,6 +42,9 @@ typedef struct tm_edges {
     size_t nvert, vert_cap;
     uint32_t *model;       /* the model vertices (edge ends, poles), merged within j->merge */
     size_t nmodel, model_cap;
+    double *grade;         /* NULL, or per model vertex (in the order of model[]) the length of
+                              the shortest segment that ends there: no segment of an edge at
+                              distance d from its end may be longer than grade + d */
     double *param;
     uint32_t *vid;
     size_t nsample, sample_cap;
