@@ -909,8 +909,11 @@ extern "C" {
     /// (rays only); the model must outlive it.
     pub fn bs_locator_create_model(m: *const bs_model, out: *mut *mut bs_locator) -> bs_status;
     /// `bs_model_tessellate` (model.h, since 1.2): one watertight mesh of a model's trimmed faces.
-    pub fn bs_model_tessellate(m: *const bs_model, o: *const bs_tess_options, out: *mut *mut bs_mesh)
-        -> bs_status;
+    pub fn bs_model_tessellate(
+        m: *const bs_model,
+        o: *const bs_tess_options,
+        out: *mut *mut bs_mesh,
+    ) -> bs_status;
     /// `bs_model_tessellate_count` (model.h, since 1.2).
     pub fn bs_model_tessellate_count(
         m: *const bs_model,

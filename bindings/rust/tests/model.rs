@@ -3,7 +3,9 @@
 
 use std::path::PathBuf;
 
-use bezsurf::{ErrorKind, FaceKind, Model, NormalKind, Outputs, Ray, Surface, TessFlags, TessMethod, TessOptions, Trim};
+use bezsurf::{
+    ErrorKind, FaceKind, Model, NormalKind, Outputs, Ray, Surface, TessFlags, TessMethod, TessOptions, Trim,
+};
 
 fn cad_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../data/cad")
