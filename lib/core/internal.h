@@ -180,6 +180,11 @@ typedef bs_status (*bsi_task)(void *ctx, size_t item, size_t worker);
  * status of the lowest failing item. */
 bs_status bsi_parallel(size_t workers, size_t n, bsi_task fn, void *ctx);
 
+/* ---- Growing arrays (lib/core/grow.c) ---- */
+/* Make room for `need` elements of `size` bytes in *p (capacity *cap, doubled as needed): 1, or
+ * 0 when the size overflows or realloc fails (*p and *cap unchanged). */
+int bsi_grow_array(void **p, size_t *cap, size_t need, size_t size);
+
 /* ---- Normals at single points for the layers above (lib/core/normal.c) ---- */
 
 /* 1 for a net whose largest coordinate lies within [2^-lim, 2^lim] (or is 0), else the power of

@@ -14,21 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-int bsi_cdt_grow(void **p, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap)
-        return 1;
-    size_t n = *cap ? *cap : 16;
-    while (n < need)
-        n *= 2;
-    void *q = realloc(*p, n * size);
-    if (q == NULL)
-        return 0;
-    *p = q;
-    *cap = n;
-    return 1;
-}
-
 static int64_t orient_q(const int64_t *a, const int64_t *b, const int64_t *p)
 {
     /* |differences| < 2^31: each product below 2^62, their difference below 2^63 */
@@ -62,13 +47,9 @@ static bs_status new_point(bsi_cdt *c, int64_t x, int64_t y, uint32_t *id)
 {
     if (c->np >= UINT32_MAX - 1)
         return BS_ERR_SIZE;
-    if (!bsi_cdt_grow((void **)&c->q, &c->pcap, c->np + 1, 2 * sizeof(int64_t)))
+    if (!bsi_grow_array((void **)&c->q, &c->pcap, c->np + 1, 2 * sizeof(int64_t)) ||
+        !bsi_grow_array((void **)&c->vtri, &c->vcap, c->np + 1, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
-    size_t cap = c->pcap;
-    void *vt = realloc(c->vtri, cap * sizeof(uint32_t));
-    if (vt == NULL)
-        return BS_ERR_NO_MEMORY;
-    c->vtri = vt;
     c->q[2 * c->np] = x;
     c->q[2 * c->np + 1] = y;
     c->vtri[c->np] = BSI_CDT_NONE;
@@ -83,7 +64,7 @@ bs_status bsi_cdt_new_tri(bsi_cdt *c, uint32_t *id)
     } else {
         if (c->nt >= UINT32_MAX - 1)
             return BS_ERR_SIZE;
-        if (!bsi_cdt_grow((void **)&c->t, &c->tcap, c->nt + 1, sizeof(bsi_cdt_tri)))
+        if (!bsi_grow_array((void **)&c->t, &c->tcap, c->nt + 1, sizeof(bsi_cdt_tri)))
             return BS_ERR_NO_MEMORY;
         *id = (uint32_t)c->nt++;
     }
@@ -93,7 +74,7 @@ bs_status bsi_cdt_new_tri(bsi_cdt *c, uint32_t *id)
 
 bs_status bsi_cdt_retire(bsi_cdt *c, uint32_t t)
 {
-    if (!bsi_cdt_grow((void **)&c->spare, &c->spare_cap, c->nspare + 1, sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&c->spare, &c->spare_cap, c->nspare + 1, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     c->t[t].dead = 1;
     c->spare[c->nspare++] = t;
@@ -167,7 +148,7 @@ static uint32_t locate(const bsi_cdt *c, uint32_t t, const int64_t *p, int guard
 
 static int add_edge(bsi_cdt *c, uint32_t from, uint32_t to, uint32_t outer, uint32_t fixed)
 {
-    if (!bsi_cdt_grow((void **)&c->edge, &c->edge_cap, 4 * (c->nedge + 1), sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&c->edge, &c->edge_cap, 4 * (c->nedge + 1), sizeof(uint32_t)))
         return 0;
     uint32_t *e = c->edge + 4 * c->nedge++;
     e[0] = from;
@@ -238,7 +219,7 @@ void bsi_cdt_link_fresh(bsi_cdt *c)
 
 int bsi_cdt_push_cav(bsi_cdt *c, uint32_t t)
 {
-    if (!bsi_cdt_grow((void **)&c->cav, &c->cav_cap, c->ncav + 1, sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&c->cav, &c->cav_cap, c->ncav + 1, sizeof(uint32_t)))
         return 0;
     c->cav[c->ncav++] = t;
     c->t[t].mark = c->stamp;
@@ -351,7 +332,7 @@ bs_status bsi_cdt_insert(bsi_cdt *c, int64_t x, int64_t y, int mode, uint32_t hi
     bs_status st = new_point(c, x, y, &pid);
     if (st != BS_OK)
         return st;
-    if (!bsi_cdt_grow((void **)&c->fresh, &c->fresh_cap, c->nedge, sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&c->fresh, &c->fresh_cap, c->nedge, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     c->nfresh = 0;
     for (size_t e = 0; e < c->nedge; e++) {

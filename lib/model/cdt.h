@@ -35,7 +35,7 @@ typedef struct bsi_cdt_tri {
 typedef struct bsi_cdt {
     int64_t *q;              /* 2 per point */
     uint32_t *vtri;          /* a live triangle holding each point */
-    size_t np, pcap;
+    size_t np, pcap, vcap;
     bsi_cdt_tri *t;
     size_t nt, tcap;
     uint32_t *spare;         /* dead triangle slots */

@@ -41,7 +41,7 @@ static bs_status fill_polygon(bsi_cdt *c, uint32_t a, uint32_t b, const uint32_t
     bs_status st = bsi_cdt_new_tri(c, &t);
     if (st != BS_OK)
         return st;
-    if (!bsi_cdt_grow((void **)&c->fresh, &c->fresh_cap, c->nfresh + 1, sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&c->fresh, &c->fresh_cap, c->nfresh + 1, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     bsi_cdt_tri *T = &c->t[t];
     T->v[0] = a;
@@ -94,7 +94,7 @@ bs_status bsi_cdt_force(bsi_cdt *c, uint32_t a, uint32_t b)
     }
     /* walk along the segment, collecting the crossed triangles and the chains on both sides */
     size_t need = 2 * (c->nt + 2);
-    if (!bsi_cdt_grow((void **)&c->chain, &c->chain_cap, need, sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&c->chain, &c->chain_cap, need, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     uint32_t *upper = c->chain, *lower = c->chain + c->nt + 2;
     size_t nup = 0, nlow = 0;

@@ -6,12 +6,12 @@
 #ifndef BEZSURF_MODEL_CDT_INTERNAL_H
 #define BEZSURF_MODEL_CDT_INTERNAL_H
 
+#include "core/internal.h"
 #include "model/cdt.h"
 
 #define NEXT(i) (((i) + 1) % 3)
 #define PREV(i) (((i) + 2) % 3)
 
-int bsi_cdt_grow(void **p, size_t *cap, size_t need, size_t size);
 int bsi_cdt_orient3(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t p);
 long double bsi_cdt_incircle(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t d, const int64_t *p);
 bs_status bsi_cdt_new_tri(bsi_cdt *c, uint32_t *id);

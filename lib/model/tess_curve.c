@@ -10,21 +10,6 @@
 
 #define PROJECT_STEPS 12
 
-int bsi_tm_grow(void **p, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap)
-        return 1;
-    size_t n = *cap ? *cap : 64;
-    while (n < need)
-        n *= 2;
-    void *q = realloc(*p, n * size);
-    if (q == NULL)
-        return 0;
-    *p = q;
-    *cap = n;
-    return 1;
-}
-
 double bsi_tm_dist3(const double *a, const double *b)
 {
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
@@ -117,7 +102,7 @@ bs_status bsi_tm_model_vertex(tm_job *j, const double *p, uint32_t face, const d
             *grade = e->grade != NULL ? e->grade[k] : INFINITY;
             return BS_OK;
         }
-    if (!bsi_tm_grow((void **)&e->model, &e->model_cap, e->nmodel + 1, sizeof(uint32_t)))
+    if (!bsi_grow_array((void **)&e->model, &e->model_cap, e->nmodel + 1, sizeof(uint32_t)))
         return BS_ERR_NO_MEMORY;
     bs_status st = bsi_tm_new_vertex(e, p, face, uv, id);
     *grade = e->grade != NULL ? e->grade[e->nmodel] : INFINITY;
@@ -130,7 +115,7 @@ bs_status bsi_tm_new_vertex(tm_edges *e, const double *p, uint32_t face, const d
 {
     if (e->nvert >= TM_INNER - 1)
         return BS_ERR_SIZE;
-    if (!bsi_tm_grow((void **)&e->vert, &e->vert_cap, e->nvert + 1, sizeof(tm_vertex)))
+    if (!bsi_grow_array((void **)&e->vert, &e->vert_cap, e->nvert + 1, sizeof(tm_vertex)))
         return BS_ERR_NO_MEMORY;
     tm_vertex *v = &e->vert[e->nvert];
     memcpy(v->p, p, sizeof v->p);

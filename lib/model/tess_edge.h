@@ -19,7 +19,6 @@ typedef struct curve3 {
                           walked from another point than its own start */
 } curve3;
 
-int bsi_tm_grow(void **p, size_t *cap, size_t need, size_t size);
 /* The trim's own parameter of t (wrapped a turn for a wrapped trim). */
 double bsi_tm_actual(const curve3 *c, double t);
 /* The trim's own parameter of an end of the interval from a to b (end 0: a, 1: b). */

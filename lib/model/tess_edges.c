@@ -41,7 +41,7 @@ typedef struct edge_run {
 
 static bs_status add_sample(edge_run *r, const double *par, uint32_t vid)
 {
-    if (!bsi_tm_grow((void **)&r->par, &r->cap, r->ns + 1, MAX_USES * sizeof(double)))
+    if (!bsi_grow_array((void **)&r->par, &r->cap, r->ns + 1, MAX_USES * sizeof(double)))
         return BS_ERR_NO_MEMORY;
     size_t cap = r->cap;
     void *q = realloc(r->vid, cap * sizeof(uint32_t));
@@ -218,7 +218,7 @@ static bs_status store(tm_job *j, edge_run *r)
 {
     tm_edges *e = &j->edges;
     for (size_t i = 0; i < r->n; i++) {
-        if (!bsi_tm_grow((void **)&e->param, &e->sample_cap, e->nsample + r->ns, sizeof(double)))
+        if (!bsi_grow_array((void **)&e->param, &e->sample_cap, e->nsample + r->ns, sizeof(double)))
             return BS_ERR_NO_MEMORY;
         void *q = realloc(e->vid, e->sample_cap * sizeof(uint32_t));
         if (q == NULL)

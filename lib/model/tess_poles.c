@@ -50,7 +50,7 @@ bs_status bsi_tm_sample_pole(tm_job *j, size_t t, const double *P)
     if (st != BS_OK)
         return st;
     tm_edges *e = &j->edges;
-    if (!bsi_tm_grow((void **)&e->param, &e->sample_cap, e->nsample + n + 1, sizeof(double)))
+    if (!bsi_grow_array((void **)&e->param, &e->sample_cap, e->nsample + n + 1, sizeof(double)))
         return BS_ERR_NO_MEMORY;
     void *q = realloc(e->vid, e->sample_cap * sizeof(uint32_t));
     if (q == NULL)
