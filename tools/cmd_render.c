@@ -30,7 +30,8 @@ static const char usage[] =
     "      --up y|z          the model's up axis (default z; y for the built-in teacup and teaspoon)\n"
     "  -r, --relative F      tessellation tolerance as a fraction of the model's size (default 0.0002)\n"
     "  -m, --method M        tessellation: per-patch (default) or subdivide\n"
-    "      --wire            draw the triangles' edges over the surface\n"
+    "      --wire            draw the triangles' edges over the surface (a model file: its\n"
+    "                        watertight mesh within -r, each triangle shaded flat)\n"
     "      --faces           colour each face of a model by its surface kind (legend on the right),\n"
     "                        the faces' boundaries dark. A model file (STEP, IGES, OBJ) is drawn\n"
     "                        with each face cut at its trim loops (except with --curvature,\n"
@@ -300,7 +301,7 @@ static int face_outwards(const double *pos, double *nrm, size_t nv, uint32_t *tr
 static int draw_mesh(const render_opts *o, const bs_surface *s, raster *r, size_t *ntri, curvature_range *cr)
 {
     if (o->md != NULL && o->md->model != NULL)
-        return model_draw_faces(o->md, r, o->unit, o->color, o->wire, o->budget, ntri);
+        return model_draw_faces(o->md, r, o->unit, o->color, o->wire, o->rel, o->budget, ntri);
     bs_tess_options to;
     bs_tess_options_init(&to);
     to.method = o->method;

@@ -403,9 +403,85 @@ static void find_box_sides(const bs_model *m, uint32_t p, const bs_face_info *fi
     }
 }
 
-int model_draw_faces(model_draw *md, raster *r, double unit, const double rgb[3], int wire,
+/* The model's watertight mesh (bs_model_tessellate within rel of its size), each triangle
+ * shaded flat (a vertex on a sharp edge has one normal) and its edges drawn. */
+static int draw_mesh(model_draw *md, raster *r, double unit, const double rgb[3], double rel, size_t budget,
+                     size_t *ntri)
+{
+    bs_tess_options to;
+    bs_tess_options_init(&to);
+    to.method = BS_TESS_SUBDIVIDE;
+    to.flags = BS_TESS_RELATIVE;
+    to.tolerance = rel;
+    to.max_triangles = budget;
+    bs_mesh *mesh = NULL;
+    bs_status st = bs_model_tessellate(md->model, &to, &mesh);
+    if (st == BS_ERR_SIZE)
+        return cli_fail("render", CLI_INPUT, "the mesh would have more triangles than the budget of %zu (--max-triangles N)",
+                        budget);
+    if (st != BS_OK)
+        return cli_fail("render", CLI_INPUT, "the model's mesh: %s", bs_status_string(st));
+    size_t nv = bs_mesh_vertex_count(mesh), nt = bs_mesh_triangle_count(mesh);
+    double *xyz = malloc(3 * nv * sizeof(double) + 1);
+    uint32_t *tri = malloc(3 * nt * sizeof(uint32_t) + 1), *face = malloc(nt * sizeof(uint32_t) + 1);
+    int rc = xyz && tri && face ? CLI_OK : cli_fail("render", CLI_INTERNAL, "out of memory");
+    bs_view pv[3] = {{xyz, nv, 3 * sizeof(double)}, {xyz + 1, nv, 3 * sizeof(double)}, {xyz + 2, nv, 3 * sizeof(double)}};
+    if (rc == CLI_OK && (bs_mesh_copy_positions(mesh, pv) != BS_OK || bs_mesh_copy_triangles(mesh, tri, 3 * nt) != BS_OK ||
+                         bs_mesh_copy_triangle_patch_ids(mesh, face, nt) != BS_OK))
+        rc = cli_fail("render", CLI_INTERNAL, "the mesh could not be read");
+    draw_out o;
+    memset(&o, 0, sizeof o);
+    o.r = r;
+    o.wire = 1;
+    double color[3];
+    o.color = color;
+    for (size_t t = 0; rc == CLI_OK && t < nt; t++) {
+        if (t == 0 || face[t] != face[t - 1]) { /* a face's triangles are together */
+            flush(&o);
+            bs_face_info fi;
+            fi.size = sizeof fi;
+            if (md->faces && bs_model_face_info(md->model, face[t], &fi) == BS_OK) {
+                model_draw_kind_color(fi.kind, color);
+                md->kinds |= 1u << (fi.kind >= 0 && fi.kind < 9 ? fi.kind : 0);
+            } else {
+                memcpy(color, rgb, sizeof color);
+            }
+        }
+        double p[3][3], n[3], e1[3], e2[3];
+        for (int k = 0; k < 3; k++)
+            for (int c = 0; c < 3; c++)
+                p[k][c] = xyz[3 * (size_t)tri[3 * t + (size_t)k] + (size_t)c] * unit;
+        for (int c = 0; c < 3; c++) {
+            e1[c] = p[1][c] - p[0][c];
+            e2[c] = p[2][c] - p[0][c];
+        }
+        n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+        n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+        n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+        double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (int c = 0; c < 3; c++)
+            n[c] = len > 0.0 ? n[c] / len : (c == 2);
+        const double *pp[3] = {p[0], p[1], p[2]}, *nn[3] = {n, n, n};
+        if (emit_triangle(&o, pp, nn) != 0)
+            rc = cli_fail("render", CLI_INTERNAL, "out of memory");
+    }
+    flush(&o);
+    *ntri = o.drawn;
+    free(o.tri_pos);
+    free(o.tri_nrm);
+    free(o.seg);
+    free(xyz);
+    free(tri);
+    free(face);
+    bs_mesh_destroy(mesh);
+    return rc;
+}
+
+int model_draw_faces(model_draw *md, raster *r, double unit, const double rgb[3], int wire, double rel,
                      size_t budget, size_t *ntri)
 {
+    if (wire)
+        return draw_mesh(md, r, unit, rgb, rel, budget, ntri);
     const bs_model *m = md->model;
     const bs_surface *s = bs_model_surface(m);
     size_t np = bs_surface_count(s), nf = bs_model_face_count(m);

@@ -23,10 +23,11 @@ void model_draw_close(model_draw *md);
 void model_draw_kind_color(int kind, double rgb[3]);
 
 /* Draw the model's trimmed faces into r (framed for the model's coordinates times unit): in rgb,
- * or by kind with md->faces; with wire the triangles' edges. About one triangle per two pixels of
- * the picture (from 20000 to 300000), budget at most (0: no budget); *ntri receives the count
+ * or by kind with md->faces. About one triangle per two pixels of the picture (from 20000 to
+ * 300000), budget at most (0: no budget); with wire, instead, the model's watertight mesh within
+ * rel of its size (bs_model_tessellate) with its triangles' edges. *ntri receives the count
  * drawn. CLI_OK or the exit code after a message. */
-int model_draw_faces(model_draw *md, raster *r, double unit, const double rgb[3], int wire,
+int model_draw_faces(model_draw *md, raster *r, double unit, const double rgb[3], int wire, double rel,
                      size_t budget, size_t *ntri);
 
 /* Width of the legend strip on the right of a w x h picture (0 without --faces or when too

@@ -90,6 +90,13 @@ has out ", not closed" "block-brep.igs: its known crack reported (tests/model/te
 expect 1 "tessellate a model with -u" -- "$tool" tessellate -u 4 -o "$work/u.obj" "$cad/cone.step"
 check "[ ! -e '$work/u.obj' ]" "nothing written after -u on a model"
 
+# render --wire of a model: its watertight mesh drawn (the triangle count of tessellate)
+expect 0 "render --wire of the cone" -- "$tool" render --wire -r 1e-3 --size 200x150 -o "$work/cone-wire.png" "$cad/cone.step"
+expect 0 "tessellate the cone at the same tolerance" -- "$tool" tessellate -r 1e-3 -o "$work/cone-wire.obj" "$cad/cone.step"
+n=$(sed -n 's/.* \([0-9]*\) triangles.*/\1/p' "$work/out")
+expect 0 "render --wire again" -- "$tool" render --wire -r 1e-3 --size 200x150 -o "$work/cone-wire.png" "$cad/cone.step"
+has out ", $n triangles" "render --wire draws the $n triangles of the model's mesh"
+
 # errors
 printf 'ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT(%s,(0.,0.,0.);\nENDSEC;\nEND-ISO-10303-21;\n' "''" \
     > "$work/bad.step"
