@@ -23,19 +23,19 @@ static int64_t orient_q(const int64_t *a, const int64_t *b, const int64_t *p)
 
 int bsi_cdt_orient(const bsi_cdt *c, uint32_t a, uint32_t b, const int64_t *p)
 {
-    int64_t d = orient_q(c->q + 2 * a, c->q + 2 * b, p);
+    int64_t d = orient_q(c->q + 2 * (size_t)a, c->q + 2 * (size_t)b, p);
     return (d > 0) - (d < 0);
 }
 
 int bsi_cdt_orient3(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t p)
 {
-    return bsi_cdt_orient(c, a, b, c->q + 2 * p);
+    return bsi_cdt_orient(c, a, b, c->q + 2 * (size_t)p);
 }
 
 /* > 0 when p is inside the circle through the counter-clockwise a, b, c. */
 long double bsi_cdt_incircle(const bsi_cdt *c, uint32_t a, uint32_t b, uint32_t d, const int64_t *p)
 {
-    const int64_t *pa = c->q + 2 * a, *pb = c->q + 2 * b, *pd = c->q + 2 * d;
+    const int64_t *pa = c->q + 2 * (size_t)a, *pb = c->q + 2 * (size_t)b, *pd = c->q + 2 * (size_t)d;
     long double ax = (long double)(pa[0] - p[0]), ay = (long double)(pa[1] - p[1]);
     long double bx = (long double)(pb[0] - p[0]), by = (long double)(pb[1] - p[1]);
     long double dx = (long double)(pd[0] - p[0]), dy = (long double)(pd[1] - p[1]);
@@ -313,7 +313,7 @@ bs_status bsi_cdt_insert(bsi_cdt *c, int64_t x, int64_t y, int mode, uint32_t hi
     }
     const bsi_cdt_tri *T0 = &c->t[t0];
     for (int i = 0; i < 3; i++)
-        if (c->q[2 * T0->v[i]] == x && c->q[2 * T0->v[i] + 1] == y) {
+        if (c->q[2 * (size_t)T0->v[i]] == x && c->q[2 * (size_t)T0->v[i] + 1] == y) {
             *id = T0->v[i];
             return *outcome = BSI_CDT_EXISTS, BS_OK;
         }

@@ -35,7 +35,7 @@ static bs_status fill_polygon(bsi_cdt *c, uint32_t a, uint32_t b, const uint32_t
         return BS_OK;
     size_t ci = 0;
     for (size_t j = 1; j < k; j++)
-        if (bsi_cdt_incircle(c, a, b, chain[ci], c->q + 2 * chain[j]) > 0.0L)
+        if (bsi_cdt_incircle(c, a, b, chain[ci], c->q + 2 * (size_t)chain[j]) > 0.0L)
             ci = j;
     uint32_t t;
     bs_status st = bsi_cdt_new_tri(c, &t);
@@ -58,7 +58,7 @@ bs_status bsi_cdt_force(bsi_cdt *c, uint32_t a, uint32_t b)
 {
     if (a == b)
         return BS_OK;
-    const int64_t *qa = c->q + 2 * a, *qb = c->q + 2 * b;
+    const int64_t *qa = c->q + 2 * (size_t)a, *qb = c->q + 2 * (size_t)b;
     /* the triangle of a's fan that the segment leaves a through */
     uint32_t t = c->vtri[a];
     size_t guard = c->nt + 8;
@@ -78,7 +78,7 @@ bs_status bsi_cdt_force(bsi_cdt *c, uint32_t a, uint32_t b)
         int oc = bsi_cdt_orient3(c, a, cv, b), od = bsi_cdt_orient3(c, a, dv, b);
         for (int s = 0; s < 2; s++) {
             uint32_t w = s ? dv : cv;
-            const int64_t *qw = c->q + 2 * w;
+            const int64_t *qw = c->q + 2 * (size_t)w;
             if ((s ? od : oc) == 0 && w > 2 &&
                 (qw[0] - qa[0]) * (qb[0] - qa[0]) + (qw[1] - qa[1]) * (qb[1] - qa[1]) > 0) {
                 bs_status st = bsi_cdt_force(c, a, w);

@@ -183,6 +183,8 @@ static int cmp_param(const void *a, const void *b)
 /* A wrapped trim's samples in its own parameters, ascending, its seam sample at both ends. */
 static bs_status store_wrapped(tm_edges *e, const edge_run *r, size_t i, tm_trim *t)
 {
+    if (r->ns < 3)
+        return BS_ERR_DOMAIN; /* a closed edge has at least its ends and a forced middle */
     size_t n = r->ns - 1; /* the master's last sample is its first again */
     param_vid *pv = malloc((n + 1) * sizeof(param_vid));
     if (pv == NULL)
@@ -265,7 +267,7 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
     if (!bsi_tm_curve_at(mc, mc->t0, uv0, P0) || !bsi_tm_curve_at(mc, mc->t1, uv1, P1))
         return BS_ERR_DOMAIN;
     int closed = bsi_tm_dist3(P0, P1) <= j->merge;
-    double par0[MAX_USES], par1[MAX_USES];
+    double par0[MAX_USES] = {0.0}, par1[MAX_USES] = {0.0};
     par0[0] = mc->t0;
     par1[0] = mc->t1;
     /* the other trims whose ends match; those that do not are sampled on their own. stop[]: the
@@ -283,6 +285,8 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
         }
         bsi_tm_curve_init(&r.c[r.n], j, trims[k]);
         double s0, s1;
+        stop[nstop].t = stop[nstop].seam = 0.0;
+        stop[nstop].trim = 0;
         if (match_ends(&r, r.n, P0, P1, closed, &s0, &s1) ||
             (closed && match_rotated(&r, r.n, P0, &s0, &s1, &stop[nstop].t, &stop[nstop].seam))) {
             if (r.c[r.n].wrap)
@@ -295,7 +299,7 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
             alone[nalone++] = trims[k];
         }
     }
-    uint32_t v0, v1;
+    uint32_t v0 = TM_NONE, v1 = TM_NONE;
     st = bsi_tm_model_vertex(j, P0, (uint32_t)mc->face, uv0, &v0, &r.grade[0]);
     if (st == BS_OK)
         st = bsi_tm_model_vertex(j, P1, (uint32_t)mc->face, uv1, &v1, &r.grade[1]);

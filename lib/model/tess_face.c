@@ -410,7 +410,7 @@ static bs_status harvest(face_run *r, tm_face_mesh *fm)
     }
     for (size_t i = 3; i < c->np; i++)
         if (local[i] != TM_NONE) {
-            double *o = fm->inner + 5 * local[i];
+            double *o = fm->inner + 5 * (size_t)local[i];
             o[0] = r->pt[i].uv[0];
             o[1] = r->pt[i].uv[1];
             memcpy(o + 2, r->pt[i].p, 3 * sizeof(double));

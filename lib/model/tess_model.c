@@ -62,17 +62,19 @@ static bs_status run(const bs_model *m, const bs_tess_options *o, tm_job *j, cou
     j->tol = (o->flags & BS_TESS_RELATIVE) ? o->tolerance * diag : o->tolerance;
     j->merge = MERGE * diag;
     j->max_points = o->max_vertices;
+    j->face = calloc(m->nface ? m->nface : 1, sizeof(tm_face_mesh));
+    c->inner0 = calloc(m->nface + 1, sizeof(size_t));
+    if (j->face == NULL || c->inner0 == NULL)
+        return BS_ERR_NO_MEMORY;
+    if (m->nface == 0)
+        return BS_OK; /* an empty mesh (its diagonal, and so a relative tolerance, is 0) */
     if (!(j->tol > 0.0) || !isfinite(j->tol))
-        return m->nface == 0 ? BS_OK : BS_ERR_DOMAIN;
+        return BS_ERR_DOMAIN;
     bs_status st = bsi_tm_scales(j);
     if (st == BS_OK)
         st = bsi_tm_edges(j);
     if (st != BS_OK)
         return st;
-    j->face = calloc(m->nface ? m->nface : 1, sizeof(tm_face_mesh));
-    c->inner0 = malloc((m->nface + 1) * sizeof(size_t));
-    if (j->face == NULL || c->inner0 == NULL)
-        return BS_ERR_NO_MEMORY;
     st = bsi_parallel(bsi_thread_count(o->threads, m->nface), m->nface, face_task, j);
     if (st != BS_OK)
         return st;
@@ -137,7 +139,7 @@ static void fill_normals(const tm_job *j, const counts *c, int reverse, bsi_mesh
     memset(mp->nrm, 0, 3 * c->nvert * sizeof(double));
     for (size_t t = 0; t < mp->ntri; t++) {
         const uint32_t *id = mp->tri + 3 * t;
-        const double *a = mp->pos + 3 * id[0], *b = mp->pos + 3 * id[1], *d = mp->pos + 3 * id[2];
+        const double *a = mp->pos + 3 * (size_t)id[0], *b = mp->pos + 3 * (size_t)id[1], *d = mp->pos + 3 * (size_t)id[2];
         double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]}, n[3];
         bsi_cross3(e1, e2, n);
         for (size_t k = 0; k < 3; k++)
@@ -175,7 +177,7 @@ static bs_status fill_triangles(const tm_job *j, const counts *c, int reverse, b
                 id = (id & TM_INNER) ? (uint32_t)(c->inner0[f] + (id & ~TM_INNER)) : id;
                 mp->tri[3 * t + q] = id;
                 const double *uv = fm->tuv + 6 * k + 2 * src;
-                if (mp->vpatch[id] == f && mp->uv[2 * id] == uv[0] && mp->uv[2 * id + 1] == uv[1])
+                if (mp->vpatch[id] == f && mp->uv[2 * (size_t)id] == uv[0] && mp->uv[2 * (size_t)id + 1] == uv[1])
                     continue;
                 if (nx == xcap) {
                     size_t ncap = xcap ? 2 * xcap : 1024;
