@@ -383,7 +383,8 @@ BS_API bs_status bs_model_properties(const bs_model *m, double rel_tol, double *
  * @return BS_OK (an empty model gives an empty mesh); BS_ERR_INVALID_ARG if m, o or out is NULL,
  *         o->size is too small, the method is unknown or flags has unknown bits;
  *         BS_ERR_UNSUPPORTED for BS_TESS_UNIFORM, BS_TESS_STRIPS, and a face without trim loops
- *         (models of bs_model_from_surface(): tessellate bs_model_surface() instead);
+ *         (an IGES file of lone surfaces: tessellate bs_model_surface() instead; the faces of
+ *         bs_model_from_surface() are bounded by their boxes and are meshed);
  *         BS_ERR_DOMAIN if the tolerance is NaN, Inf, zero or negative, or a face's trim loops
  *         cross or are not closed; BS_ERR_SIZE over a budget (a face's points are counted as they
  *         are made, so the work stops soon after) or past 32-bit indices; BS_ERR_NO_MEMORY.

@@ -15,33 +15,10 @@ double bsi_tm_dist3(const double *a, const double *b)
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-/* The trim's own parameter of t. */
-double bsi_tm_actual(const curve3 *c, double t)
-{
-    if (c->wrap && t > c->t1)
-        return t - (c->t1 - c->t0);
-    if (c->wrap && t < c->t0)
-        return t + (c->t1 - c->t0);
-    return t;
-}
-
-/* The trim's own parameter of an end of the interval from a to b (end 0: a, 1: b): at the seam
- * of a wrapped trim, the interval's side of it (its (u, v) may differ there by a period). */
-double bsi_tm_interval_end(const curve3 *c, double a, double b, int end)
-{
-    double t = end ? b : a;
-    if (!c->wrap)
-        return t;
-    int up = a < b;
-    if (t == (up ? c->t1 : c->t0))
-        return end ? t : (up ? c->t0 : c->t1); /* the start of an interval leaving the seam */
-    return bsi_tm_actual(c, t);
-}
-
 /* The trim's (u, v) at t, and its point on the face (0 when off the face). */
 int bsi_tm_curve_at(const curve3 *c, double t, double *uv, double *p)
 {
-    bsi_curve_eval(c->uv, bsi_tm_actual(c, t), uv);
+    bsi_curve_eval(c->uv, t, uv);
     return bsi_face_point(c->m, c->face, uv[0], uv[1], p);
 }
 
@@ -54,7 +31,6 @@ void bsi_tm_curve_init(curve3 *c, const tm_job *j, size_t t)
     c->t1 = c->uv->axis.breaks[c->uv->axis.n];
     c->lo = c->t0;
     c->hi = c->t1;
-    c->wrap = 0;
 }
 
 /* The parameter in [lo, hi] (either order) of c's point nearest p, from guess. */
@@ -124,27 +100,4 @@ bs_status bsi_tm_new_vertex(tm_edges *e, const double *p, uint32_t face, const d
     v->uv[1] = uv[1];
     *id = (uint32_t)e->nvert++;
     return BS_OK;
-}
-
-/* The parameter in [lo, hi] of c's point nearest p: the nearest of COARSE samples, polished. */
-double bsi_tm_nearest(const curve3 *c, const double *p, double lo, double hi)
-{
-    double best = INFINITY, at = lo, step = (hi - lo) / COARSE, uv[2], q[3];
-    for (int k = 0; k <= COARSE; k++) {
-        double t = lo + step * k;
-        if (bsi_tm_curve_at(c, t, uv, q) && bsi_tm_dist3(q, p) < best) {
-            best = bsi_tm_dist3(q, p);
-            at = t;
-        }
-    }
-    double t = bsi_tm_project(c, p, at - step < lo ? lo : at - step, at + step > hi ? hi : at + step, at);
-    if (at == lo || at == hi) {
-        /* the ends of a closed curve are one point: the nearest may lie just inside the other */
-        double other = at == lo ? hi : lo;
-        double u = bsi_tm_project(c, p, other == lo ? lo : hi - step, other == lo ? lo + step : hi, other);
-        double qt[3], qu[3];
-        if (bsi_tm_curve_at(c, u, uv, qu) && (!bsi_tm_curve_at(c, t, uv, qt) || bsi_tm_dist3(qu, p) < bsi_tm_dist3(qt, p)))
-            t = u;
-    }
-    return t;
 }

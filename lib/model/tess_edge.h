@@ -14,22 +14,14 @@ typedef struct curve3 {
     size_t face;
     const bsi_curve *uv;
     double t0, t1;     /* the trim's range */
-    double lo, hi;     /* the range of the parameters used: [t0, t1], or a turn from another start */
-    int wrap;          /* parameters past t1 (before t0) are a turn later (earlier): a closed trim
-                          walked from another point than its own start */
+    double lo, hi;     /* the range the parameters are kept in: [t0, t1] */
 } curve3;
 
-/* The trim's own parameter of t (wrapped a turn for a wrapped trim). */
-double bsi_tm_actual(const curve3 *c, double t);
-/* The trim's own parameter of an end of the interval from a to b (end 0: a, 1: b). */
-double bsi_tm_interval_end(const curve3 *c, double a, double b, int end);
 /* The trim's (u, v) at t and its point on the face: 1, or 0 when off the face. */
 int bsi_tm_curve_at(const curve3 *c, double t, double *uv, double *p);
 void bsi_tm_curve_init(curve3 *c, const tm_job *j, size_t t);
 /* The parameter in [lo, hi] (either order) of c's point nearest p, from guess (Gauss-Newton). */
 double bsi_tm_project(const curve3 *c, const double *p, double lo, double hi, double guess);
-/* The parameter in [lo, hi] of c's point nearest p: the nearest of COARSE samples, polished. */
-double bsi_tm_nearest(const curve3 *c, const double *p, double lo, double hi);
 bs_status bsi_tm_new_vertex(tm_edges *e, const double *p, uint32_t face, const double *uv, uint32_t *id);
 /* A model vertex at p: an existing one within j->merge, else a new one; *grade its grading
  * (INFINITY in the first pass). */

@@ -21,7 +21,6 @@
 /* Segments near an edge's end: at most GRADE times (the shortest segment there + the distance
  * from the end); 4 halves the slivers' count at a quarter more triangles than none (the bottle). */
 #define GRADE 4.0
-#define MAX_BREAKS 1024 /* a master's segment breaks that start intervals (more are left to refine) */
 
 /* ---- One edge: its trims, the samples' parameters on each ---- */
 #define MAX_USES 8
@@ -77,8 +76,8 @@ static int interval_fine(const edge_run *r, const double *pa, const double *pb, 
         mid[k] = 0.5 * (Pa[k] + Pb[k]);
     for (size_t i = 0; i < r->n; i++) {
         double ua[2], ub[2], p[3];
-        bsi_curve_eval(r->c[i].uv, bsi_tm_interval_end(&r->c[i], pa[i], pb[i], 0), ua);
-        bsi_curve_eval(r->c[i].uv, bsi_tm_interval_end(&r->c[i], pa[i], pb[i], 1), ub);
+        bsi_curve_eval(r->c[i].uv, pa[i], ua);
+        bsi_curve_eval(r->c[i].uv, pb[i], ub);
         if (!bsi_face_point(r->j->m, r->c[i].face, 0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1]), p) ||
             bsi_tm_dist3(p, mid) > half)
             return 0;
@@ -140,81 +139,6 @@ static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1,
     return 1;
 }
 
-/* A closed trim i that starts elsewhere on the closed master edge (files put a circle's seam
- * where they like): walked a whole turn from the master's start, *s0 .. *s1, its parameters past
- * its own end wrapping around. Its own start must be a sample too: *seam_master is the master's
- * parameter there, *seam the trim's. 1, or 0 when the trim does not lie along the master. */
-static int match_rotated(edge_run *r, size_t i, const double *P0, double *s0, double *s1,
-                         double *seam_master, double *seam)
-{
-    curve3 *c = &r->c[i];
-    const curve3 *mc = &r->c[0];
-    double len = c->t1 - c->t0, slack = 10.0 * r->j->merge, uv[2], Q[3], P[3], Qs[3], Pq[3];
-    double star = bsi_tm_nearest(c, P0, c->t0, c->t1);
-    if (!bsi_tm_curve_at(c, star, uv, Q) || bsi_tm_dist3(Q, P0) > slack ||
-        !bsi_tm_curve_at(mc, mc->t0 + 0.25 * (mc->t1 - mc->t0), uv, P) || !bsi_tm_curve_at(c, c->t0, uv, Qs))
-        return 0;
-    double d = bsi_tm_nearest(c, P, c->t0, c->t1) - star;
-    int forward = (d < 0.0 ? d + len : d) < 0.5 * len;
-    double tq = bsi_tm_nearest(mc, Qs, mc->t0, mc->t1);
-    if (!bsi_tm_curve_at(mc, tq, uv, Pq) || bsi_tm_dist3(Pq, Qs) > slack || tq <= mc->t0 || tq >= mc->t1)
-        return 0;
-    c->wrap = 1;
-    *s0 = star;
-    *s1 = forward ? star + len : star - len;
-    c->lo = fmin(*s0, *s1);
-    c->hi = fmax(*s0, *s1);
-    *seam_master = tq;
-    *seam = forward ? c->t1 : c->t0;
-    return 1;
-}
-
-typedef struct param_vid {
-    double t;
-    uint32_t vid;
-} param_vid;
-
-static int cmp_param(const void *a, const void *b)
-{
-    double x = ((const param_vid *)a)->t, y = ((const param_vid *)b)->t;
-    return (x > y) - (x < y);
-}
-
-/* A wrapped trim's samples in its own parameters, ascending, its seam sample at both ends. */
-static bs_status store_wrapped(tm_edges *e, const edge_run *r, size_t i, tm_trim *t)
-{
-    if (r->ns < 3)
-        return BS_ERR_DOMAIN; /* a closed edge has at least its ends and a forced middle */
-    size_t n = r->ns - 1; /* the master's last sample is its first again */
-    param_vid *pv = malloc((n + 1) * sizeof(param_vid));
-    if (pv == NULL)
-        return BS_ERR_NO_MEMORY;
-    for (size_t k = 0; k < n; k++) {
-        pv[k].t = bsi_tm_actual(&r->c[i], r->par[k * MAX_USES + i]);
-        pv[k].vid = r->vid[k];
-    }
-    qsort(pv, n, sizeof(param_vid), cmp_param);
-    t->first = e->nsample;
-    t->count = n + 1;
-    const curve3 *c = &r->c[i];
-    int seam_last = pv[n - 1].t >= c->t1; /* else the seam is first, at t0 */
-    if (!seam_last) {
-        e->param[e->nsample] = c->t0;
-        e->vid[e->nsample++] = pv[0].vid;
-    } else {
-        e->param[e->nsample] = c->t0;
-        e->vid[e->nsample++] = pv[n - 1].vid;
-    }
-    for (size_t k = seam_last ? 0 : 1; k < (seam_last ? n - 1 : n); k++) {
-        e->param[e->nsample] = pv[k].t;
-        e->vid[e->nsample++] = pv[k].vid;
-    }
-    e->param[e->nsample] = c->t1;
-    e->vid[e->nsample++] = seam_last ? pv[n - 1].vid : pv[0].vid;
-    free(pv);
-    return BS_OK;
-}
-
 /* Store the run's samples into each of its trims, ascending in the trim's own parameter. */
 static bs_status store(tm_job *j, edge_run *r)
 {
@@ -227,12 +151,6 @@ static bs_status store(tm_job *j, edge_run *r)
             return BS_ERR_NO_MEMORY;
         e->vid = q;
         tm_trim *t = &e->trim[r->trim[i]];
-        if (r->c[i].wrap) {
-            bs_status st = store_wrapped(e, r, i, t);
-            if (st != BS_OK)
-                return st;
-            continue;
-        }
         int descending = r->ns > 1 && r->par[(r->ns - 1) * MAX_USES + i] < r->par[i];
         t->first = e->nsample;
         t->count = r->ns;
@@ -244,13 +162,6 @@ static bs_status store(tm_job *j, edge_run *r)
     }
     return BS_OK;
 }
-
-/* A master parameter where a sample must be: a break of its segments (trim 0), or where closed
- * trim `trim` that starts elsewhere starts (its parameter there: seam). */
-typedef struct edge_stop {
-    double t, seam;
-    size_t trim;
-} edge_stop;
 
 /* Sample the edge whose trims are trims[0 .. n) (the first the master). */
 static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
@@ -270,11 +181,7 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
     double par0[MAX_USES] = {0.0}, par1[MAX_USES] = {0.0};
     par0[0] = mc->t0;
     par1[0] = mc->t1;
-    /* the other trims whose ends match; those that do not are sampled on their own. stop[]: the
-     * master's parameters where a sample must be (its segments' breaks, and the starts of closed
-     * trims that start elsewhere: on those, the trim's parameter there is `seam`) */
-    edge_stop stop[MAX_USES + MAX_BREAKS];
-    size_t nstop = 0;
+    /* the other trims whose ends match; those that do not are sampled on their own */
     size_t alone[MAX_USES * 4];
     size_t nalone = 0;
     for (size_t k = 1; k < n; k++) {
@@ -285,12 +192,7 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
         }
         bsi_tm_curve_init(&r.c[r.n], j, trims[k]);
         double s0, s1;
-        stop[nstop].t = stop[nstop].seam = 0.0;
-        stop[nstop].trim = 0;
-        if (match_ends(&r, r.n, P0, P1, closed, &s0, &s1) ||
-            (closed && match_rotated(&r, r.n, P0, &s0, &s1, &stop[nstop].t, &stop[nstop].seam))) {
-            if (r.c[r.n].wrap)
-                stop[nstop++].trim = r.n;
+        if (match_ends(&r, r.n, P0, P1, closed, &s0, &s1)) {
             r.trim[r.n] = trims[k];
             par0[r.n] = s0;
             par1[r.n] = s1;
@@ -311,35 +213,24 @@ static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
      * edge of one segment, so that it is never a two-gon) */
     const bsi_axis *ax = &mc->uv->axis;
     int forced = closed && ax->n < 2 ? 2 : 1;
-    for (size_t b = 1; b < ax->n && nstop < sizeof stop / sizeof stop[0]; b++) {
-        stop[nstop].t = ax->breaks[b];
-        stop[nstop++].trim = 0;
-    }
-    for (size_t a = 1; a < nstop; a++) /* ascending (insertion: a few stops) */
-        for (size_t b = a; b > 0 && stop[b].t < stop[b - 1].t; b--) {
-            edge_stop x = stop[b];
-            stop[b] = stop[b - 1];
-            stop[b - 1] = x;
-        }
     double pa[MAX_USES], Pa[3];
     memcpy(pa, par0, sizeof pa);
     memcpy(Pa, P0, sizeof Pa);
-    for (size_t s = 0; s <= nstop && st == BS_OK; s++) {
+    for (size_t s = 1; s <= ax->n && st == BS_OK; s++) {
         double pb[MAX_USES], Pb[3], uv[2];
         uint32_t vb = v1;
-        if (s == nstop) {
+        if (s == ax->n) {
             memcpy(pb, par1, sizeof pb);
             memcpy(Pb, P1, sizeof Pb);
         } else {
-            pb[0] = stop[s].t;
+            pb[0] = ax->breaks[s];
             if (!bsi_tm_curve_at(mc, pb[0], uv, Pb)) {
                 st = BS_ERR_DOMAIN;
                 break;
             }
             for (size_t i = 1; i < r.n; i++)
-                pb[i] = i == stop[s].trim ? stop[s].seam
-                                          : bsi_tm_project(&r.c[i], Pb, pa[i], par1[i],
-                                                    pa[i] + (par1[i] - pa[i]) * (pb[0] - pa[0]) / (par1[0] - pa[0]));
+                pb[i] = bsi_tm_project(&r.c[i], Pb, pa[i], par1[i],
+                                       pa[i] + (par1[i] - pa[i]) * (pb[0] - pa[0]) / (par1[0] - pa[0]));
             st = bsi_tm_new_vertex(&j->edges, Pb, (uint32_t)mc->face, uv, &vb);
         }
         if (st == BS_OK)

@@ -393,7 +393,28 @@ static void check_options(void)
     o.max_triangles = 0;
     o.max_vertices = nv - 1;
     CHECK(bs_model_tessellate(m, &o, &mesh) == BS_ERR_SIZE && mesh == NULL);
+    o.max_vertices = 10; /* refused while the first face is refined */
+    CHECK(bs_model_tessellate(m, &o, &mesh) == BS_ERR_SIZE && mesh == NULL);
     o.max_vertices = 0;
+    /* the model of a surface (each patch a face bounded by its box, sewn at shared sides) */
+    bs_surface *cup = NULL;
+    bs_model *boxed = NULL;
+    CHECK(bs_surface_create_builtin("teacup", &cup) == BS_OK && bs_model_from_surface(cup, &boxed) == BS_OK);
+    CHECK(bs_model_tessellate(boxed, &o, &mesh) == BS_OK && bs_mesh_triangle_count(mesh) > 0);
+    CHECK(bs_model_tessellate_count(boxed, &o, &nv, &nt) == BS_OK && nt == bs_mesh_triangle_count(mesh));
+    bs_mesh_destroy(mesh);
+    bs_model_destroy(boxed);
+    bs_surface_destroy(cup);
+    /* a coarse tolerance: still a closed mesh */
+    o.tolerance = 0.5;
+    CHECK(bs_model_tessellate(m, &o, &mesh) == BS_OK && bs_mesh_triangle_count(mesh) > 0);
+    mesh_copy coarse;
+    if (mesh != NULL && copy_mesh(mesh, &coarse)) {
+        CHECK(bad_edges(coarse.tri, coarse.nt) == 0);
+        mesh_copy_free(&coarse);
+    }
+    bs_mesh_destroy(mesh);
+    o.tolerance = 1e-3;
     /* reversed: the same triangles wound the other way, normals negated */
     bs_mesh *fwd = NULL, *rev = NULL;
     CHECK(bs_model_tessellate(m, &o, &fwd) == BS_OK);
