@@ -29,8 +29,6 @@ void bsi_tm_curve_init(curve3 *c, const tm_job *j, size_t t)
     c->face = j->edges.trim_face[t];
     c->t0 = c->uv->axis.breaks[0];
     c->t1 = c->uv->axis.breaks[c->uv->axis.n];
-    c->lo = c->t0;
-    c->hi = c->t1;
 }
 
 /* The parameter in [lo, hi] (either order) of c's point nearest p, from guess. */
@@ -45,7 +43,7 @@ double bsi_tm_project(const curve3 *c, const double *p, double lo, double hi, do
     double h = 1e-7 * (c->t1 - c->t0);
     for (int it = 0; it < PROJECT_STEPS; it++) {
         double uv[2], q[3], qa[3], qb[3];
-        double sa = s - h < c->lo ? c->lo : s - h, sb = s + h > c->hi ? c->hi : s + h;
+        double sa = s - h < c->t0 ? c->t0 : s - h, sb = s + h > c->t1 ? c->t1 : s + h;
         if (!bsi_tm_curve_at(c, s, uv, q) || !bsi_tm_curve_at(c, sa, uv, qa) || !bsi_tm_curve_at(c, sb, uv, qb) || sb <= sa)
             break;
         double d[3], num = 0.0, den = 0.0;

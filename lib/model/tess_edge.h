@@ -7,14 +7,11 @@
 
 #include "model/tess.h"
 
-#define COARSE 64 /* samples of a trim when looking for its point nearest a point */
-
 typedef struct curve3 {
     const bs_model *m;
     size_t face;
     const bsi_curve *uv;
     double t0, t1;     /* the trim's range */
-    double lo, hi;     /* the range the parameters are kept in: [t0, t1] */
 } curve3;
 
 /* The trim's (u, v) at t and its point on the face: 1, or 0 when off the face. */

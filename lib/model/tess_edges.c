@@ -18,6 +18,7 @@
 #include <string.h>
 
 #define MAX_DEPTH 24
+#define COARSE 64 /* samples of a trim when telling the direction of a closed edge */
 /* Segments near an edge's end: at most GRADE times (the shortest segment there + the distance
  * from the end); 4 halves the slivers' count at a quarter more triangles than none (the bottle). */
 #define GRADE 4.0
