@@ -192,7 +192,7 @@ int bsi_face_classify(const bs_model *m, size_t f, double u, double v, double to
         return BS_TRIM_OUTSIDE;
     if (face->loop_count == 0)
         return BS_TRIM_INSIDE;
-    if (bsi_face_near_boundary(m, f, us[0], vs[0], tol))
+    if (bsi_face_near_boundary(m, f, us[0], vs[0], tol, 0))
         return BS_TRIM_ON;
     return parity_inside(m, face, us, nu, vs, nv) ? BS_TRIM_INSIDE : BS_TRIM_OUTSIDE;
 }
@@ -205,5 +205,15 @@ int bsi_face_covers(const bs_model *m, size_t f, double u, double v, double tol)
     if (!placed(face, u, v, us, &nu, vs, &nv))
         return 0;
     return face->loop_count == 0 || parity_inside(m, face, us, nu, vs, nv) ||
-           bsi_face_near_boundary(m, f, us[0], vs[0], tol);
+           bsi_face_near_boundary(m, f, us[0], vs[0], tol, 1);
+}
+
+int bsi_face_parity(const bs_model *m, size_t f, double u, double v)
+{
+    const bsi_face *face = &m->faces[f];
+    double us[MAX_SHIFTS], vs[MAX_SHIFTS];
+    size_t nu = 0, nv = 0;
+    if (!placed(face, u, v, us, &nu, vs, &nv))
+        return 0;
+    return face->loop_count == 0 || parity_inside(m, face, us, nu, vs, nv);
 }

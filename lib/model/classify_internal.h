@@ -32,7 +32,7 @@ void bsi_seg_piece(const double *seg, size_t p, double s0, double s1, double *ou
 /* The point at s of a degree-p segment: u and v. */
 void bsi_seg_point(const double *seg, size_t p, double s, double *xy);
 /* 1 when the point of face f at native (u, v) (in the face's box) is within tol in 3-D of a trim
- * that bounds the face (seams left out), found by a certified branch and bound. */
-int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, double tol);
+ * that bounds the face (seams too when seams is 1), found by a certified branch and bound. */
+int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, double tol, int seams);
 
 #endif

@@ -147,7 +147,7 @@ static int constant_coord(const bsi_curve *c, size_t d, double *x)
     return 1;
 }
 
-static int is_seam(const bs_model *m, size_t f, size_t t)
+int bsi_trim_is_seam(const bs_model *m, size_t f, size_t t)
 {
     const bsi_face *face = &m->faces[f];
     uint32_t e = m->trims[t].edge;
@@ -289,7 +289,7 @@ static int trim_near(const near_ctx *x, const bsi_curve *c)
     return 0;
 }
 
-int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, double tol)
+int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, double tol, int seams)
 {
     const bsi_face *face = &m->faces[f];
     near_ctx x;
@@ -301,7 +301,7 @@ int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, doub
         const bsi_loop *loop = &m->loops[l];
         for (size_t t = loop->first_trim; t < loop->first_trim + loop->trim_count; t++) {
             const bsi_curve *c = &m->trims[t].uv;
-            if (c->axis.n == 0 || is_seam(m, f, t))
+            if (c->axis.n == 0 || (!seams && bsi_trim_is_seam(m, f, t)))
                 continue;
             if (trim_near(&x, c))
                 return 1;

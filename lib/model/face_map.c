@@ -75,8 +75,8 @@ int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p)
     return bs_patch_eval(bs_surface_get(m->surface, patch), 1, &cu, &cv, pos, NULL, NULL) == BS_OK;
 }
 
-int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
-                      double *pv)
+int bsi_face_partials_cell(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
+                           double *pv, double *cell)
 {
     const bsi_face *face = &m->faces[f];
     u = into_box(u, face->box[0], face->box[1], face->period[0]);
@@ -87,20 +87,30 @@ int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p
     if (!bsi_axis_locate(&face->au, cu, &i, &s) || !bsi_axis_locate(&face->av, cv, &j, &t))
         return 0;
     double ds = bsi_axis_rate(&face->au, i, cu), dt = bsi_axis_rate(&face->av, j, cv);
-    double ps[3], pt[3];
-    bs_cview su = {&s, 1, 0}, tv = {&t, 1, 0};
-    bs_view pos[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
-    bs_view dsv[3] = {{&ps[0], 1, 0}, {&ps[1], 1, 0}, {&ps[2], 1, 0}};
-    bs_view dtv[3] = {{&pt[0], 1, 0}, {&pt[1], 1, 0}, {&pt[2], 1, 0}};
     const bs_patch *patch = bs_surface_get(m->surface, face->first_patch + i * face->av.n + j);
-    if (bs_patch_eval(patch, 1, &su, &tv, pos, dsv, dtv) != BS_OK)
-        return 0;
+    /* one point: the derivative table directly (no block evaluator set up for it) */
+    double scratch[5 * (BS_MAX_DEGREE + 1) + 4 * (BS_MAX_DIM + 1)], tab[4 * BS_MAX_DIM];
+    bsi_deriv_table(patch, s, t, 1, 1, scratch, tab);
     for (int c = 0; c < 3; c++) {
-        double along_cu = ps[c] * ds, along_cv = pt[c] * dt;
+        double along_cu = tab[6 + c] * ds, along_cv = tab[3 + c] * dt; /* S_s, S_t */
+        p[c] = tab[c];
         pu[c] = face->swap ? along_cv : along_cu;
         pv[c] = face->swap ? along_cu : along_cv;
     }
+    if (cell != NULL) { /* the patch's native ranges, in the frame of the wrapped (u, v) */
+        double a0 = face->au.breaks[i], a1 = face->au.breaks[i + 1];
+        double b0 = face->av.breaks[j], b1 = face->av.breaks[j + 1];
+        cell[0] = face->swap ? b0 : a0, cell[1] = face->swap ? b1 : a1;
+        cell[2] = face->swap ? a0 : b0, cell[3] = face->swap ? a1 : b1;
+        cell[4] = u, cell[5] = v;
+    }
     return 1;
+}
+
+int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
+                      double *pv)
+{
+    return bsi_face_partials_cell(m, f, u, v, p, pu, pv, NULL);
 }
 
 /* The argument rules shared by the entry points; on success every face id is valid. */

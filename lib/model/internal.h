@@ -219,6 +219,10 @@ int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p);
  * 1, or 0 outside. */
 int bsi_face_partials(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
                       double *pv);
+/* bsi_face_partials, and cell[6]: the native u and v ranges of the patch holding the point (u0 u1
+ * v0 v1) and the point itself brought into the face's box (u, v), in the same frame. */
+int bsi_face_partials_cell(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
+                           double *pv, double *cell);
 /* The face holding patch p (a valid patch id of the model). */
 size_t bsi_face_of_patch(const bs_model *m, uint32_t p);
 /* The face of patch p and the native (u, v) of the patch's (s, t) there. */
@@ -229,9 +233,26 @@ double bsi_wrap(double u, double lo, double period);
 /* ---- Classification (classify.c) ---- */
 /* BS_TRIM_* of native (u, v) on face f (a valid id), tol a finite 3-D distance >= 0. */
 int bsi_face_classify(const bs_model *m, size_t f, double u, double v, double tol);
-/* 1 when bsi_face_classify would not say OUTSIDE, answered by the cheap parity test first: the
- * certified search for nearness to the boundary runs only for points outside the loops. */
+/* 1 when the point is within tol of the face: bsi_face_classify would not say OUTSIDE, or it is
+ * within tol of a seam (a seam's points are the face's). Answered by the cheap parity test first:
+ * the certified search for nearness to the trims runs only for points outside the loops. */
 int bsi_face_covers(const bs_model *m, size_t f, double u, double v, double tol);
+/* 1 when the loops' parity alone puts (u, v) inside face f (no ON test; exact off the trims). */
+int bsi_face_parity(const bs_model *m, size_t f, double u, double v);
+/* Where the native box nb = (u0, u1, v0, v1) inside face f's box lies: BSI_CL_IN, BSI_CL_OUT, or
+ * BSI_CL_CROSS when a trim, or a chord closing a loop, may pass through it (classify_box.c). */
+int bsi_face_box_place(const bs_model *m, size_t f, const double nb[4]);
+/* Closest points on the boundaries of a model's faces (closest_trim.c): bounds made once per
+ * trim segment, then a certified search per query. diag: the D of the tolerance 0.5e-9 (D + d). */
+typedef struct bsi_trim_search bsi_trim_search;
+bs_status bsi_trim_search_create(const bs_model *m, double diag, bsi_trim_search **out);
+void bsi_trim_search_free(bsi_trim_search *ts);
+/* A point of a boundary nearer to q than *best_d: 1 with *best_d, *patch and st (its patch and
+ * local parameters) set, 0 when there is none, -2 when the search cannot be certified. */
+int bsi_trim_search_closest(const bsi_trim_search *ts, const double *q, double *best_d,
+                            uint32_t *patch, double st[2]);
+/* 1 when trim t of face f is a seam of the face, not a boundary (classify_near.c). */
+int bsi_trim_is_seam(const bs_model *m, size_t f, size_t t);
 
 /* ---- Sewing (sew.c): trims without an edge whose 3-D images coincide within tol become one
  * edge; called by bsi_model_finish. BS_ERR_NO_MEMORY. ---- */

@@ -32,7 +32,8 @@
 typedef struct box {
     double u0, u1, v0, v1, aabb;
     unsigned depth, slot;
-    int dir; /* the direction to split it (set when it survives), -1 for none */
+    int dir;   /* the direction to split it (set when it survives), -1 for none */
+    int where; /* BSI_CL_IN, or BSI_CL_CROSS until known (a search held to a part) */
 } box;
 
 /* Rounding of the Cartesian points of the nets of boxes at depth k (scaled units, the root
@@ -65,6 +66,7 @@ typedef struct search {
     region reg[REGIONS];
     unsigned nreg;   /* regions filled, the next one replaced is nreg % REGIONS */
     int uncertified; /* a box was left that could not be pruned (the cap, or the deepest level) */
+    const bsi_cl_part *part; /* NULL, or the part of the domain the search is held to */
 } search;
 
 static double current(const search *s) { return fmin(s->incoming, sqrt(s->f)); }
@@ -77,67 +79,6 @@ static double tolerance(const search *s)
 
 /* 1 when a lower bound lb on the distance over a box cannot beat the best by more than T. */
 static int pruned(const search *s, double lb) { return lb >= current(s) - tolerance(s); }
-
-/* The smallest of q(x) = gam x + a x^2 / 2 over x in [l, h] (l <= 0 <= h) for every gam in
- * [g0, g1] (it is concave in gam: attained at g0 or g1); *mag grows to the largest magnitude of
- * the terms (for the rounding). */
-static double quad_min(double g0, double g1, double a, double l, double h, double *mag)
-{
-    double least = 0.0, gs[2] = {g0, g1};
-    for (int k = 0; k < 2; k++) {
-        double gam = gs[k], xs[2] = {l, h};
-        for (int i = 0; i < 2; i++) {
-            double lin = gam * xs[i], sq = 0.5 * a * xs[i] * xs[i];
-            least = fmin(least, lin + sq);
-            *mag = fmax(*mag, fabs(lin) + fabs(sq));
-        }
-        if (a > 0.0 && -gam >= a * l && -gam <= a * h) { /* the vertex -gam/a lies in [l, h] */
-            double v = gam * gam / (2.0 * a);
-            least = fmin(least, -v);
-            *mag = fmax(*mag, v);
-        }
-    }
-    return least;
-}
-
-/* A lower bound on f - c over the square x around x* = s->uv of a polynomial patch (G = f - c)
- * without convexity, for minima on an edge or at a corner: with A <= G_ss, C <= G_tt, |G_st| <= B
- * in the square's parameters (abc), Taylor's formula with the integral remainder gives
- * G(x* + d) >= G(x*) + gam . d + (A ds^2 + C dt^2) / 2 - B |ds dt|, and for any alpha > 0
- * B |ds dt| <= B (alpha ds^2 + dt^2 / alpha) / 2 splits it into two quadratics of one variable,
- * each bounded over its range of d (exactly, at its ends or its vertex). gam is the gradient g in
- * the square's parameters, off by dg; several alpha are tried, the best bound kept. */
-static double separable_bound(const search *s, const double x[4], const double g[2],
-                              const double dg[2], const double abc[3])
-{
-    double A = abc[0], B = abc[1], C = abc[2], lo[2], hi[2], g0[2], g1[2];
-    double up = 1.0 + 4.0 * DBL_EPSILON, down = 1.0 - 4.0 * DBL_EPSILON;
-    for (size_t i = 0; i < 2; i++) {
-        /* the ranges of d and of the gradient, widened by their rounding (an end at x* exact) */
-        double width = x[2 * i + 1] - x[2 * i], at = (s->uv[i] - x[2 * i]) / width;
-        lo[i] = s->uv[i] == x[2 * i] ? 0.0 : -(at + 8.0 * DBL_EPSILON);
-        hi[i] = s->uv[i] == x[2 * i + 1] ? 0.0 : (1.0 - at) + 8.0 * DBL_EPSILON;
-        double a = g[i] - dg[i], b = g[i] + dg[i];
-        g0[i] = a * width * (a > 0.0 ? down : up);
-        g1[i] = b * width * (b > 0.0 ? up : down);
-    }
-    if (!(B >= 0.0 && isfinite(A) && isfinite(B) && isfinite(C)))
-        return -INFINITY;
-    /* alpha = 1; the t part convex (C - B / alpha = C / 2); the s part convex; balanced */
-    double alphas[4] = {1.0, C > 0.0 && B > 0.0 ? 2.0 * B / C : 1.0,
-                        A > 0.0 && B > 0.0 ? A / (2.0 * B) : 1.0,
-                        A > 0.0 && C > 0.0 ? sqrt(C / A) : 1.0};
-    double best = -INFINITY;
-    for (int k = 0; k < 4; k++) {
-        double al = alphas[k], mag = 0.0;
-        if (!(al > 0.0 && isfinite(al)))
-            continue;
-        double d = quad_min(g0[0], g1[0], A - B * al, lo[0], hi[0], &mag) +
-                   quad_min(g0[1], g1[1], C - B / al, lo[1], hi[1], &mag);
-        best = fmax(best, d - 16.0 * DBL_EPSILON * mag);
-    }
-    return best;
-}
 
 /* Certify a square around the best point x* (a local minimum from Newton) in which no point
  * is closer: the second-order closure. With c = f(x*) and G = N - c W (G >= 0 exactly where
@@ -178,7 +119,7 @@ static void certify(bsi_cl *w, search *s)
         double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi, abc);
         if (!(lambda > 0.0 && convex)) {
             /* a square kept only where it prunes now */
-            double lbf = poly ? fmax(c + separable_bound(s, x, g, dg, abc), b.lbf) : 0.0;
+            double lbf = poly ? fmax(c + bsi_cl_separable_bound(s->uv, x, g, dg, abc), b.lbf) : 0.0;
             double lb = poly ? sqrt(fmax(lbf, 0.0)) - noise : -INFINITY;
             if (!pruned(s, lb))
                 continue;
@@ -218,13 +159,29 @@ static int in_region(const search *s, const box *b)
     return 0;
 }
 
-/* Newton from the box's candidate when f there is below the best; a new best is certified. */
+/* 1 when (u, v) is in the part the search is held to. */
+static int in_part(const search *s, const double x[2])
+{
+    return s->part == NULL || s->part->point(s->part->ctx, s->part->patch, x[0], x[1]);
+}
+
+/* Newton from the box's candidate when f there is below the best; a new best is certified. In a
+ * search held to a part, a minimum outside it does not count (the box's own point may). */
 static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound *fb)
 {
     double x[2] = {b->u0 + fb->su * (b->u1 - b->u0), b->v0 + fb->sv * (b->v1 - b->v0)};
-    if (!(bsi_cl_f(w, x[0], x[1]) < s->f))
+    double f0 = bsi_cl_f(w, x[0], x[1]), x0[2] = {x[0], x[1]};
+    if (!(f0 < s->f))
         return;
     double f = bsi_cl_newton(w, x);
+    if (!in_part(s, x)) {
+        if (in_part(s, x0)) {
+            s->f = f0;
+            s->uv[0] = x0[0];
+            s->uv[1] = x0[1];
+        }
+        return;
+    }
     if (f < s->f) {
         s->f = f;
         s->uv[0] = x[0];
@@ -238,14 +195,21 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
  * counted in *visited, only when the first-order one does not prune it); its candidate tried. */
 static int survives(bsi_cl *w, search *s, box *b, size_t *visited)
 {
-    double err = net_error(w, b->depth);
+    double err = net_error(w, b->depth), x[4] = {b->u0, b->u1, b->v0, b->v1};
     if (pruned(s, sqrt(b->aabb) - err) || in_region(s, b))
         return 0;
+    if (b->where != BSI_CL_IN) {
+        b->where = s->part->box(s->part->ctx, s->part->patch, x);
+        if (b->where == BSI_CL_OUT)
+            return 0;
+    }
     bsi_cl_bound fb;
     bsi_cl_fbound(w, w->pool + b->slot * w->np, &fb);
     ++*visited;
     double lb = sqrt(fmax(fb.lbf, 0.0)) - err;
-    if (pruned(s, lb))
+    /* a box the part's boundary crosses, without a minimum of f: its closest points of the part
+     * are on that boundary (the caller's) */
+    if (pruned(s, lb) || (b->where == BSI_CL_CROSS && bsi_cl_no_minimum(w, &fb, x)))
         return 0;
     /* the direction in which the second-order bound is loosest, else the net's longer side
      * (before the candidate, whose squares overwrite the coefficients) */
@@ -264,7 +228,8 @@ static size_t search_patch(bsi_cl *w, search *s)
         free_slots[nfree++] = k;
     for (size_t k = 0; k < w->np; k++)
         w->pool[k] = w->root[k];
-    stack[0] = (box){0.0, 1.0, 0.0, 1.0, bsi_cl_box(w, w->pool), 0, 0, -1};
+    stack[0] = (box){0.0, 1.0, 0.0, 1.0, bsi_cl_box(w, w->pool), 0, 0, -1,
+                     s->part ? BSI_CL_CROSS : BSI_CL_IN};
     size_t top = 1, visited = 0;
     while (top > 0) {
         box b = stack[--top];
@@ -354,11 +319,11 @@ static double hull_distance(const bs_patch *p, const double *q)
  * returned; -2 when the search could not be certified (nothing changed). The scales are applied
  * one after the other: their product may overflow for subnormal coordinates. */
 static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best_d, double uv[2],
-                        double *pos, size_t *boxes)
+                        double *pos, size_t *boxes, const bsi_cl_part *part)
 {
     bsi_cl_setup(w, q);
     search st = {*best_d * w->s1 * w->s2, INFINITY, {0.5, 0.5},
-                 fmax(w->diag, d_scale * w->s1 * w->s2), {{{0}, 0}}, 0, 0};
+                 fmax(w->diag, d_scale * w->s1 * w->s2), {{{0}, 0}}, 0, 0, part};
     size_t visited = search_patch(w, &st);
     if (boxes != NULL)
         *boxes = visited;
@@ -376,8 +341,8 @@ static int closest_with(bsi_cl *w, const double *q, double d_scale, double *best
     return 1;
 }
 
-int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
-                           double uv[2], size_t *boxes)
+static int closest_on(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                      double uv[2], size_t *boxes, const bsi_cl_part *part)
 {
     if (boxes != NULL)
         *boxes = 0;
@@ -389,9 +354,21 @@ int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, d
     if (w == NULL)
         return -1;
     double pos[BS_MAX_DIM] = {0.0};
-    int r = closest_with(w, q, d_scale, best_d, uv, pos, boxes);
+    int r = closest_with(w, q, d_scale, best_d, uv, pos, boxes, part);
     bsi_cl_free(w);
     return r;
+}
+
+int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], size_t *boxes)
+{
+    return closest_on(p, q, d_scale, best_d, uv, boxes, NULL);
+}
+
+int bsi_patch_closest_part(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], const bsi_cl_part *part)
+{
+    return closest_on(p, q, d_scale, best_d, uv, NULL, part);
 }
 
 int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
@@ -446,7 +423,7 @@ bs_status bs_patch_closest_point(const bs_patch *p, size_t n, const bs_cview *q,
             x[c] = bsi_cget(&q[c], k);
             finite &= isfinite(x[c]) != 0;
         }
-        if (finite && closest_with(w, x, 0.0, &best, &ats[2 * k], y, NULL) == -2) { /* distance */
+        if (finite && closest_with(w, x, 0.0, &best, &ats[2 * k], y, NULL, NULL) == -2) { /* distance */
             free(ats);
             bsi_cl_free(w);
             return BS_ERR_PRECISION;

@@ -90,6 +90,17 @@ void bsi_cl_region(bsi_cl *w, const double x[4]);
 double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,
                      double abc[3]);
 
+/* A lower bound on f - c over the square x around the point uv of a polynomial patch where f's
+ * Hessian is not shown positive (a minimum on an edge or at a corner): g the gradient there, dg
+ * its rounding, abc the bounds of bsi_cl_convex (lib/query/closest_bound.c). */
+double bsi_cl_separable_bound(const double uv[2], const double x[4], const double g[2],
+                              const double dg[2], const double abc[3]);
+/* 1 when the box x of the last bsi_cl_fbound (b its result, w->nco and w->wco still its
+ * coefficients) holds no local minimum of f over the patch's domain: a partial derivative keeps
+ * one sign over it and the box does not reach the side of the domain it points to
+ * (lib/query/closest_grad.c). */
+int bsi_cl_no_minimum(bsi_cl *w, const bsi_cl_bound *b, const double x[4]);
+
 /* f = |S - q|^2 at (u,v) in scaled units (lib/query/closest_newton.c). */
 double bsi_cl_f(bsi_cl *w, double u, double v);
 /* Projected Newton on f over [0,1]^2 from x (updated): returns f there. Iterates on the free

@@ -401,3 +401,64 @@ double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *w
         return 0.0;
     return 0.5 * ((A + C) - sqrt((A - C) * (A - C) + 4.0 * B * B));
 }
+
+/* The smallest of q(x) = gam x + a x^2 / 2 over x in [l, h] (l <= 0 <= h) for every gam in
+ * [g0, g1] (it is concave in gam: attained at g0 or g1); *mag grows to the largest magnitude of
+ * the terms (for the rounding). */
+static double quad_min(double g0, double g1, double a, double l, double h, double *mag)
+{
+    double least = 0.0, gs[2] = {g0, g1};
+    for (int k = 0; k < 2; k++) {
+        double gam = gs[k], xs[2] = {l, h};
+        for (int i = 0; i < 2; i++) {
+            double lin = gam * xs[i], sq = 0.5 * a * xs[i] * xs[i];
+            least = fmin(least, lin + sq);
+            *mag = fmax(*mag, fabs(lin) + fabs(sq));
+        }
+        if (a > 0.0 && -gam >= a * l && -gam <= a * h) { /* the vertex -gam/a lies in [l, h] */
+            double v = gam * gam / (2.0 * a);
+            least = fmin(least, -v);
+            *mag = fmax(*mag, v);
+        }
+    }
+    return least;
+}
+
+/* A lower bound on f - c over the square x around x* = uv of a polynomial patch (G = f - c)
+ * without convexity, for minima on an edge or at a corner: with A <= G_ss, C <= G_tt, |G_st| <= B
+ * in the square's parameters (abc), Taylor's formula with the integral remainder gives
+ * G(x* + d) >= G(x*) + gam . d + (A ds^2 + C dt^2) / 2 - B |ds dt|, and for any alpha > 0
+ * B |ds dt| <= B (alpha ds^2 + dt^2 / alpha) / 2 splits it into two quadratics of one variable,
+ * each bounded over its range of d (exactly, at its ends or its vertex). gam is the gradient g in
+ * the square's parameters, off by dg; several alpha are tried, the best bound kept. */
+double bsi_cl_separable_bound(const double uv[2], const double x[4], const double g[2],
+                              const double dg[2], const double abc[3])
+{
+    double A = abc[0], B = abc[1], C = abc[2], lo[2], hi[2], g0[2], g1[2];
+    double up = 1.0 + 4.0 * DBL_EPSILON, down = 1.0 - 4.0 * DBL_EPSILON;
+    for (size_t i = 0; i < 2; i++) {
+        /* the ranges of d and of the gradient, widened by their rounding (an end at x* exact) */
+        double width = x[2 * i + 1] - x[2 * i], at = (uv[i] - x[2 * i]) / width;
+        lo[i] = uv[i] == x[2 * i] ? 0.0 : -(at + 8.0 * DBL_EPSILON);
+        hi[i] = uv[i] == x[2 * i + 1] ? 0.0 : (1.0 - at) + 8.0 * DBL_EPSILON;
+        double a = g[i] - dg[i], b = g[i] + dg[i];
+        g0[i] = a * width * (a > 0.0 ? down : up);
+        g1[i] = b * width * (b > 0.0 ? up : down);
+    }
+    if (!(B >= 0.0 && isfinite(A) && isfinite(B) && isfinite(C)))
+        return -INFINITY;
+    /* alpha = 1; the t part convex (C - B / alpha = C / 2); the s part convex; balanced */
+    double alphas[4] = {1.0, C > 0.0 && B > 0.0 ? 2.0 * B / C : 1.0,
+                        A > 0.0 && B > 0.0 ? A / (2.0 * B) : 1.0,
+                        A > 0.0 && C > 0.0 ? sqrt(C / A) : 1.0};
+    double best = -INFINITY;
+    for (int k = 0; k < 4; k++) {
+        double al = alphas[k], mag = 0.0;
+        if (!(al > 0.0 && isfinite(al)))
+            continue;
+        double d = quad_min(g0[0], g1[0], A - B * al, lo[0], hi[0], &mag) +
+                   quad_min(g0[1], g1[1], C - B / al, lo[1], hi[1], &mag);
+        best = fmax(best, d - 16.0 * DBL_EPSILON * mag);
+    }
+    return best;
+}

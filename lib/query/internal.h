@@ -67,4 +67,23 @@ int bsi_patch_closest_one(const bs_patch *p, const double *q, double d_scale, do
 int bsi_patch_closest_dist(const bs_patch *p, const double *q, double d_scale, double *best_d,
                            double uv[2], size_t *boxes);
 
+/* A part of a patch's domain that a closest-point search is held to (a trimmed face of a model,
+ * lib/model/): box() says where the box st = (s0, s1, t0, t1) of the domain of patch `patch`
+ * lies, point() whether (s, t) is in the part (its boundary counted in). */
+#define BSI_CL_OUT 0
+#define BSI_CL_IN 1
+#define BSI_CL_CROSS 2 /* the part's boundary may pass through the box */
+typedef struct bsi_cl_part {
+    int (*box)(const void *ctx, uint32_t patch, const double st[4]);
+    int (*point)(const void *ctx, uint32_t patch, double s, double t);
+    const void *ctx;
+    uint32_t patch;
+} bsi_cl_part;
+
+/* bsi_patch_closest_dist over the part of the domain only, NULL for the whole domain. The answer
+ * is certified for the part's interior: a closest point on the part's boundary is the caller's to
+ * find (the search prunes boxes where f has no local minimum, which leaves such points out). */
+int bsi_patch_closest_part(const bs_patch *p, const double *q, double d_scale, double *best_d,
+                           double uv[2], const bsi_cl_part *part);
+
 #endif

@@ -45,6 +45,14 @@ struct bsi_loc_trim {
     void (*to_face)(const bsi_loc_trim *t, uint32_t patch, double u, double v, uint32_t *face,
                     double uv[2], double nrm[3]);
     void (*release)(bsi_loc_trim *t);
+    /* Closest points (locator_closest.c): box() and point() are a bsi_cl_part's calls (ctx the
+     * record) for the face of a patch; boundary() searches the faces' trims for a point nearer to
+     * q than *best_d (within the tolerance of bsi_patch_closest_one): 1 when found (*best_d, *patch
+     * and st set), 0 when none is nearer, -2 when the search cannot be certified. */
+    int (*box)(const void *t, uint32_t patch, const double st[4]);
+    int (*point)(const void *t, uint32_t patch, double s, double u);
+    int (*boundary)(const bsi_loc_trim *t, const double *q, double *best_d, uint32_t *patch,
+                    double st[2]);
 };
 
 struct bs_locator {

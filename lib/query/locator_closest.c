@@ -12,6 +12,7 @@
 #include <stdlib.h>
 
 #define STACK 128 /* as in locator_ray.c: far more than the depth of a median-split tree */
+#define RETRY 64  /* a model's patches searched again once its trims' distance is known */
 
 /* Distance from q to box (lo, hi) without overflow or underflow (+Inf only beyond DBL_MAX):
  * the gaps halved, then scaled by their largest. */
@@ -42,6 +43,13 @@ static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t m
     size_t dim = L->dim;
     double best = INFINITY;
     int top = 0;
+    bsi_cl_part part = {NULL, NULL, L->trim, 0};
+    uint32_t retry[RETRY]; /* faces' patches whose search could not end without the trims' best */
+    size_t nretry = 0;
+    if (L->trim) { /* a model's faces: held inside their trims, which are searched after */
+        part.box = L->trim->box;
+        part.point = L->trim->point;
+    }
     stack[top].node = 0;
     stack[top++].d = box_distance(L->box, L->box + dim, q, dim);
     while (top > 0) {
@@ -55,7 +63,13 @@ static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t m
                 if (stamp[i] == mark)
                     continue;
                 stamp[i] = mark;
-                int r = bsi_patch_closest_dist(L->patches[i], q, L->diag, &best, uv, NULL);
+                part.patch = i;
+                int r = bsi_patch_closest_part(L->patches[i], q, L->diag, &best, uv,
+                                               L->trim ? &part : NULL);
+                if (r == -2 && L->trim && nretry < RETRY) {
+                    retry[nretry++] = i;
+                    continue;
+                }
                 if (r < 0)
                     return r;
                 if (r == 1)
@@ -76,6 +90,16 @@ static int closest(const bs_locator *L, const double *q, size_t *stamp, size_t m
                 stack[top++].d = d[c];
             }
         }
+    }
+    if (L->trim) { /* the trims, then the faces whose search needed their distance */
+        int r = L->trim->boundary(L->trim, q, &best, id, uv);
+        for (size_t k = 0; k < nretry && r >= 0; k++) {
+            part.patch = retry[k];
+            r = bsi_patch_closest_part(L->patches[retry[k]], q, L->diag, &best, uv, &part);
+            *id = r == 1 ? retry[k] : *id;
+        }
+        if (r < 0)
+            return r;
     }
     return 0;
 }
@@ -99,11 +123,18 @@ static void put(const bs_locator *L, size_t k, const double *q, uint32_t id, con
         for (size_t c = 0; c < L->dim; c++)
             d = hypot(d, x[c] - q[c]);
     }
+    double u = id != UINT32_MAX ? at[0] : NAN, v = id != UINT32_MAX ? at[1] : NAN;
+    if (L->trim && id != UINT32_MAX) { /* a model's: its face and native parameters */
+        double fuv[2], nrm[3] = {0.0, 0.0, 0.0};
+        L->trim->to_face(L->trim, id, u, v, &id, fuv, nrm);
+        u = fuv[0];
+        v = fuv[1];
+    }
     if (patch)
         patch[k] = id;
     if (uv) {
-        *bsi_at(&uv[0], k) = id != UINT32_MAX ? at[0] : NAN;
-        *bsi_at(&uv[1], k) = id != UINT32_MAX ? at[1] : NAN;
+        *bsi_at(&uv[0], k) = u;
+        *bsi_at(&uv[1], k) = v;
     }
     if (dist)
         *bsi_at(dist, k) = d;
@@ -127,8 +158,6 @@ bs_status bsi_loc_closest_check(const bs_locator *L, size_t n, const bs_cview *q
 {
     if (L == NULL)
         return BS_ERR_INVALID_ARG;
-    if (L->trim) /* a model's trimmed faces: not served yet (docs/models.md) */
-        return BS_ERR_UNSUPPORTED;
     if (n == 0)
         return BS_OK;
     if (q == NULL)

@@ -9,7 +9,8 @@
  *   must hit at that point, with the face's outward normal;
  * - rays aimed at points of the untrimmed surfaces just outside the trims (at least 1e-5 D: in
  *   holes, past edges), which must not hit that face there;
- * - the argument rules, and closest points refused (BS_ERR_UNSUPPORTED). */
+ * - the argument rules, and a closest point reported as a face and native parameters
+ *   (test_model_closest.c checks closest points on every part). */
 #include "harness.h"
 
 #include <bezsurf.h>
@@ -263,11 +264,22 @@ static void arguments(void)
     CHECK_STATUS(bs_locator_create_model(m, &L), BS_OK);
     double q[3] = {0, 0, 100};
     bs_cview qv[3] = {{&q[0], 1, 0}, {&q[1], 1, 0}, {&q[2], 1, 0}};
-    double dist = 7;
-    bs_view dv = {&dist, 1, 0};
-    CHECK_STATUS(bs_locator_closest_point(L, 1, qv, NULL, NULL, &dv, NULL), BS_ERR_UNSUPPORTED);
-    CHECK_STATUS(bs_locator_closest_point_mt(L, 1, qv, NULL, NULL, &dv, NULL, 2), BS_ERR_UNSUPPORTED);
-    CHECK(dist == 7);
+    /* closest points: the face id and native (u, v); the top disc (z = 7) from the axis */
+    double dist = 7, uv[2] = {7, 7}, dist2 = 0;
+    uint32_t face = 7;
+    bs_view dv = {&dist, 1, 0}, dv2 = {&dist2, 1, 0}, uvv[2] = {{&uv[0], 1, 0}, {&uv[1], 1, 0}};
+    CHECK_STATUS(bs_locator_closest_point(L, 1, qv, &face, uvv, &dv, NULL), BS_OK);
+    CHECK_STATUS(bs_locator_closest_point_mt(L, 1, qv, NULL, NULL, &dv2, NULL, 2), BS_OK);
+    CHECKF(face == 1 && fabs(dist - 93.0) <= 1e-12 && dist2 == dist && fabs(uv[0]) <= 1e-12 &&
+               fabs(uv[1]) <= 1e-12, "face %u at %g %g, %g", face, uv[0], uv[1], dist);
+    /* no query point, a NaN one, a short view */
+    CHECK_STATUS(bs_locator_closest_point(L, 1, NULL, NULL, NULL, &dv, NULL), BS_ERR_INVALID_ARG);
+    CHECK_STATUS(bs_locator_closest_point(L, 0, NULL, NULL, NULL, NULL, NULL), BS_OK);
+    q[0] = NAN;
+    CHECK_STATUS(bs_locator_closest_point(L, 1, qv, &face, uvv, &dv, NULL), BS_OK);
+    CHECK(face == UINT32_MAX && isnan(dist) && isnan(uv[0]));
+    bs_view shortv = {&dist, 0, 0};
+    CHECK_STATUS(bs_locator_closest_point(L, 1, qv, NULL, NULL, &shortv, NULL), BS_ERR_SIZE);
     CHECK(bs_locator_dim(L) == 3);
     bs_locator_destroy(L);
     bs_model_destroy(m);

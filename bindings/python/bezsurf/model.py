@@ -320,7 +320,7 @@ class Model(Handle):
         return int(nverts.value), int(ntris.value)
 
     def locator(self) -> "ModelLocator":
-        """A locator of the model's trimmed faces, for rays (since 1.2): see
+        """A locator of the model's trimmed faces, for rays and closest points (since 1.2): see
         :class:`ModelLocator`."""
         return ModelLocator(self)
 
@@ -374,14 +374,17 @@ __all__ = ["Model", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_
 
 
 class ModelLocator(Locator):
-    """Rays on the trimmed faces of a :class:`Model` (``bs_locator_create_model``, since 1.2).
+    """Rays and closest points on the trimmed faces of a :class:`Model`
+    (``bs_locator_create_model``, since 1.2).
 
     :meth:`intersect` answers with the first hit inside a trimmed face (hits on a face's surface
     outside its trims are skipped): ``patch`` holds **face** ids, ``uv`` native face parameters
     and ``normal`` the outward normals. A point within 1e-7 of the model's size from a trim
-    counts as inside, so that a ray through an edge hits one of its two faces. Closest points on
-    models are not served yet: :meth:`closest_point` raises :class:`UnsupportedError`. The
-    locator keeps its model alive; copies and pickles rebuild it from the model.
+    counts as inside, so that a ray through an edge hits one of its two faces.
+    :meth:`closest_point` gives the closest point of the union of the trimmed faces, certified
+    within 1e-9 (D + d) as for a surface, with face ids and native parameters (on a trim where
+    the surface's own closest point lies outside its face). The locator keeps its model alive;
+    copies and pickles rebuild it from the model.
     """
 
     def __init__(self, model: Model) -> None:  # pylint: disable=super-init-not-called

@@ -485,13 +485,15 @@ impl Model {
     }
 }
 
-/// Rays on the trimmed faces of a [`Model`] (`bs_locator_create_model`, since 1.2), borrowed
-/// from the model it was made of. Derefs to [`Locator`]: [`Locator::intersect`] answers with the
-/// first hit inside a trimmed face (hits outside a face's trims are skipped), `patch` holding the
-/// **face** id, `uv` native face parameters and `normal` the outward normal; a point within 1e-7
-/// of the model's size from a trim counts as inside, so a ray through an edge hits one of its
-/// faces. Closest points on models are not served yet: [`Locator::closest_points`] returns an
-/// `Unsupported` error.
+/// Rays and closest points on the trimmed faces of a [`Model`] (`bs_locator_create_model`,
+/// since 1.2), borrowed from the model it was made of. Derefs to [`Locator`]:
+/// [`Locator::intersect`] answers with the first hit inside a trimmed face (hits outside a
+/// face's trims are skipped), `patch` holding the **face** id, `uv` native face parameters and
+/// `normal` the outward normal; a point within 1e-7 of the model's size from a trim counts as
+/// inside, so a ray through an edge hits one of its faces. [`Locator::closest_points`] gives the
+/// closest point of the union of the trimmed faces (certified within 1e-9 (D + d) as on a
+/// surface; on a trim where the surface's own closest point lies outside its face), `patch`
+/// again holding face ids and `uv` native face parameters.
 ///
 /// ```no_run
 /// use bezsurf::{Model, Ray};
@@ -543,7 +545,7 @@ impl Model {
         Ok((nv, nt))
     }
 
-    /// A locator of the model's trimmed faces, for rays ([`ModelLocator`]).
+    /// A locator of the model's trimmed faces, for rays and closest points ([`ModelLocator`]).
     pub fn locator(&self) -> Result<ModelLocator<'_>> {
         let mut out = std::ptr::null_mut();
         // SAFETY: the model is live and outlives the locator (the borrow); out is valid.
