@@ -1,4 +1,5 @@
-/* bezsurf closest: the point of a surface closest to a given point, through a locator. */
+/* bezsurf closest: the point of a surface, or of a model's trimmed faces, closest to a given
+ * point, through a locator. */
 #include "cmds.h"
 
 #include <stdio.h>
@@ -12,7 +13,11 @@ static const char usage[] =
     "  PATCH U V x y z DISTANCE\n"
     "the patch id, the parameters on it, the point (what 'bezsurf eval --point PATCH U V' gives)\n"
     "and its distance to (X, Y, Z), numbers with the fewest digits (at most 17) that read back\n"
-    "exactly. X, Y and Z are finite numbers and may be negative.\n"
+    "exactly. A STEP or IGES file is a model: the point is the closest of its trimmed faces (on a\n"
+    "trim where the surface's own closest point lies outside the face), and the line is\n"
+    "  FACE U V x y z DISTANCE\n"
+    "with the face id and native face parameters. X, Y and Z are finite numbers and may be\n"
+    "negative.\n"
     "Exit status: 0 success, 1 bad command line, 2 bad input, 3 output not written,\n"
     "4 library failure.\n";
 
@@ -40,10 +45,11 @@ int cmd_closest(int argc, char **argv)
     if (nq < 3)
         return cli_usage_error(cmd, "three coordinates X Y Z are needed", NULL);
     bs_surface *s = NULL;
-    int rc = cli_load(cmd, &in, &s);
+    bs_model *m = NULL;
+    int rc = cli_input_is_model(&in) ? cli_load_model(cmd, &in, &m) : cli_load(cmd, &in, &s);
     if (rc != CLI_OK)
         return rc;
-    if (bs_surface_dim(s) != 3) {
+    if (s != NULL && bs_surface_dim(s) != 3) {
         bs_surface_destroy(s);
         return cli_fail(cmd, CLI_INPUT, "the surface is not 3-D");
     }
@@ -53,11 +59,12 @@ int cmd_closest(int argc, char **argv)
     const bs_cview qv[3] = {{&q[0], 1, 0}, {&q[1], 1, 0}, {&q[2], 1, 0}};
     const bs_view uvv[2] = {{&uv[0], 1, 0}, {&uv[1], 1, 0}}, dv = {&dist, 1, 0};
     const bs_view pv[3] = {{&pos[0], 1, 0}, {&pos[1], 1, 0}, {&pos[2], 1, 0}};
-    bs_status st = bs_locator_create(s, &L);
+    bs_status st = m != NULL ? bs_locator_create_model(m, &L) : bs_locator_create(s, &L);
     if (st == BS_OK)
         st = bs_locator_closest_point(L, 1, qv, &patch, uvv, &dv, pv);
     bs_locator_destroy(L);
     bs_surface_destroy(s);
+    bs_model_destroy(m);
     if (st != BS_OK)
         return cli_fail(cmd, CLI_INTERNAL, "%s", bs_status_string(st));
     if (patch == UINT32_MAX)

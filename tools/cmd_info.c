@@ -74,11 +74,7 @@ int cmd_info(int argc, char **argv)
     }
     bs_surface *s;
     bs_model *model = NULL;
-    const cli_format *fmt = NULL;
-    if (in.path != NULL && strcmp(in.path, "-") != 0)
-        fmt = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
-    /* STEP and IGES files are models; an OBJ file is described as its surfaces, as in 1.1 */
-    int is_model = fmt && fmt->read_model_file && strcmp(fmt->name, "obj") != 0;
+    int is_model = cli_input_is_model(&in);
     int rc = is_model ? cli_load_model(cmd, &in, &model) : cli_load(cmd, &in, &s);
     if (rc != CLI_OK)
         return rc;

@@ -226,11 +226,7 @@ int cmd_tessellate(int argc, char **argv)
     int rc = to_stdout ? CLI_OK : cli_check_output("tessellate", output); /* before the work */
     if (rc != CLI_OK)
         return rc;
-    const cli_format *fmt = NULL;
-    if (in.path != NULL && strcmp(in.path, "-") != 0)
-        fmt = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
-    /* STEP and IGES files are models; an OBJ file is tessellated as its surfaces, as in 1.1 */
-    int is_model = fmt && fmt->read_model_file && strcmp(fmt->name, "obj") != 0;
+    int is_model = cli_input_is_model(&in);
     bs_surface *s = NULL;
     if (!is_model) {
         rc = cli_load("tessellate", &in, &s);

@@ -81,6 +81,9 @@ void cli_default_output(const cli_input *in, const char *ext, char *out, size_t 
 int cli_load(const char *cmd, const cli_input *in, bs_surface **out);
 /* Load the input as a model (a .bpt file or built-in: bs_model_from_surface); as cli_load. */
 int cli_load_model(const char *cmd, const cli_input *in, bs_model **out);
+/* 1 when the input is a STEP or IGES file, which the commands take as a model of trimmed faces
+ * (an OBJ file stays its surfaces there, as in 1.1). */
+int cli_input_is_model(const cli_input *in);
 /* Human-readable name of the input, for reports. */
 const char *cli_input_name(const cli_input *in);
 /* Parse a finite number / a non-negative integer; 1 on success. */

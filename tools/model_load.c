@@ -40,3 +40,11 @@ int cli_load_model(const char *cmd, const cli_input *in, bs_model **out)
         return cli_fail(cmd, CLI_INTERNAL, "%s: %s", in->path, bs_status_string(st));
     return CLI_OK;
 }
+
+int cli_input_is_model(const cli_input *in)
+{
+    const cli_format *fmt = NULL;
+    if (in->path != NULL && strcmp(in->path, "-") != 0)
+        fmt = in->format ? cli_format_named(in->format) : cli_format_of_path(in->path);
+    return fmt != NULL && fmt->read_model_file != NULL && strcmp(fmt->name, "obj") != 0;
+}

@@ -407,15 +407,17 @@ BS_API bs_status bs_model_tessellate_count(const bs_model *m, const bs_tess_opti
 
 /**
  * @brief A locator of the model's trimmed faces, for rays (bs_locator_intersect() and its
- * variants). A ray's answer is its first hit inside a trimmed face: hits on a face's surface
+ * variants) and closest points (bs_locator_closest_point() and its variant). A ray's answer is its first hit inside a trimmed face: hits on a face's surface
  * outside its trims are skipped and the search goes on beyond them; a point within 1e-7 D of a
  * trim (D the diagonal of the model's control points) counts as inside, so that a ray through the
  * edge between two faces hits one of them even where the file's trims of the two stand a little
  * apart. `patch` receives the **face** id, `uv` the native face parameters, `nrm` the face's
  * outward normal (`reversed` applied; kinds as for a surface's locator). The guarantee of rays
  * is that of bs_locator_intersect() on the faces' patches, restricted to the trimmed faces.
- * Closest points on a model's locator are not served yet: bs_locator_closest_point() and
- * bs_locator_closest_point_mt() return BS_ERR_UNSUPPORTED for it.
+ * A closest point is the closest point of the union of the trimmed faces, within
+ * tau = 1e-9 (D + d) of the exact distance d as on a surface (on a trim where the surface's own
+ * closest point lies outside the face), reported as the face id, its native (u, v), the point
+ * and the distance; a point of the surface within 1e-10 D of a trim counts as on the face.
  * The locator refers to the model: m must outlive it (m is not changed; models are immutable).
  * @param[in]  m    the model.
  * @param[out] out  receives the locator (bs_locator_destroy()); NULL on failure.

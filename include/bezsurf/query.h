@@ -134,8 +134,12 @@ BS_API size_t bs_locator_dim(const bs_locator *L);
  * @param[out] uv     NULL or 2 views receiving the parameters.
  * @param[out] dist   NULL or 1 view receiving the distances.
  * @param[out] pos    NULL or dim views receiving the closest points.
+ * On a model's locator (bs_locator_create_model(), since 1.2) the answer is the closest point of
+ * the union of the trimmed faces, with the same guarantee: `patch` receives the face id and `uv`
+ * the native face parameters (docs/models.md).
  * @return as bs_patch_closest_point(), with L in place of p (BS_ERR_PRECISION when a patch that
- *         could hold the answer cannot be certified; nothing is written then).
+ *         could hold the answer cannot be certified, or on a model a trim near the answer;
+ *         nothing is written then).
  * @since 1.1
  */
 BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const bs_cview *q,

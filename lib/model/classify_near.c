@@ -289,9 +289,28 @@ static int trim_near(const near_ctx *x, const bsi_curve *c)
     return 0;
 }
 
+/* 1 when (u, v) lies exactly on the trim c, an iso-line (one coordinate constant): the common
+ * case of a point found on a side of a patch, answered without a search. */
+static int on_iso_line(const bsi_curve *c, double u, double v)
+{
+    double at[2] = {u, v}, x, lo[2], hi[2];
+    for (size_t d = 0; d < 2; d++)
+        if (at[d] == c->hom[d] / c->hom[2] && constant_coord(c, d, &x)) {
+            bsi_curve_bounds(c, lo, hi);
+            if (at[1 - d] >= lo[1 - d] && at[1 - d] <= hi[1 - d])
+                return 1;
+        }
+    return 0;
+}
+
 int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, double tol, int seams)
 {
     const bsi_face *face = &m->faces[f];
+    for (size_t l = face->first_loop; l < face->first_loop + face->loop_count; l++)
+        for (size_t t = m->loops[l].first_trim; t < m->loops[l].first_trim + m->loops[l].trim_count; t++)
+            if (m->trims[t].uv.axis.n > 0 && (seams || !bsi_trim_is_seam(m, f, t)) &&
+                on_iso_line(&m->trims[t].uv, u, v))
+                return 1;
     near_ctx x;
     x.m = m, x.f = f, x.box = face->box, x.tol = tol;
     if (!surface_point(m, f, u, v, x.p))

@@ -40,6 +40,7 @@ typedef struct trim_piece {
     size_t degree;
     double m1, m2;         /* bounds of |C'| and |C''| over r in [0, 1] */
     double du, dv;         /* bounds of |u'| and |v'| */
+    double sd[4];          /* bounds of |s'|, |t'|, |s''|, |t''| (the patch's own parameters) */
     double slack;          /* a pole's piece: how far its image may be from one point (else 0) */
     sample top[TOP];       /* at the middles of [k, k+1] / TOP: the search's first level */
     int top_ok;            /* 1 when every one was found */
@@ -209,6 +210,60 @@ static double pole_spread(const bs_model *m, const bsi_face *face, const trim_pi
     return -1.0;
 }
 
+/* Bounds of |C'| (m1) and |C''| (m2) from bounds b[5] of the patch's partials (net_bounds) and
+ * sd[4] of the derivatives of the patch parameters along the curve: the chain rule. */
+static void chain(const double *b, const double *sd, double *m1, double *m2)
+{
+    *m1 = b[0] * sd[0] + b[1] * sd[1];
+    *m2 = b[2] * sd[0] * sd[0] + 2.0 * b[3] * sd[0] * sd[1] + b[4] * sd[1] * sd[1] + b[0] * sd[2] +
+          b[1] * sd[3];
+}
+
+#define LOCAL_POINTS 100 /* nets of at most this many points get local bounds */
+
+/* m1 and m2 over the native box of half-widths (hu, hv) around the sample x (inside its patch):
+ * net_bounds of the patch's sub-net over the box, its partials rescaled to the patch's own
+ * parameters. Where weights vary wildly over a patch its global bounds are far too large
+ * (1 / min w); the sub-net's weights vary little. 0 when not made (a large net). */
+static int local_bounds(const bsi_trim_search *ts, const trim_piece *pc, const sample *x,
+                        double hu, double hv, double *m1, double *m2)
+{
+    uint32_t id, id2;
+    double a[2], b[2];
+    const double *c = x->cell;
+    if (!bsi_face_locate(ts->m, pc->face, c[4] - hu, c[5] - hv, &id, a) ||
+        !bsi_face_locate(ts->m, pc->face, c[4] + hu, c[5] + hv, &id2, b) || id != id2)
+        return 0;
+    const bs_patch *pt = bs_surface_get(ts->m->surface, id);
+    size_t m = pt->deg_u, n = pt->deg_v, nv = n + 1, nc = pt->ncoord, count = (m + 1) * nv;
+    if (count > LOCAL_POINTS)
+        return 0;
+    double h[LOCAL_POINTS * 4], pts[LOCAL_POINTS * 3], w[LOCAL_POINTS], box[4], bd[5];
+    for (size_t k = 0; k < count; k++)
+        for (size_t e = 0; e < nc; e++)
+            h[k * nc + e] = pt->hom[e * count + k];
+    for (int d = 0; d < 2; d++) { /* at least a sliver wide: the rescaling divides by it */
+        double lo = bsi_dmin(a[d], b[d]), hi = bsi_dmax(a[d], b[d]);
+        if (hi - lo < 1e-9)
+            lo = bsi_dmax(0.0, lo - 1e-9), hi = bsi_dmin(1.0, hi + 1e-9);
+        box[2 * d] = lo, box[2 * d + 1] = hi;
+    }
+    for (size_t j = 0; j <= n; j++)
+        bsi_sub_line(h + j * nc, m, nv * nc, nc, box[0], box[1]);
+    for (size_t i = 0; i <= m; i++)
+        bsi_sub_line(h + i * nv * nc, n, nc, nc, box[2], box[3]);
+    for (size_t k = 0; k < count; k++) {
+        w[k] = pt->rational ? h[k * nc + 3] : 1.0;
+        for (size_t e = 0; e < 3; e++)
+            pts[k * 3 + e] = h[k * nc + e] / w[k];
+    }
+    net_bounds(pts, pt->rational ? w : NULL, m, n, 3, bd);
+    double ds = box[1] - box[0], dt = box[3] - box[2];
+    bd[0] /= ds, bd[1] /= dt, bd[2] /= ds * ds, bd[3] /= ds * dt, bd[4] /= dt * dt;
+    chain(bd, pc->sd, m1, m2);
+    return isfinite(*m1) && isfinite(*m2);
+}
+
 /* Bounds of piece pc (its face, segment and degree set): du, dv, m1, m2, the ball. */
 static void piece_bounds(const bsi_trim_search *ts, trim_piece *pc, const double *face_b,
                          const double *axis_b)
@@ -230,9 +285,8 @@ static void piece_bounds(const bsi_trim_search *ts, trim_piece *pc, const double
     double a1 = cb[sw][0], a2 = cb[sw][2], b1 = cb[!sw][0], b2 = cb[!sw][2];
     double su = axis_b[0] * a1, sv = axis_b[2] * b1; /* bounds of |s'| and |t'| */
     double suu = axis_b[1] * a1 * a1 + axis_b[0] * a2, svv = axis_b[3] * b1 * b1 + axis_b[2] * b2;
-    pc->m1 = face_b[0] * su + face_b[1] * sv;
-    pc->m2 = face_b[2] * su * su + 2.0 * face_b[3] * su * sv + face_b[4] * sv * sv +
-             face_b[0] * suu + face_b[1] * svv;
+    pc->sd[0] = su, pc->sd[1] = sv, pc->sd[2] = suu, pc->sd[3] = svv;
+    chain(face_b, pc->sd, &pc->m1, &pc->m2);
     double spread = pole_spread(ts->m, face, pc);
     if (spread >= 0.0) { /* the image is a point (a pole) within spread */
         pc->m1 = pc->m2 = 0.0;
@@ -352,14 +406,18 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
             uv_best[1] = x->cell[5];
             found = 1;
         }
-        double lb = d - 0.5 * pc->m1 * h;
-        if (in_cell(x, 0.5 * h * pc->du, 0.5 * h * pc->dv)) {
-            double G = 2.0 * pc->m1 * pc->m1 + 2.0 * (d + 0.5 * pc->m1 * h) * pc->m2;
+        double hu = 0.5 * h * pc->du, hv = 0.5 * h * pc->dv, m1 = pc->m1, m2 = pc->m2;
+        double lb = d - 0.5 * m1 * h, floor = *best - 0.5e-9 * (ts->diag + *best);
+        double noise = 64.0 * DBL_EPSILON * mag + pc->slack; /* the evaluation's rounding */
+        int one = in_cell(x, hu, hv);
+        for (int pass = 0; pass < 2 && one; pass++) { /* global bounds, then local ones */
+            if (pass == 1 && (lb - noise >= floor || !local_bounds(ts, pc, x, hu, hv, &m1, &m2)))
+                break;
+            double G = 2.0 * m1 * m1 + 2.0 * (d + 0.5 * m1 * h) * m2;
             double glb = g - fabs(gp) * 0.5 * h * (1.0 + 1e-9) - G * h * h / 8.0;
-            lb = bsi_dmax(lb, sqrt(bsi_dmax(glb, 0.0)));
+            lb = bsi_dmax(lb, bsi_dmax(d - 0.5 * m1 * h, sqrt(bsi_dmax(glb, 0.0))));
         }
-        lb -= 64.0 * DBL_EPSILON * mag + pc->slack; /* the evaluation's rounding */
-        if (lb >= *best - 0.5e-9 * (ts->diag + *best))
+        if (lb - noise >= floor)
             continue;
         if (iv.depth >= DEPTH)
             return -2;

@@ -174,6 +174,8 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
     if (!(f0 < s->f))
         return;
     double f = bsi_cl_newton(w, x);
+    if (!(f < s->f))
+        return;
     if (!in_part(s, x)) {
         if (in_part(s, x0)) {
             s->f = f0;
@@ -182,13 +184,11 @@ static void try_candidate(bsi_cl *w, search *s, const box *b, const bsi_cl_bound
         }
         return;
     }
-    if (f < s->f) {
-        s->f = f;
-        s->uv[0] = x[0];
-        s->uv[1] = x[1];
-        if (sqrt(f) > tolerance(s))
-            certify(w, s);
-    }
+    s->f = f;
+    s->uv[0] = x[0];
+    s->uv[1] = x[1];
+    if (sqrt(f) > tolerance(s))
+        certify(w, s);
 }
 
 /* Whether box b survives: its bounds against the best (its second-order bound computed, and

@@ -180,22 +180,4 @@ BSI_INLINE int bsi_cl_slack(const bsi_cl *w, size_t m, size_t n)
     return eu > ev ? BS_DIR_U : BS_DIR_V;
 }
 
-/* The part [a, b] of len lines of deg+1 values at once (value e of point k at x[k stride + e]),
- * in place: at b from the left, then at a/b from the right. */
-BSI_INLINE void bsi_cl_sub_line(double *x, size_t deg, size_t stride, size_t len, double a,
-                                double b)
-{
-    /* [0, b]: after step r the point r of the left part is x[0] of that step; keep them in
-     * place by running the recurrence from the right end */
-    for (size_t r = 1; r <= deg; r++)
-        for (size_t k = deg; k >= r; k--)
-            for (size_t e = 0; e < len; e++)
-                x[k * stride + e] = (1.0 - b) * x[(k - 1) * stride + e] + b * x[k * stride + e];
-    double t = b > 0.0 ? a / b : 0.0; /* [a, b] is [t, 1] of [0, b] */
-    for (size_t r = 1; r <= deg; r++)
-        for (size_t k = 0; k + r <= deg; k++)
-            for (size_t e = 0; e < len; e++)
-                x[k * stride + e] = (1.0 - t) * x[k * stride + e] + t * x[(k + 1) * stride + e];
-}
-
 #endif

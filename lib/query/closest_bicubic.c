@@ -45,9 +45,9 @@ BSI_HOT void bsi_cl_split3(const double *src, int dir, double *lo, double *hi)
 
 BSI_HOT void bsi_cl_region3(double *net, const double x[4])
 {
-    bsi_cl_sub_line(net, 3, 12, 12, x[0], x[1]); /* along u: the rows of 12 values at once */
+    bsi_sub_line(net, 3, 12, 12, x[0], x[1]); /* along u: the rows of 12 values at once */
     for (size_t i = 0; i < 4; i++)
-        bsi_cl_sub_line(net + i * 12, 3, 3, 3, x[2], x[3]); /* along v: 4 points of 3 */
+        bsi_sub_line(net + i * 12, 3, 3, 3, x[2], x[3]); /* along v: 4 points of 3 */
 }
 
 BSI_HOT double bsi_cl_box3(const double *net) { return bsi_cl_box_gap2(net, 16, 3); }

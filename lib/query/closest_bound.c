@@ -340,10 +340,10 @@ void bsi_cl_region(bsi_cl *w, const double x[4])
     }
     for (size_t j = 0; j <= n; j++)
         for (size_t c = 0; c < nc; c++)
-            bsi_cl_sub_line(w->region + j * nc + c, m, (n + 1) * nc, 1, x[0], x[1]);
+            bsi_sub_line(w->region + j * nc + c, m, (n + 1) * nc, 1, x[0], x[1]);
     for (size_t i = 0; i <= m; i++)
         for (size_t c = 0; c < nc; c++)
-            bsi_cl_sub_line(w->region + i * (n + 1) * nc + c, n, nc, 1, x[2], x[3]);
+            bsi_sub_line(w->region + i * (n + 1) * nc + c, n, nc, 1, x[2], x[3]);
 }
 
 double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *wlo, double *whi,

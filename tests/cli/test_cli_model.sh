@@ -97,6 +97,22 @@ n=$(sed -n 's/.* \([0-9]*\) triangles.*/\1/p' "$work/out")
 expect 0 "render --wire again" -- "$tool" render --wire -r 1e-3 --size 200x150 -o "$work/cone-wire.png" "$cad/cone.step"
 has out ", $n triangles" "render --wire draws the $n triangles of the model's mesh"
 
+# closest: on the trimmed faces of a model (face id, native uv, point, distance); the block's
+# first .ref point lies beside a hole, where the kernel's distance is 1.495303296449455
+expect 0 "closest on the cone" -- "$tool" closest 0 0 100 "$cad/cone.step"
+has out "1 -2.220446049250313e-16 -2.220446049250313e-16 " "the top disc (face 1) at its centre"
+has out " 7 93" "z = 7, 93 away"
+read -r q1 q2 q3 kd <<EOF_REF
+$(sed -n 's/^closest \([^ ]*\) \([^ ]*\) \([^ ]*\) dist \(.*\)/\1 \2 \3 \4/p' "$cad/block.ref" | head -1)
+EOF_REF
+expect 0 "closest on the block" -- "$tool" closest -- "$q1" "$q2" "$q3" "$cad/block.step"
+d=$(awk '{print $7}' "$work/out")
+check "awk -v d='$d' -v k='$kd' 'BEGIN { exit !(d <= k + 1e-7 * 50) }'" "no farther than the kernel's $kd ($d)"
+expect 0 "closest on the block's patches (.bpt: untrimmed)" -- "$tool" convert "$cad/block.step" "$work/block.bpt"
+expect 0 "closest on the untrimmed patches" -- "$tool" closest -- "$q1" "$q2" "$q3" "$work/block.bpt"
+du=$(awk '{print $7}' "$work/out")
+check "awk -v d='$d' -v u='$du' 'BEGIN { exit !(u <= d) }'" "the untrimmed surface is no farther ($du <= $d)"
+
 # errors
 printf 'ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=CARTESIAN_POINT(%s,(0.,0.,0.);\nENDSEC;\nEND-ISO-10303-21;\n' "''" \
     > "$work/bad.step"
