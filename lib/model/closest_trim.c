@@ -40,6 +40,7 @@ typedef struct trim_piece {
     size_t degree;
     double m1, m2;         /* bounds of |C'| and |C''| over r in [0, 1] */
     double du, dv;         /* bounds of |u'| and |v'| */
+    int in_box[2];         /* the control points lie in the face's box along u, along v */
     double sd[4];          /* bounds of |s'|, |t'|, |s''|, |t''| (the patch's own parameters) */
     double slack;          /* a pole's piece: how far its image may be from one point (else 0) */
     sample top[TOP];       /* at the middles of [k, k+1] / TOP: the search's first level */
@@ -221,18 +222,17 @@ static void chain(const double *b, const double *sd, double *m1, double *m2)
 
 #define LOCAL_POINTS 100 /* nets of at most this many points get local bounds */
 
-/* m1 and m2 over the native box of half-widths (hu, hv) around the sample x (inside its patch):
+/* m1 and m2 over the native box nb (inside one patch):
  * net_bounds of the patch's sub-net over the box, its partials rescaled to the patch's own
  * parameters. Where weights vary wildly over a patch its global bounds are far too large
  * (1 / min w); the sub-net's weights vary little. 0 when not made (a large net). */
-static int local_bounds(const bsi_trim_search *ts, const trim_piece *pc, const sample *x,
-                        double hu, double hv, double *m1, double *m2)
+static int local_bounds(const bsi_trim_search *ts, const trim_piece *pc, const double nb[4],
+                        double *m1, double *m2)
 {
     uint32_t id, id2;
     double a[2], b[2];
-    const double *c = x->cell;
-    if (!bsi_face_locate(ts->m, pc->face, c[4] - hu, c[5] - hv, &id, a) ||
-        !bsi_face_locate(ts->m, pc->face, c[4] + hu, c[5] + hv, &id2, b) || id != id2)
+    if (!bsi_face_locate(ts->m, pc->face, nb[0], nb[2], &id, a) ||
+        !bsi_face_locate(ts->m, pc->face, nb[1], nb[3], &id2, b) || id != id2)
         return 0;
     const bs_patch *pt = bs_surface_get(ts->m->surface, id);
     size_t m = pt->deg_u, n = pt->deg_v, nv = n + 1, nc = pt->ncoord, count = (m + 1) * nv;
@@ -280,6 +280,13 @@ static void piece_bounds(const bsi_trim_search *ts, trim_piece *pc, const double
     }
     pc->du = cb[0][0];
     pc->dv = cb[1][0];
+    for (size_t d = 0; d < 2; d++) {
+        pc->in_box[d] = 1;
+        for (size_t i = 0; i <= p; i++) {
+            double y = pc->seg[i * 3 + d] / pc->seg[i * 3 + 2];
+            pc->in_box[d] &= y >= face->box[2 * d] && y <= face->box[2 * d + 1];
+        }
+    }
     /* canonical directions (s along au, t along av) */
     int sw = face->swap;
     double a1 = cb[sw][0], a2 = cb[sw][2], b1 = cb[!sw][0], b2 = cb[!sw][2];
@@ -358,11 +365,22 @@ bs_status bsi_trim_search_create(const bs_model *m, double diag, bsi_trim_search
     return BS_OK;
 }
 
-/* 1 when the native box around the sample's point of half-widths (hu, hv) lies in its patch. */
-static int in_cell(const sample *x, double hu, double hv)
+/* The native box nb (u0 u1 v0 v1) holding the piece's curve over an interval: around the
+ * sample's point, half-widths (hu, hv), cut to the face's box along a direction where the
+ * segment's control points lie in it (so does the curve); 1 when it lies in the sample's patch. */
+static int interval_box(const bsi_trim_search *ts, const trim_piece *pc, const sample *x,
+                        double hu, double hv, double nb[4])
 {
-    const double *c = x->cell;
-    return c[4] - hu >= c[0] && c[4] + hu <= c[1] && c[5] - hv >= c[2] && c[5] + hv <= c[3];
+    const double *c = x->cell, *box = ts->m->faces[pc->face].box;
+    double half[2] = {hu, hv};
+    int in = 1;
+    for (int d = 0; d < 2; d++) {
+        nb[2 * d] = c[4 + d] - half[d], nb[2 * d + 1] = c[4 + d] + half[d];
+        if (pc->in_box[d])
+            nb[2 * d] = bsi_dmax(nb[2 * d], box[2 * d]), nb[2 * d + 1] = bsi_dmin(nb[2 * d + 1], box[2 * d + 1]);
+        in &= nb[2 * d] >= c[2 * d] && nb[2 * d + 1] <= c[2 * d + 1];
+    }
+    return in;
 }
 
 typedef struct interval {
@@ -409,9 +427,10 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
         double hu = 0.5 * h * pc->du, hv = 0.5 * h * pc->dv, m1 = pc->m1, m2 = pc->m2;
         double lb = d - 0.5 * m1 * h, floor = *best - 0.5e-9 * (ts->diag + *best);
         double noise = 64.0 * DBL_EPSILON * mag + pc->slack; /* the evaluation's rounding */
-        int one = in_cell(x, hu, hv);
+        double nb[4];
+        int one = interval_box(ts, pc, x, hu, hv, nb);
         for (int pass = 0; pass < 2 && one; pass++) { /* global bounds, then local ones */
-            if (pass == 1 && (lb - noise >= floor || !local_bounds(ts, pc, x, hu, hv, &m1, &m2)))
+            if (pass == 1 && (lb - noise >= floor || !local_bounds(ts, pc, nb, &m1, &m2)))
                 break;
             double G = 2.0 * m1 * m1 + 2.0 * (d + 0.5 * m1 * h) * m2;
             double glb = g - fabs(gp) * 0.5 * h * (1.0 + 1e-9) - G * h * h / 8.0;

@@ -214,7 +214,7 @@ class ModelLocatorTest(PlainTestCase):
         c = loc.closest_point((0.0, 0.0, 100.0))
         self.assertEqual(c.patch, 1)  # the face id
         self.assertAlmostEqual(c.dist, 93.0, delta=1e-12)
-        self.assertAlmostEqual(plain(c.position)[2], 7.0, delta=1e-12)
+        self.assertAlmostEqual(plain(c.pos)[2], 7.0, delta=1e-12)
         # the kernel's distances (BRepExtrema_DistShapeShape), never beaten by more than its
         # tolerance
         diag = 0.0
