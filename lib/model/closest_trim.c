@@ -387,6 +387,8 @@ typedef struct interval {
     double a, b;
     unsigned depth;
     const sample *known; /* the sample at its middle when known, else NULL */
+    double m1, m2;       /* bounds of |C'| and |C''| over it: the piece's, or local ones */
+    int local;           /* 1: m1 and m2 are local (their parent's, whose box holds its own) */
 } interval;
 
 /* The branch and bound along one piece against *best (see the top); *evals counts the middles
@@ -399,7 +401,8 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
     size_t top = 0;
     int found = 0;
     for (size_t k = TOP; k-- > 0;)
-        stack[top++] = (interval){(double)k / TOP, (double)(k + 1) / TOP, 3, &pc->top[k]};
+        stack[top++] = (interval){(double)k / TOP, (double)(k + 1) / TOP, 3, &pc->top[k], pc->m1,
+                                  pc->m2, 0};
     while (top > 0) {
         interval iv = stack[--top];
         double r = 0.5 * (iv.a + iv.b), h = iv.b - iv.a;
@@ -424,14 +427,17 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
             uv_best[1] = x->cell[5];
             found = 1;
         }
-        double hu = 0.5 * h * pc->du, hv = 0.5 * h * pc->dv, m1 = pc->m1, m2 = pc->m2;
+        double hu = 0.5 * h * pc->du, hv = 0.5 * h * pc->dv, m1 = iv.m1, m2 = iv.m2;
         double lb = d - 0.5 * m1 * h, floor = *best - 0.5e-9 * (ts->diag + *best);
         double noise = 64.0 * DBL_EPSILON * mag + pc->slack; /* the evaluation's rounding */
         double nb[4];
         int one = interval_box(ts, pc, x, hu, hv, nb);
-        for (int pass = 0; pass < 2 && one; pass++) { /* global bounds, then local ones */
-            if (pass == 1 && (lb - noise >= floor || !local_bounds(ts, pc, nb, &m1, &m2)))
+        /* the bounds it has, then local ones made anew (every fourth level when it has some) */
+        for (int pass = 0; pass < 2 && one; pass++) {
+            if (pass == 1 && (lb - noise >= floor || (iv.local && iv.depth % 4 != 0) ||
+                              !local_bounds(ts, pc, nb, &m1, &m2)))
                 break;
+            iv.local |= pass == 1;
             double G = 2.0 * m1 * m1 + 2.0 * (d + 0.5 * m1 * h) * m2;
             double glb = g - fabs(gp) * 0.5 * h * (1.0 + 1e-9) - G * h * h / 8.0;
             lb = bsi_dmax(lb, bsi_dmax(d - 0.5 * m1 * h, sqrt(bsi_dmax(glb, 0.0))));
@@ -440,8 +446,10 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
             continue;
         if (iv.depth >= DEPTH)
             return -2;
-        stack[top++] = (interval){r, iv.b, iv.depth + 1, NULL};
-        stack[top++] = (interval){iv.a, r, iv.depth + 1, NULL};
+        if (!(one && iv.local)) /* a child keeps local bounds only inside this box */
+            m1 = pc->m1, m2 = pc->m2, iv.local = 0;
+        stack[top++] = (interval){r, iv.b, iv.depth + 1, NULL, m1, m2, iv.local};
+        stack[top++] = (interval){iv.a, r, iv.depth + 1, NULL, m1, m2, iv.local};
     }
     return found;
 }
