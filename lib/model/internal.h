@@ -10,6 +10,8 @@
  *   model.c      the model: building it face by face, then frozen; the counts and face info
  *   face_map.c   native parameters -> patch and (s,t); face evaluation
  *   classify.c   inside / outside / on by a winding number over the exact trim curves
+ *                (classify_box.c: where a box of parameters lies; classify_near.c: nearness)
+ *   closest_trim.c  closest points on the faces' trims, for a model's locator (locator_model.c)
  *   properties.c area, volume and centroid by Green's theorem over the trimmed domains
  *                (quadrature.c: adaptive Gauss-Kronrod)
  *   sew.c        edges of files without topology: trims whose 3-D images coincide

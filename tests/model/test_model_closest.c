@@ -13,6 +13,7 @@
  * Files: STEP and IGES 144 of each part (BS_TEST_FULL: all four; BS_TEST_QUICK: the block's and
  * the bell's STEP files). */
 #include "harness.h"
+#include "cad_model.h"
 
 #include <bezsurf.h>
 #include <math.h>
@@ -46,17 +47,6 @@ static size_t read_ref(const char *part, query *qs, size_t cap, double *diag)
     }
     fclose(f);
     return n;
-}
-
-static bs_model *read_model(const char *file)
-{
-    char path[512];
-    (void)snprintf(path, sizeof path, "%s/%s", BS_CAD_DIR, file);
-    bs_model *m = NULL;
-    bs_status st = strstr(file, ".step") ? bs_model_read_step_file(path, NULL, &m)
-                                          : bs_model_read_iges_file(path, NULL, &m);
-    CHECKF(st == BS_OK, "%s: %s", file, bs_status_string(st));
-    return m;
 }
 
 /* Points of the model's faces: its mesh's vertices, and grid points of each face's box that

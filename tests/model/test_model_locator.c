@@ -12,6 +12,7 @@
  * - the argument rules, and a closest point reported as a face and native parameters
  *   (test_model_closest.c checks closest points on every part). */
 #include "harness.h"
+#include "cad_model.h"
 
 #include <bezsurf.h>
 #include <math.h>
@@ -48,17 +49,6 @@ static size_t read_rays(const char *part, ray_ref *rays, size_t cap, double *dia
     }
     fclose(f);
     return n;
-}
-
-static bs_model *read_model(const char *file)
-{
-    char path[512];
-    (void)snprintf(path, sizeof path, "%s/%s", BS_CAD_DIR, file);
-    bs_model *m = NULL;
-    bs_status st = strstr(file, ".step") ? bs_model_read_step_file(path, NULL, &m)
-                                          : bs_model_read_iges_file(path, NULL, &m);
-    CHECKF(st == BS_OK, "%s: %s", file, bs_status_string(st));
-    return m;
 }
 
 /* One ray: its face (UINT32_MAX on a miss), native uv, t and normal. */

@@ -14,6 +14,7 @@
  * By default every file at 1e-3 D and the STEP file of each part at 1e-4 D; BS_TEST_FULL: every
  * file at both; BS_TEST_QUICK: the STEP files at 1e-3 D. */
 #include "harness.h"
+#include "cad_model.h"
 
 #include <bezsurf.h>
 #include <math.h>
@@ -47,17 +48,6 @@ static int read_ref(const char *part, ref *r)
     }
     fclose(f);
     return 1;
-}
-
-static bs_model *read_model(const char *file)
-{
-    char path[512];
-    (void)snprintf(path, sizeof path, "%s/%s", BS_CAD_DIR, file);
-    bs_model *m = NULL;
-    bs_status st = strstr(file, ".step") ? bs_model_read_step_file(path, NULL, &m)
-                                          : bs_model_read_iges_file(path, NULL, &m);
-    CHECKF(st == BS_OK, "%s: %s", file, bs_status_string(st));
-    return m;
 }
 
 typedef struct mesh_copy {
