@@ -23,6 +23,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define EVAL_CAP 200000
 #define DEPTH 60
@@ -141,12 +142,15 @@ static void axis_bounds(const bsi_axis *a, double *s1, double *s2)
 static void seg_eval(const double *seg, size_t p, double r, double *xy, double *dxy)
 {
     double t[BSI_SEG_MAX];
-    for (size_t k = 0; k < (p + 1) * 3; k++)
-        t[k] = seg[k];
+    memcpy(t, seg, (p + 1) * 3 * sizeof *t);
     for (size_t lev = 1; lev < p; lev++)
         for (size_t i = 0; i + lev <= p; i++)
             for (size_t c = 0; c < 3; c++)
                 t[i * 3 + c] = (1.0 - r) * t[i * 3 + c] + r * t[(i + 1) * 3 + c];
+    if (p == 0) { /* a constant (trim segments are of degree 1 and up) */
+        xy[0] = t[0] / t[2], xy[1] = t[1] / t[2], dxy[0] = dxy[1] = 0.0;
+        return;
+    }
     double h[3], dh[3];
     for (size_t c = 0; c < 3; c++) {
         h[c] = (1.0 - r) * t[c] + r * t[3 + c];
@@ -242,7 +246,7 @@ static int local_bounds(const bsi_trim_search *ts, const trim_piece *pc, const d
     for (size_t k = 0; k < count; k++)
         for (size_t e = 0; e < nc; e++)
             h[k * nc + e] = pt->hom[e * count + k];
-    for (int d = 0; d < 2; d++) { /* at least a sliver wide: the rescaling divides by it */
+    for (size_t d = 0; d < 2; d++) { /* at least a sliver wide: the rescaling divides by it */
         double lo = bsi_dmin(a[d], b[d]), hi = bsi_dmax(a[d], b[d]);
         if (hi - lo < 1e-9)
             lo = bsi_dmax(0.0, lo - 1e-9), hi = bsi_dmin(1.0, hi + 1e-9);
@@ -327,7 +331,7 @@ bs_status bsi_trim_search_create(const bs_model *m, double diag, bsi_trim_search
     size_t count = 0;
     for (size_t t = 0; t < m->ntrim; t++)
         count += m->trims[t].uv.axis.n;
-    if (ts == NULL || (count > 0 && (ts->pieces = malloc(count * sizeof *ts->pieces)) == NULL)) {
+    if (ts == NULL || (ts->pieces = malloc((count > 0 ? count : 1) * sizeof *ts->pieces)) == NULL) {
         free(ts);
         return BS_ERR_NO_MEMORY;
     }
@@ -374,7 +378,7 @@ static int interval_box(const bsi_trim_search *ts, const trim_piece *pc, const s
     const double *c = x->cell, *box = ts->m->faces[pc->face].box;
     double half[2] = {hu, hv};
     int in = 1;
-    for (int d = 0; d < 2; d++) {
+    for (size_t d = 0; d < 2; d++) {
         nb[2 * d] = c[4 + d] - half[d], nb[2 * d + 1] = c[4 + d] + half[d];
         if (pc->in_box[d])
             nb[2 * d] = bsi_dmax(nb[2 * d], box[2 * d]), nb[2 * d + 1] = bsi_dmin(nb[2 * d + 1], box[2 * d + 1]);
@@ -385,9 +389,9 @@ static int interval_box(const bsi_trim_search *ts, const trim_piece *pc, const s
 
 typedef struct interval {
     double a, b;
-    unsigned depth;
     const sample *known; /* the sample at its middle when known, else NULL */
     double m1, m2;       /* bounds of |C'| and |C''| over it: the piece's, or local ones */
+    unsigned depth;
     int local;           /* 1: m1 and m2 are local (their parent's, whose box holds its own) */
 } interval;
 
@@ -401,8 +405,8 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
     size_t top = 0;
     int found = 0;
     for (size_t k = TOP; k-- > 0;)
-        stack[top++] = (interval){(double)k / TOP, (double)(k + 1) / TOP, 3, &pc->top[k], pc->m1,
-                                  pc->m2, 0};
+        stack[top++] = (interval){(double)k / TOP, (double)(k + 1) / TOP, &pc->top[k], pc->m1, pc->m2,
+                                  3, 0};
     while (top > 0) {
         interval iv = stack[--top];
         double r = 0.5 * (iv.a + iv.b), h = iv.b - iv.a;
@@ -448,8 +452,8 @@ static int piece_search(const bsi_trim_search *ts, const trim_piece *pc, const d
             return -2;
         if (!(one && iv.local)) /* a child keeps local bounds only inside this box */
             m1 = pc->m1, m2 = pc->m2, iv.local = 0;
-        stack[top++] = (interval){r, iv.b, iv.depth + 1, NULL, m1, m2, iv.local};
-        stack[top++] = (interval){iv.a, r, iv.depth + 1, NULL, m1, m2, iv.local};
+        stack[top++] = (interval){r, iv.b, NULL, m1, m2, iv.depth + 1, iv.local};
+        stack[top++] = (interval){iv.a, r, NULL, m1, m2, iv.depth + 1, iv.local};
     }
     return found;
 }
