@@ -30,18 +30,14 @@ typedef struct query {
 /* The closest-point queries of NAME.ref, their count; *diag the box's diagonal. */
 static size_t read_ref(const char *part, query *qs, size_t cap, double *diag)
 {
-    char path[512], line[512];
-    (void)snprintf(path, sizeof path, "%s/%s.ref", BS_CAD_DIR, part);
-    FILE *f = fopen(path, "r");
-    CHECKF(f != NULL, "%s not found", path);
+    char line[512];
+    FILE *f = open_ref(part);
     if (f == NULL)
         return 0;
     size_t n = 0;
     while (fgets(line, sizeof line, f)) {
-        double b[6];
         query x;
-        if (sscanf(line, "box %lf %lf %lf %lf %lf %lf", &b[0], &b[1], &b[2], &b[3], &b[4], &b[5]) == 6)
-            *diag = sqrt((b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) + (b[5] - b[2]) * (b[5] - b[2]));
+        (void)ref_box_diagonal(line, diag);
         if (n < cap && sscanf(line, "closest %lf %lf %lf dist %lf", &x.q[0], &x.q[1], &x.q[2], &x.ref) == 4)
             qs[n++] = x;
     }

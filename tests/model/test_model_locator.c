@@ -27,19 +27,15 @@ typedef struct ray_ref {
 /* The rays of NAME.ref; their count. */
 static size_t read_rays(const char *part, ray_ref *rays, size_t cap, double *diag)
 {
-    char path[512], line[512];
-    (void)snprintf(path, sizeof path, "%s/%s.ref", BS_CAD_DIR, part);
-    FILE *f = fopen(path, "r");
-    CHECKF(f != NULL, "%s not found", path);
+    char line[512];
+    FILE *f = open_ref(part);
     if (f == NULL)
         return 0;
     size_t n = 0;
     while (fgets(line, sizeof line, f)) {
-        double b[6];
         char what[16];
         ray_ref r;
-        if (sscanf(line, "box %lf %lf %lf %lf %lf %lf", &b[0], &b[1], &b[2], &b[3], &b[4], &b[5]) == 6)
-            *diag = sqrt((b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) + (b[5] - b[2]) * (b[5] - b[2]));
+        (void)ref_box_diagonal(line, diag);
         if (n < cap && sscanf(line, "ray %lf %lf %lf %lf %lf %lf %15s %lf", &r.o[0], &r.o[1], &r.o[2],
                               &r.d[0], &r.d[1], &r.d[2], what, &r.t) >= 7) {
             if (strcmp(what, "hit") != 0)

@@ -32,17 +32,13 @@ typedef struct ref {
 
 static int read_ref(const char *part, ref *r)
 {
-    char path[512], line[512];
-    (void)snprintf(path, sizeof path, "%s/%s.ref", BS_CAD_DIR, part);
-    FILE *f = fopen(path, "r");
-    CHECKF(f != NULL, "%s not found", path);
+    char line[512];
+    FILE *f = open_ref(part);
     if (f == NULL)
         return 0;
     r->volume = NAN;
     while (fgets(line, sizeof line, f)) {
-        double b[6];
-        if (sscanf(line, "box %lf %lf %lf %lf %lf %lf", &b[0], &b[1], &b[2], &b[3], &b[4], &b[5]) == 6)
-            r->diag = sqrt((b[3] - b[0]) * (b[3] - b[0]) + (b[4] - b[1]) * (b[4] - b[1]) + (b[5] - b[2]) * (b[5] - b[2]));
+        (void)ref_box_diagonal(line, &r->diag);
         (void)sscanf(line, "area %lf", &r->area);
         (void)sscanf(line, "volume %lf", &r->volume);
     }
