@@ -308,8 +308,8 @@ int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, doub
     const bsi_face *face = &m->faces[f];
     for (size_t l = face->first_loop; l < face->first_loop + face->loop_count; l++)
         for (size_t t = m->loops[l].first_trim; t < m->loops[l].first_trim + m->loops[l].trim_count; t++)
-            if (m->trims[t].uv.axis.n > 0 && (seams || !bsi_trim_is_seam(m, f, t)) &&
-                on_iso_line(&m->trims[t].uv, u, v))
+            if (m->trims[t].uv.axis.n > 0 && on_iso_line(&m->trims[t].uv, u, v) &&
+                (seams || !bsi_trim_is_seam(m, f, t))) /* the seam test scans the face's trims */
                 return 1;
     near_ctx x;
     x.m = m, x.f = f, x.box = face->box, x.tol = tol;
