@@ -5,6 +5,7 @@
  *   step_curve.c    curves (3-D edges and 2-D parameter-space curves) and their parameters
  *   step_surface.c  surfaces -> bsi_surface_def
  *   step_topo.c     faces: loops of oriented edges, their trims
+ *   step_assembly.c assemblies: where each shell is placed, once per placement
  *   step_read.c     the entry points: shells and solids of the file
  * Memory: at most one node (24 bytes) per byte of the DATA section plus one instance record per
  * instance; nothing is sized from a count written in the file.
@@ -19,6 +20,7 @@
 
 #define STP_NEST_MAX 32 /* deepest nesting of parameter lists accepted */
 #define STP_DEPTH 16    /* deepest chain of curve references followed (trimmed of trimmed ...) */
+#define STP_BYTES_PER_PLACED_FACE 32 /* assemblies place at most one face per 32 bytes of the file */
 
 enum { STP_INT, STP_REAL, STP_STR, STP_ENUM, STP_REF, STP_LIST, STP_UNSET, STP_DERIVED, STP_TYPED };
 
@@ -35,6 +37,30 @@ typedef struct stp_node {
         size_t off;  /* STR, ENUM, TYPED: text offset */
     } v;
 } stp_node;
+
+/* A rigid motion p -> r p + t (r row-major, orthonormal). */
+typedef struct stp_xf {
+    double r[9], t[3];
+} stp_xf;
+
+/* One link of an assembly: representation class `child` placed in class `parent` by xf. */
+typedef struct stp_link {
+    size_t child, parent, seq; /* seq: the link's place in the file, for a stable order */
+    stp_xf xf;
+} stp_link;
+
+/* The assembly structure of the file (step_assembly.c). A class is a set of representations
+ * joined by relationships without a motion (a part's SHAPE_REPRESENTATION and its
+ * ADVANCED_BREP_SHAPE_REPRESENTATION): the same shape. */
+typedef struct stp_asm {
+    size_t *cls;        /* per instance: union-find parent (representations), else itself */
+    size_t *holder;     /* per instance: the representation holding this shell, SIZE_MAX if none */
+    size_t *count;      /* per class: its placements, 0 = not counted yet (NULL without links) */
+    size_t *base;       /* per class: 1 + the instance id of its first placement, 0 = none given yet */
+    unsigned char *busy;/* per class: being counted (a cycle of links) */
+    bsi_growing links;  /* stp_link, sorted by child class */
+    size_t next;        /* the next instance id to give */
+} stp_asm;
 
 /* One instance #id = ...: root is a TYPED node (simple) or a LIST of TYPED nodes (complex). */
 typedef struct stp_inst {
@@ -58,6 +84,14 @@ typedef struct stp {
     uint32_t *edge_id;    /* per instance: its model edge (EDGE_CURVE), BSI_NO_EDGE before use */
     unsigned char *busy;  /* per instance: being resolved (reference cycles) */
     unsigned char *flip;  /* per instance: a shell used reversed (ORIENTED_CLOSED_SHELL .F.) */
+    stp_asm as;
+    /* while a placed copy of a shell is read: the motion applied to every 3-D point and
+     * direction, the instance id of its faces, and the first model edge of this copy (edge ids
+     * below it belong to another copy) */
+    int moved;
+    stp_xf xf;
+    size_t instance;
+    uint32_t edge_base;
 } stp;
 
 /* ---- step_lex.c ---- */
@@ -119,7 +153,8 @@ double bsi_stp_curve_param(const stp *s, const stp_curve *c, const double *p);
 /* The curve over [t0, t1] as a bsi_curve (B-splines: the range clamped to the knots' domain). */
 bs_status bsi_stp_curve_make(const stp *s, const stp_curve *c, double t0, double t1, bsi_curve *out);
 /* A CARTESIAN_POINT (dim coordinates), a DIRECTION (unit), a placement (AXIS2_PLACEMENT_3D or 2D:
- * origin, x and y = z cross x in frame f; 2D: z unused). */
+ * origin, x and y = z cross x in frame f; 2D: z unused). In 3-D, moved by s->xf when s->moved
+ * (a placement's frame is made first, then moved: its default reference direction is the file's). */
 bs_status bsi_stp_point(const stp *s, size_t i, size_t dim, double *p);
 bs_status bsi_stp_direction(const stp *s, size_t i, size_t dim, double *d);
 bs_status bsi_stp_placement(const stp *s, size_t i, size_t dim, bsi_frame *f);
@@ -137,6 +172,18 @@ typedef struct stp_surf {
 void bsi_stp_surf_free(stp_surf *sf);
 /* The surface of instance i. BS_ERR_UNSUPPORTED naming others. */
 bs_status bsi_stp_surface(stp *s, size_t i, stp_surf *out);
+
+/* ---- step_assembly.c ---- */
+/* Read the file's representations, the shells they hold and the links that place one in another
+ * (REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION, MAPPED_ITEM). */
+bs_status bsi_stp_assembly(stp *s);
+/* How many times shell instance i is placed (1 for a shell outside any assembly). */
+bs_status bsi_stp_placement_count(stp *s, size_t i, size_t *n);
+/* The world motions of shell instance i into *out (stp_xf, cleared first), and the instance id of
+ * the first (the others follow it): 0 in a file without assemblies; in one with, each class of
+ * representations holding shells gets ids of its own, in the order its shells are read. */
+bs_status bsi_stp_placements(stp *s, size_t i, bsi_growing *out, size_t *first);
+void bsi_stp_assembly_free(stp *s);
 
 /* ---- step_topo.c ---- */
 /* The face of instance i (ADVANCED_FACE or FACE_SURFACE) into shell `shell`, turned inside out

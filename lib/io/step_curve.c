@@ -9,7 +9,16 @@
 
 #define TWO_PI 6.283185307179586
 
-bs_status bsi_stp_point(const stp *s, size_t i, size_t dim, double *p)
+/* p -> r p (+ t when translate): a placed copy's points and directions. */
+static void move(const stp_xf *m, int translate, double *p)
+{
+    double q[3];
+    for (size_t r = 0; r < 3; r++)
+        q[r] = m->r[3 * r] * p[0] + m->r[3 * r + 1] * p[1] + m->r[3 * r + 2] * p[2] + (translate ? m->t[r] : 0.0);
+    memcpy(p, q, sizeof q);
+}
+
+static bs_status raw_point(const stp *s, size_t i, size_t dim, double *p)
 {
     size_t list, co;
     bs_status st;
@@ -25,7 +34,7 @@ bs_status bsi_stp_point(const stp *s, size_t i, size_t dim, double *p)
     return BS_OK;
 }
 
-bs_status bsi_stp_direction(const stp *s, size_t i, size_t dim, double *d)
+static bs_status raw_direction(const stp *s, size_t i, size_t dim, double *d)
 {
     size_t list, co;
     bs_status st;
@@ -48,7 +57,23 @@ bs_status bsi_stp_direction(const stp *s, size_t i, size_t dim, double *d)
     return BS_OK;
 }
 
-/* An optional direction (argument k, `$` gives def). */
+bs_status bsi_stp_point(const stp *s, size_t i, size_t dim, double *p)
+{
+    bs_status st = raw_point(s, i, dim, p);
+    if (st == BS_OK && dim == 3 && s->moved)
+        move(&s->xf, 1, p);
+    return st;
+}
+
+bs_status bsi_stp_direction(const stp *s, size_t i, size_t dim, double *d)
+{
+    bs_status st = raw_direction(s, i, dim, d);
+    if (st == BS_OK && dim == 3 && s->moved)
+        move(&s->xf, 0, d);
+    return st;
+}
+
+/* An optional direction (argument k, `$` gives def), as the file writes it. */
 static bs_status opt_direction(const stp *s, size_t i, size_t list, size_t k, size_t dim, const double *def, double *d)
 {
     size_t n, r;
@@ -57,7 +82,7 @@ static bs_status opt_direction(const stp *s, size_t i, size_t list, size_t k, si
         return BS_OK;
     }
     bs_status st = bsi_stp_ref(s, i, list, k, "a direction", &r);
-    return st != BS_OK ? st : bsi_stp_direction(s, r, dim, d);
+    return st != BS_OK ? st : raw_direction(s, r, dim, d);
 }
 
 bs_status bsi_stp_placement(const stp *s, size_t i, size_t dim, bsi_frame *f)
@@ -68,7 +93,7 @@ bs_status bsi_stp_placement(const stp *s, size_t i, size_t dim, bsi_frame *f)
     memset(f, 0, sizeof *f);
     if (!bsi_stp_part(s, i, dim == 3 ? "AXIS2_PLACEMENT_3D" : "AXIS2_PLACEMENT_2D", &list))
         return bsi_stp_fail(s, i, "expected an AXIS2_PLACEMENT_%zuD", dim);
-    if ((st = bsi_stp_ref(s, i, list, 1, "the location", &r)) != BS_OK || (st = bsi_stp_point(s, r, dim, f->o)) != BS_OK)
+    if ((st = bsi_stp_ref(s, i, list, 1, "the location", &r)) != BS_OK || (st = raw_point(s, r, dim, f->o)) != BS_OK)
         return st;
     if (dim == 2) {
         if ((st = opt_direction(s, i, list, 2, 2, ex, f->x)) != BS_OK)
@@ -93,6 +118,12 @@ bs_status bsi_stp_placement(const stp *s, size_t i, size_t dim, bsi_frame *f)
     f->y[0] = f->z[1] * f->x[2] - f->z[2] * f->x[1];
     f->y[1] = f->z[2] * f->x[0] - f->z[0] * f->x[2];
     f->y[2] = f->z[0] * f->x[1] - f->z[1] * f->x[0];
+    if (s->moved) {
+        move(&s->xf, 1, f->o);
+        move(&s->xf, 0, f->x);
+        move(&s->xf, 0, f->y);
+        move(&s->xf, 0, f->z);
+    }
     return BS_OK;
 }
 

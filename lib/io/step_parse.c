@@ -14,6 +14,7 @@ void bsi_stp_free(stp *s)
     free(s->edge_id);
     free(s->busy);
     free(s->flip);
+    bsi_stp_assembly_free(s);
     memset(s, 0, sizeof *s);
 }
 

@@ -1,6 +1,7 @@
 /* Reading STEP (ISO 10303-21) B-rep models: the text parsed into instances (step_lex.c), then each
  * shell of the file (CLOSED_SHELL, OPEN_SHELL: those of MANIFOLD_SOLID_BREP, BREP_WITH_VOIDS and
- * SHELL_BASED_SURFACE_MODEL alike) one shell of the model, each of its faces read by step_topo.c.
+ * SHELL_BASED_SURFACE_MODEL alike) one shell of the model per placement of its part in the file's
+ * assemblies (step_assembly.c), each of its faces read by step_topo.c.
  * Instances the model does not need (product data, presentation, colours) are never looked at. */
 #include "io/step.h"
 
@@ -75,21 +76,74 @@ static bs_status shell_faces(stp *s, size_t i, size_t shell, size_t *nface)
     return BS_OK;
 }
 
+/* The faces of shell instance i (0 for other instances). */
+static size_t shell_size(const stp *s, size_t i)
+{
+    size_t list, faces;
+    if ((!bsi_stp_part(s, i, "CLOSED_SHELL", &list) && !bsi_stp_part(s, i, "OPEN_SHELL", &list)) ||
+        !bsi_stp_arg(s, list, 1, &faces))
+        return 0;
+    return stp_at(s, faces)->kind == STP_LIST ? stp_at(s, faces)->count : 0;
+}
+
+/* Assemblies copy a part once per placement: refuse to place more faces than the file holds or
+ * one per STP_BYTES_PER_PLACED_FACE bytes of it, whichever is more, before anything is placed. */
+static bs_status placed_cap(stp *s)
+{
+    size_t own = 0, placed = 0;
+    for (size_t i = 0; i < s->inst.n; i++) {
+        size_t nf = shell_size(s, i), times;
+        bs_status st = nf > 0 ? bsi_stp_placement_count(s, i, &times) : BS_OK;
+        if (st != BS_OK)
+            return st;
+        if (nf == 0)
+            continue;
+        own += nf;
+        placed = times > (SIZE_MAX / 2 - placed) / nf ? SIZE_MAX / 2 : placed + nf * times;
+    }
+    size_t cap = s->len / STP_BYTES_PER_PLACED_FACE;
+    if (placed > own && placed > cap) {
+        (void)bsi_fail(s->err, 1, 1, "assemblies place %zu faces, more than one per %d bytes of the file", placed,
+                       STP_BYTES_PER_PLACED_FACE);
+        return BS_ERR_SIZE;
+    }
+    return BS_OK;
+}
+
+/* Shell instance i once per placement, each a model shell. */
+static bs_status placed_shell(stp *s, size_t i, bsi_growing *xf, size_t *shells, size_t *nface)
+{
+    size_t first;
+    bs_status st = bsi_stp_placements(s, i, xf, &first);
+    for (size_t k = 0; k < xf->n && st == BS_OK; k++) {
+        s->moved = s->as.links.n > 0;
+        s->xf = ((const stp_xf *)xf->data)[k];
+        s->instance = first + k;
+        s->edge_base = s->moved ? (uint32_t)bs_model_edge_count(s->model) : 0;
+        st = shell_faces(s, i, (*shells)++, nface);
+    }
+    s->moved = 0;
+    s->instance = 0;
+    return st;
+}
+
 static bs_status read_model(stp *s)
 {
     bs_status st = bsi_stp_lex(s);
     if (st != BS_OK || (st = bsi_stp_index(s)) != BS_OK || (st = bsi_stp_units(s)) != BS_OK ||
-        (st = reversed_shells(s)) != BS_OK)
+        (st = reversed_shells(s)) != BS_OK || (st = bsi_stp_assembly(s)) != BS_OK || (st = placed_cap(s)) != BS_OK)
         return st;
     extent(s);
     if ((st = bsi_model_create(&s->model)) != BS_OK)
         return st;
     size_t shells = 0, nface = 0, advanced = 0;
+    bsi_growing xf = {NULL, 0, 0};
     for (size_t i = 0; i < s->inst.n && st == BS_OK; i++) {
         advanced += (size_t)bsi_stp_is(s, i, "ADVANCED_FACE");
         if (bsi_stp_is(s, i, "CLOSED_SHELL") || bsi_stp_is(s, i, "OPEN_SHELL"))
-            st = shell_faces(s, i, shells++, &nface);
+            st = placed_shell(s, i, &xf, &shells, &nface);
     }
+    free(xf.data);
     if (st != BS_OK)
         return st;
     if (nface == 0)

@@ -151,7 +151,8 @@ static bs_status edge_trim(stp *s, size_t oe, size_t surf, const stp_surf *sf, t
     if ((st = bsi_stp_curve(s, c3, 3, 0, &curve)) != BS_OK)
         return st;
     edge_range(s, &curve, p0, p1, same, &t0, &t1);
-    if (s->edge_id[e] == BSI_NO_EDGE && (st = bsi_model_add_edge(s->model, &s->edge_id[e])) != BS_OK) {
+    if ((s->edge_id[e] == BSI_NO_EDGE || s->edge_id[e] < s->edge_base) &&
+        (st = bsi_model_add_edge(s->model, &s->edge_id[e])) != BS_OK) {
         bsi_stp_curve_free(&curve);
         return st;
     }
@@ -435,6 +436,7 @@ bs_status bsi_stp_face(stp *s, size_t i, size_t shell, int flip)
             spec.def = &sf.def;
             spec.reversed = !same != (flip != 0);
             spec.shell = shell;
+            spec.instance = s->instance;
             spec.trims = (bsi_trim *)trims.data;
             spec.ntrim = trims.n;
             spec.loop_len = len2;

@@ -36,6 +36,12 @@ for f in "$cad"/*.step "$cad"/*.igs; do
     check 'near_ref "$part" area' "$name: area $(sed -n 's/^area: //p' "$work/out"), the kernel's $(ref_of "$part" area)"
 done
 
+# an assembly (tests/model/data/step/assembly.step: two parts placed five times): its instances
+expect 0 "info assembly.step" -- "$tool" info "$(dirname "$0")/../model/data/step/assembly.step"
+has out "faces: 19 (" "assembly.step: 19 faces"
+has out "shells: 5 (5 closed, 0 open)" "assembly.step: five closed shells"
+has out "instances: 5" "assembly.step: five instances"
+
 # STEP -> OBJ -> the same faces and patches (the parts whose trims OBJ holds exactly:
 # bs_model_write_obj). info describes an OBJ file by its patches; trims reads it as a model.
 for part in bottle duct sphere torus wedge; do

@@ -23,10 +23,11 @@ void *__wrap_malloc(size_t n) { return fails() ? NULL : __real_malloc(n); }
 void *__wrap_calloc(size_t n, size_t k) { return fails() ? NULL : __real_calloc(n, k); }
 void *__wrap_realloc(void *p, size_t n) { return fails() ? NULL : __real_realloc(p, n); }
 
+/* data/cad/NAME, or tests/model/NAME when it names a folder. */
 static char *read_text(const char *name, size_t *len)
 {
     char path[512];
-    (void)snprintf(path, sizeof path, "%s/%s", BS_CAD_DIR, name);
+    (void)snprintf(path, sizeof path, "%s/%s", strchr(name, '/') ? BS_TEST_SOURCE_DIR : BS_CAD_DIR, name);
     FILE *f = fopen(path, "rb");
     static char buf[1 << 16];
     *len = f != NULL ? fread(buf, 1, sizeof buf - 1, f) : 0;
@@ -69,7 +70,8 @@ int main(void)
 {
 #ifdef BS_WRAP_MALLOC
     size_t stride = bs_test_quick() ? 7 : 1, len;
-    static const char *const files[] = {"cone.step", "sphere.step", "torus-3d-edges.step"};
+    static const char *const files[] = {"cone.step", "sphere.step", "torus-3d-edges.step",
+                                                 "data/step/assembly.step"};
     for (size_t f = 0; f < sizeof files / sizeof files[0]; f++) {
         const char *text = read_text(files[f], &len);
         CHECKF(text != NULL, "%s not read", files[f]);

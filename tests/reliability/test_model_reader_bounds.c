@@ -12,6 +12,7 @@
  * faster than linear shows as a ratio that grows with the size. The bounds and the figures
  * measured are in docs/reliability.md ("Model readers"). */
 #include "harness.h"
+#include "step_text.h"
 
 #include <bezsurf.h>
 
@@ -240,6 +241,31 @@ static char *step_deep(size_t n, size_t *len)
     return step_tail(&b, len);
 }
 
+/* A cube part placed by an assembly as often as the reader accepts for n bytes (one placed face
+ * per 32 bytes), the file filled up to n bytes by a comment. */
+static char *step_placed(size_t n, size_t *len)
+{
+    static char cube_text[1 << 14];
+    size_t placements = n / 32 / 6 - 1;
+    buf b = step_head();
+    put(&b, "#2=ADVANCED_BREP_SHAPE_REPRESENTATION('',(#8,#3),#9);\n#3=MANIFOLD_SOLID_BREP('',#1000);\n"
+            "#6=REPRESENTATION_MAP(#8,#2);\n#7=CARTESIAN_POINT('',(0.,0.,0.));\n#8=AXIS2_PLACEMENT_3D('',#7,$,$);\n"
+            "#9=(GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT((#10)) REPRESENTATION_CONTEXT('',''));\n"
+            "#10=(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.));\n");
+    (void)cube(cube_text, sizeof cube_text, 1000, 0.0, 2.0);
+    put(&b, "%s#1=SHAPE_REPRESENTATION('',(#8", cube_text);
+    for (size_t k = 0; k < placements; k++)
+        put(&b, ",#%zu", 100000 + k);
+    put(&b, "),#9);\n");
+    for (size_t k = 0; k < placements; k++)
+        put(&b, "#%zu=MAPPED_ITEM('',#6,#8);\n", 100000 + k);
+    put(&b, "/*");
+    while (b.n + 40 < n)
+        put(&b, "%s", "                              ");
+    put(&b, "*/\n");
+    return step_tail(&b, len);
+}
+
 /* IGES in fixed columns: S, G, two D records per entity, P records (64 columns), T. */
 static char *iges_text(const char *const *par, const long *type, size_t n, size_t *len)
 {
@@ -428,6 +454,7 @@ int main(void)
     scaled(STEP, "a list of empty lists", step_wide, n, BS_ERR_PARSE);
     scaled(STEP, "lists nested 31 deep", step_nested, n, BS_ERR_PARSE);
     scaled(STEP, "a list nested n deep", step_deep, n, BS_ERR_PARSE);
+    scaled(STEP, "a cube placed at the cap", step_placed, n / 4, BS_OK);
     scaled(IGES, "tiny entities (116)", iges_tiny, n / 4, BS_ERR_PARSE);
     static const size_t reuses[] = {4, 16, 32, 40, 48, 56, 256};
     for (size_t k = 0; k < sizeof reuses / sizeof reuses[0]; k++) {
