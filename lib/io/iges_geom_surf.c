@@ -177,6 +177,19 @@ static int line_ends(const igm_slot *e, double *p0, double *p1)
     return 1;
 }
 
+/* 1 when c ends where it starts (within 1e-12 of its size): the sweep of it is periodic along it. */
+static int closed_curve(const bsi_curve *c)
+{
+    double a[3], b[3], d = 0.0, size = 0.0;
+    if (!bsi_curve_eval(c, c->axis.breaks[0], a) || !bsi_curve_eval(c, c->axis.breaks[c->axis.n], b))
+        return 0;
+    for (size_t k = 0; k < 3; k++) {
+        d = hypot(d, a[k] - b[k]);
+        size = fmax(size, fmax(fabs(a[k]), fabs(b[k])));
+    }
+    return d <= 1e-12 * size;
+}
+
 static bs_status swept(igm *m, size_t s, iges_stream *st, igm_surface *sf, int depth)
 {
     long type = m->slot[s].type;
@@ -202,11 +215,15 @@ static bs_status swept(igm *m, size_t s, iges_stream *st, igm_surface *sf, int d
         (void)bsi_igm_fail(m, s, 1, "curve of several pieces (composite) not read");
         return BS_ERR_UNSUPPORTED;
     }
-    if ((r = bsi_curve_copy(&ce->pieces[0], &sf->curve)) != BS_OK)
+    /* a closed curve over three turns, its sweep periodic along it: trims may cross its start */
+    int closed = closed_curve(&ce->pieces[0]);
+    if ((r = closed ? bsi_curve_repeat(&ce->pieces[0], &sf->curve) : bsi_curve_copy(&ce->pieces[0], &sf->curve)) != BS_OK)
         return r;
-    const bsi_axis *ax = &sf->curve.axis;
-    double t0 = ax->breaks[0], t1 = ax->breaks[ax->n], p0[3], p1[3];
+    /* the curve's own range (the file's parameters map onto it), and the range it is swept over */
+    const bsi_axis *own = &ce->pieces[0].axis, *ax = &sf->curve.axis;
+    double c0 = own->breaks[0], c1 = own->breaks[own->n], t0 = ax->breaks[0], t1 = ax->breaks[ax->n], p0[3], p1[3];
     sf->def.curve = &sf->curve;
+    sf->def.curve_period = closed ? c1 - c0 : 0.0;
     sf->param = sf->has_box = 1;
     if (type == 120) {
         double z[3];
@@ -226,12 +243,12 @@ static bs_status swept(igm *m, size_t s, iges_stream *st, igm_surface *sf, int d
         return BS_OK;
     }
     double z[3] = {0, 0, 1};
-    (void)bsi_curve_eval(&sf->curve, t0, p0);
+    (void)bsi_curve_eval(&sf->curve, c0, p0);
     for (size_t i = 0; i < 3; i++)
         sf->def.dir[i] = v[i] - p0[i];
     (void)frame(p0, z, NULL, &sf->def.f);
     sf->def.kind = BS_FACE_EXTRUSION;
-    double box[4] = {t0, t1, 0, 1}, aff[6] = {t1 - t0, 0, t0, 0, 1, 0};
+    double box[4] = {t0, t1, 0, 1}, aff[6] = {c1 - c0, 0, c0, 0, 1, 0};
     memcpy(sf->box, box, sizeof box);
     memcpy(sf->aff, aff, sizeof aff);
     return BS_OK;

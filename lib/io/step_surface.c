@@ -24,9 +24,10 @@ static bs_status swept(stp *s, size_t i, size_t r, stp_surf *sf)
     if (st != BS_OK)
         return st;
     double lo, hi, per = bsi_stp_curve_period(s, &c, &lo, &hi);
-    if (per > 0.0) {
+    if (per > 0.0) { /* three turns: room for trims on either side of a seam */
         lo = -per;
         hi = 2.0 * per;
+        sf->def.curve_period = per;
     } else if (c.kind == STP_LINE) {
         double d = 0.0, len = hypot(hypot(c.d[0], c.d[1]), c.d[2]);
         for (int k = 0; k < 3; k++)

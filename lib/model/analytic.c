@@ -163,6 +163,6 @@ void bsi_surface_def_periods(const bsi_surface_def *def, double *pu, double *pv)
 {
     const double turn = 6.283185307179586;
     int u_turns = def->kind >= BS_FACE_CYLINDER && def->kind <= BS_FACE_REVOLUTION;
-    *pu = u_turns ? turn : 0.0;
-    *pv = def->kind == BS_FACE_TORUS ? turn : 0.0;
+    *pu = u_turns ? turn : def->kind == BS_FACE_EXTRUSION ? def->curve_period : 0.0;
+    *pv = def->kind == BS_FACE_TORUS ? turn : def->kind == BS_FACE_REVOLUTION ? def->curve_period : 0.0;
 }

@@ -55,6 +55,29 @@ bs_status bsi_curve_copy(const bsi_curve *src, bsi_curve *dst)
     return BS_OK;
 }
 
+bs_status bsi_curve_repeat(const bsi_curve *src, bsi_curve *out)
+{
+    memset(out, 0, sizeof *out);
+    size_t n = src->axis.n;
+    if (n == 0 || n > SIZE_MAX / 4)
+        return BS_ERR_DOMAIN;
+    double period = src->axis.breaks[n] - src->axis.breaks[0];
+    bsi_axis a = src->axis;
+    a.n = 3 * n;
+    a.breaks = malloc((a.n + 1) * sizeof *a.breaks);
+    if (a.breaks == NULL)
+        return BS_ERR_NO_MEMORY;
+    for (size_t k = 0; k < 3; k++) /* the breaks of copy k shifted by (k - 1) periods */
+        for (size_t i = 0; i <= n; i++)
+            a.breaks[k * n + i] = src->axis.breaks[i] + ((double)k - 1.0) * period;
+    bs_status st = curve_alloc(src->dim, src->degree, &a, out);
+    if (st != BS_OK)
+        return st;
+    for (size_t k = 0; k < 3; k++)
+        memcpy(out->hom + k * hom_count(src), src->hom, hom_count(src) * sizeof *out->hom);
+    return BS_OK;
+}
+
 static int all_finite(const double *x, size_t n)
 {
     for (size_t i = 0; i < n; i++)

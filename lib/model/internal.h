@@ -67,6 +67,10 @@ typedef struct bsi_curve {
 
 void bsi_curve_free(bsi_curve *c);
 bs_status bsi_curve_copy(const bsi_curve *src, bsi_curve *dst);
+/* A closed curve over three of its periods (the period its parameter range), the same points one
+ * period before and after: what a sweep of it needs for trims on either side of its start.
+ * BS_ERR_DOMAIN for an empty curve; BS_ERR_NO_MEMORY. */
+bs_status bsi_curve_repeat(const bsi_curve *src, bsi_curve *out);
 /* p + t d for t in [t0, t1]: one segment of degree 1. */
 bs_status bsi_curve_line(size_t dim, const double *p, const double *d, double t0, double t1,
                          bsi_curve *out);
@@ -113,6 +117,8 @@ typedef struct bsi_surface_def {
     bsi_frame f;
     double r, r2;              /* radii and the cone's semi-angle, as above */
     const bsi_curve *curve;    /* REVOLUTION, EXTRUSION: the 3-D curve */
+    double curve_period;       /* REVOLUTION, EXTRUSION: the curve's period when it is closed (a
+                                  whole conic: a torus written as its tube revolved), else 0 */
     double dir[3];             /* EXTRUSION: the sweep per unit v */
     const bs_bspline *bspline; /* BSPLINE: a 3-D B-spline */
 } bsi_surface_def;
@@ -128,7 +134,8 @@ bs_status bsi_surface_def_patches(const bsi_surface_def *def, const double *box,
 /* The closed-form point of def at canonical (u, v) (for BSPLINE, REVOLUTION and EXTRUSION through
  * de Boor / the curve): the reference the exactness tests compare with. */
 void bsi_surface_def_eval(const bsi_surface_def *def, double u, double v, double *p);
-/* Period of canonical u and v (2 pi along the angular directions of closed surfaces), 0 if none. */
+/* Period of canonical u and v (2 pi along the angular directions of closed surfaces, the curve's
+ * period along the curve of a sweep of a closed curve), 0 if none. */
 void bsi_surface_def_periods(const bsi_surface_def *def, double *pu, double *pv);
 /* The canonical (u, v) of the point of def nearest p, in closed form for PLANE .. TORUS: 1, or 0
  * (uv untouched) for the other kinds and where u (or a torus's v) is undefined: on the axis, at
