@@ -173,6 +173,8 @@ static bs_status read_faces(igm *m)
     for (size_t s = 0; st == BS_OK && s < m->nslot; s++)
         if (m->slot[s].type == 186)
             st = bsi_igm_brep(m, s, &shell);
+    if (st == BS_OK)
+        st = bsi_igm_loose_brep(m, &shell);
     for (size_t s = 0; st == BS_OK && s < m->nslot; s++)
         if (m->slot[s].type == 144 || m->slot[s].type == 143)
             st = bsi_igm_trimmed(m, s, shell);

@@ -114,5 +114,8 @@ bs_status bsi_igm_trimmed(igm *m, size_t s, size_t shell);
 bs_status bsi_igm_untrimmed(igm *m, size_t s, size_t shell);
 /* The faces of the 186 B-rep at slot s, its shells from *shell on (advanced). */
 bs_status bsi_igm_brep(igm *m, size_t s, size_t *shell);
+/* After the 186s: each 514 shell no solid holds as a shell of its own, then the 510 faces no
+ * shell holds as one shell, from *shell on (advanced). */
+bs_status bsi_igm_loose_brep(igm *m, size_t *shell);
 
 #endif

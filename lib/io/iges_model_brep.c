@@ -1,5 +1,5 @@
 /* The IGES 186 manifold solid B-rep: its 514 shells (the outer one, then the voids), their 510
- * faces with 508 loops; each entry of a 504 edge list is one model edge, shared by the loops
+ * faces with 508 loops (and shells and faces no solid holds: surface models); each entry of a 504 edge list is one model edge, shared by the loops
  * naming it. A loop's parameter-space curves are taken in the loop's direction (as OpenCASCADE
  * writes them); without them, or on planes, the edge's 3-D curve gives the trim (run backwards
  * when the loop's orientation flag is 0). Vertex entries of a loop (poles) give their parameter
@@ -183,5 +183,21 @@ bs_status bsi_igm_brep(igm *m, size_t s, size_t *shell)
     }
     if (r == BS_OK && (r = bsi_igm_rest(m, &st)) != BS_OK)
         return bsi_igm_name(m, s, r);
+    return r;
+}
+
+bs_status bsi_igm_loose_brep(igm *m, size_t *shell)
+{
+    bs_status r = BS_OK;
+    for (size_t t = 0; r == BS_OK && t < m->nslot; t++)
+        if (m->slot[t].type == 514 && !m->slot[t].used)
+            r = shell_514(m, t, t, 0, (*shell)++);
+    int any = 0;
+    for (size_t t = 0; r == BS_OK && t < m->nslot; t++)
+        if (m->slot[t].type == 510 && !m->slot[t].used) {
+            r = face(m, t, t, 0, *shell);
+            any = 1;
+        }
+    *shell += (size_t)any;
     return r;
 }

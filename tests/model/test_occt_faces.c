@@ -1,9 +1,11 @@
-/* Faces on sweeps of a closed curve (data/sweep/, written by OpenCASCADE: occt_sweep_gen.cpp): a
+/* Faces written by OpenCASCADE (data/faces/, occt_faces_gen.cpp). Sweeps of a closed curve: a
  * circle revolved (a torus written as its tube revolved) and extruded, the faces' ranges along the
  * circle crossing its start. Along the circle the surface is periodic, as the angle of a torus is:
- * from STEP and IGES, the area is the kernel's, the whole tube's volume the torus's closed form,
- * and a parameter moved by whole periods along the circle is the same point and classifies alike
- * (inside where the face's range, taken round the circle, holds it). */
+ * from STEP, IGES 144 and IGES B-rep entities, the area is the kernel's, the whole tube's volume
+ * the torus's closed form, and a parameter moved by whole periods along the circle is the same
+ * point and classifies alike (inside where the face's range, taken round the circle, holds it).
+ * IGES B-rep entities without a solid: the lone 510 faces of the sweeps, and an open box as a 514
+ * shell no 186 holds. */
 #include "harness.h"
 
 #include <bezsurf.h>
@@ -17,7 +19,7 @@ static const double pi = 3.14159265358979323846;
 static bs_model *read_sweep(const char *file)
 {
     char path[512];
-    (void)snprintf(path, sizeof path, "%s/data/sweep/%s", BS_TEST_SOURCE_DIR, file);
+    (void)snprintf(path, sizeof path, "%s/data/faces/%s", BS_TEST_SOURCE_DIR, file);
     bs_model *m = NULL;
     bs_parse_error err;
     memset(&err, 0, sizeof err);
@@ -30,7 +32,7 @@ static double ref_value(const char *name, const char *key)
 {
     char path[512], line[256], k[32];
     double x = NAN;
-    (void)snprintf(path, sizeof path, "%s/data/sweep/%s.ref", BS_TEST_SOURCE_DIR, name);
+    (void)snprintf(path, sizeof path, "%s/data/faces/%s.ref", BS_TEST_SOURCE_DIR, name);
     FILE *f = fopen(path, "r");
     CHECKF(f != NULL, "%s not found", path);
     while (f != NULL && fgets(line, sizeof line, f) != NULL)
@@ -88,12 +90,32 @@ static void classify_at(const char *file, const bs_model *m, double u, double v,
     CHECKF(where == want, "%s: (%g, %g) classified %d, not %d", file, u, v, where, want);
 }
 
+/* A 514 shell that no 186 holds: the box of 4 x 3 x 2 without its top, five faces, 12 edges (the
+ * top's four used once). */
+static void test_open_box(void)
+{
+    bs_model *m = NULL;
+    bs_parse_error err;
+    memset(&err, 0, sizeof err);
+    bs_status st = bs_model_read_iges_file(BS_TEST_SOURCE_DIR "/data/faces/open-box-brep.igs", &err, &m);
+    CHECKF(st == BS_OK, "open-box-brep.igs: status %d (%s)", st, err.message);
+    if (m == NULL)
+        return;
+    double area = NAN;
+    CHECK_STATUS(bs_model_properties(m, 1e-10, &area, NULL, NULL), BS_OK);
+    CHECKF(bs_model_face_count(m) == 5 && bs_model_edge_count(m) == 12 && bs_model_shell_count(m) == 1 &&
+               bs_model_shell_closed(m, 0) == 0 && fabs(area - ref_value("open-box", "area")) <= 1e-12 * area,
+           "open-box-brep.igs: %zu faces, %zu edges, %zu shells (closed %d), area %.15g", bs_model_face_count(m),
+           bs_model_edge_count(m), bs_model_shell_count(m), bs_model_shell_closed(m, 0), area);
+    bs_model_destroy(m);
+}
+
 int main(void)
 {
     static const char *const names[] = {"tube-band", "tube-shift", "tube-full", "pipe-shift"};
-    static const char *const ext[] = {".step", ".igs"};
+    static const char *const ext[] = {".step", ".igs", "-brep.igs"};
     for (size_t n = 0; n < sizeof names / sizeof names[0]; n++)
-        for (size_t e = 0; e < 2; e++) {
+        for (size_t e = 0; e < 3; e++) {
             char file[64];
             (void)snprintf(file, sizeof file, "%s%s", names[n], ext[e]);
             bs_model *m = read_sweep(file);
@@ -110,6 +132,8 @@ int main(void)
              * is (curve, angle)). IGES writes the tube's band and shifted face on an arc of the
              * circle, not the whole circle: their surfaces end where the arc does. */
             int d = fi.kind == BS_FACE_REVOLUTION && e == 0 ? 1 : 0, whole = e == 0 || n >= 2;
+            CHECKF(bs_model_shell_count(m) == 1 && bs_model_shell_closed(m, 0) == (n == 2), "%s: %zu shells, closed %d",
+                   file, bs_model_shell_count(m), bs_model_shell_closed(m, 0));
             if (whole)
                 periodic(file, m, d, 2.0 * pi);
             if (n == 1 && e == 0) { /* 5 .. 7.5 along the circle holds 0.5 (= 6.78) and 6, not 4 nor 1.5 */
@@ -125,5 +149,6 @@ int main(void)
             }
             bs_model_destroy(m);
         }
-    return bs_test_exit("test_closed_sweeps");
+    test_open_box();
+    return bs_test_exit("test_occt_faces");
 }
