@@ -129,12 +129,6 @@ static int tessellate_model(const cli_input *in, const bs_tess_options *o, size_
     b.method = BS_TESS_SUBDIVIDE;
     b.max_triangles = budget;
     bs_status st = bs_model_tessellate(model, &b, out);
-    if (st == BS_ERR_UNSUPPORTED && !(o->flags & BS_TESS_STRIPS)) {
-        /* faces without trim loops (an IGES file of lone surfaces): their patches, as in 1.1 */
-        rc = cli_tessellate("tessellate", bs_model_surface(model), o, budget, out);
-        bs_model_destroy(model);
-        return rc;
-    }
     bs_model_destroy(model);
     if (st == BS_ERR_SIZE && budget != 0)
         return cli_fail("tessellate", CLI_INPUT,

@@ -69,7 +69,7 @@ typedef struct bs_face_info {
     size_t instance;       /**< assembly placement id (0 without assemblies) */
     size_t first_patch;    /**< its patches in bs_model_surface(): first_patch .. +patch_count-1 */
     size_t patch_count;    /**< number of those patches */
-    size_t loop_count;     /**< trim loops, the outer first; 0 = untrimmed */
+    size_t loop_count;     /**< trim loops, the outer first; 0 = untrimmed (bounded by its box) */
     double u0;             /**< native parameter box of the trimmed face: u from u0 ... */
     double u1;             /**< ... to u1 */
     double v0;             /**< v from v0 ... */
@@ -382,9 +382,9 @@ BS_API bs_status bs_model_properties(const bs_model *m, double rel_tol, double *
  * @param[out] out  receives the mesh (bs_mesh_destroy()); NULL on failure.
  * @return BS_OK (an empty model gives an empty mesh); BS_ERR_INVALID_ARG if m, o or out is NULL,
  *         o->size is too small, the method is unknown or flags has unknown bits;
- *         BS_ERR_UNSUPPORTED for BS_TESS_UNIFORM, BS_TESS_STRIPS, and a face without trim loops
- *         (an IGES file of lone surfaces: tessellate bs_model_surface() instead; the faces of
- *         bs_model_from_surface() are bounded by their boxes and are meshed);
+ *         BS_ERR_UNSUPPORTED for BS_TESS_UNIFORM and BS_TESS_STRIPS (untrimmed faces, such as
+ *         an IGES file's lone surfaces and the faces of bs_model_from_surface(), are bounded by
+ *         their boxes and are meshed);
  *         BS_ERR_DOMAIN if the tolerance is NaN, Inf, zero or negative, or a face's trim loops
  *         cross or are not closed; BS_ERR_SIZE over a budget (a face's points are counted as they
  *         are made, so the work stops soon after) or past 32-bit indices; BS_ERR_NO_MEMORY.

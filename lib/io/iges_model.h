@@ -94,6 +94,7 @@ typedef struct igm_acc {
     size_t open;           /* trims of the loop being read */
     double period[2];      /* native periods of the face's surface */
     const igm_surface *sf; /* the face's surface, once a trim is read */
+    int untrimmed;         /* the loop is the surface's own box (a lone 128): reported untrimmed */
 } igm_acc;
 
 void bsi_igm_acc_free(igm_acc *a);

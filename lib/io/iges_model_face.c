@@ -247,6 +247,7 @@ bs_status bsi_igm_add_face(igm *m, size_t s, size_t ss, igm_acc *a, int reversed
     spec.loop_len = a->lens.data;
     spec.nloop = a->lens.n;
     spec.box = box;
+    spec.untrimmed = a->untrimmed;
     size_t before = bs_surface_count(bs_model_surface(m->model));
     r = bsi_model_add_face(m->model, &spec, NULL);
     a->trims.n = 0; /* moved or freed */
@@ -398,15 +399,15 @@ bs_status bsi_igm_untrimmed(igm *m, size_t s, size_t shell)
     bs_status r = bsi_igm_surface(m, s, 0);
     if (r != BS_OK)
         return r;
-    const igm_surface *sf = m->slot[s].surf;
-    bsi_face_spec spec;
-    memset(&spec, 0, sizeof spec);
-    spec.def = &sf->def;
-    spec.swap = sf->swap;
-    spec.shell = shell;
-    spec.box = sf->box;
+    /* its own box as its loop, as a 144 without an outer boundary has (its sides become edges,
+     * the tessellator meshes it), reported as untrimmed (no loop) */
+    igm_acc a;
+    memset(&a, 0, sizeof a);
     m->slot[s].used = 1;
-    size_t before = bs_surface_count(bs_model_surface(m->model));
-    r = bsi_model_add_face(m->model, &spec, NULL);
-    return r == BS_OK ? spend_patches(m, s, before) : bsi_igm_name(m, s, r);
+    a.untrimmed = 1;
+    r = box_loop(m, s, m->slot[s].surf, &a);
+    if (r == BS_OK)
+        r = bsi_igm_add_face(m, s, s, &a, 0, shell);
+    bsi_igm_acc_free(&a);
+    return r;
 }

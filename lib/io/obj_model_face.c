@@ -210,7 +210,8 @@ static bs_status order_loops(objm *o, const face_build *fb, bsi_trim **trims, si
                        "a second trim loop: a face of a model has one outer loop");
         return BS_ERR_UNSUPPORTED;
     }
-    size_t extra = o->loops.n > 0 && outer == 0 ? 4 : 0, n = o->trims.n + extra;
+    /* holes without an outer loop, or no loop at all (an untrimmed surf): the box is the outer */
+    size_t extra = outer == 0 ? 4 : 0, n = o->trims.n + extra;
     *ntrim = n;
     *nloop = o->loops.n + (extra > 0);
     *trims = malloc((n ? n : 1) * sizeof **trims);
@@ -241,6 +242,7 @@ static bs_status add_face(objm *o, face_build *fb)
 {
     bsi_trim *trims = NULL;
     size_t *lens = NULL, nloop = 0, ntrim = 0, id;
+    int untrimmed = o->loops.n == 0; /* given its box as its loop, reported as untrimmed */
     bs_status st = order_loops(o, fb, &trims, &ntrim, &lens, &nloop);
     if (st == BS_OK) {
         bsi_face_spec spec;
@@ -250,6 +252,7 @@ static bs_status add_face(objm *o, face_build *fb)
         spec.loop_len = lens;
         spec.nloop = nloop;
         spec.ntrim = ntrim;
+        spec.untrimmed = untrimmed;
         st = bsi_model_add_face(o->m, &spec, &id);
     }
     free(trims);

@@ -147,8 +147,8 @@ static void put_face(writer *wr, const bs_model *m, const bsi_face *f)
     int rat = 0, bezier = f->kind == BS_FACE_BEZIER && sides_shared(m, f);
     for (size_t k = 0; k < f->patch_count; k++)
         rat |= bs_surface_get(m->surface, f->first_patch + k)->rational;
-    size_t first_curve = wr->ncurve;
-    for (size_t l = f->first_loop; l < f->first_loop + f->loop_count; l++)
+    size_t first_curve = wr->ncurve, loops = f->untrimmed ? 0 : f->loop_count; /* its box goes without saying */
+    for (size_t l = f->first_loop; l < f->first_loop + loops; l++)
         for (size_t t = m->loops[l].first_trim; t < m->loops[l].first_trim + m->loops[l].trim_count; t++)
             put_curve(wr, f, &m->trims[t].uv, f->reversed);
     /* the OBJ net, u fastest: Bezier segments share their sides, B-spline spans do not */
@@ -186,7 +186,7 @@ static void put_face(writer *wr, const bs_model *m, const bsi_face *f)
     wr->nv += cnt[0] * cnt[1];
     put_knots(o, "u", ax[0]->breaks, ax[0]->n, bezier ? 1 : deg[0] + 1);
     put_knots(o, "v", ax[1]->breaks, ax[1]->n, bezier ? 1 : deg[1] + 1);
-    for (size_t l = 0, k = first_curve; l < f->loop_count; l++) {
+    for (size_t l = 0, k = first_curve; l < loops; l++) {
         const bsi_loop *loop = &m->loops[f->first_loop + l];
         bsi_sink_str(o, l == 0 ? "trim" : "hole");
         for (size_t t = loop->first_trim; t < loop->first_trim + loop->trim_count; t++, k++) {

@@ -166,6 +166,7 @@ typedef struct bsi_face {
     bsi_axis au, av;           /* canonical directions; patch (i, j) = first_patch + i * av.n + j */
     double period[2];          /* native periods of u and v (0: not periodic) */
     size_t first_loop, loop_count;
+    int untrimmed;             /* 1: its one loop is its surface's own box (reported as 0 loops) */
     double box[4];             /* native u0 u1 v0 v1 */
 } bsi_face;
 
@@ -204,6 +205,7 @@ typedef struct bsi_face_spec {
     size_t ntrim;
     const size_t *loop_len;
     size_t nloop;
+    int untrimmed;               /* 1: the one loop is the surface's own box (an IGES lone 128) */
 } bsi_face_spec;
 
 /* Append a face: its patches over its box, its loops. On failure the model is as before (the

@@ -146,6 +146,7 @@ bs_status bsi_model_add_face(bs_model *m, const bsi_face_spec *spec, size_t *fac
     face.patch_count = bs_surface_count(m->surface) - first_patch;
     face.first_loop = m->nloop;
     face.loop_count = spec->nloop;
+    face.untrimmed = spec->untrimmed != 0 && spec->nloop == 1;
     for (size_t l = 0, t = m->ntrim; l < spec->nloop; l++) {
         m->loops[m->nloop].first_trim = t;
         m->loops[m->nloop].trim_count = spec->loop_len[l];
@@ -287,7 +288,7 @@ bs_status bs_model_face_info(const bs_model *m, size_t face, bs_face_info *info)
     out.instance = f->instance;
     out.first_patch = f->first_patch;
     out.patch_count = f->patch_count;
-    out.loop_count = f->loop_count;
+    out.loop_count = f->untrimmed ? 0 : f->loop_count;
     out.u0 = f->box[0];
     out.u1 = f->box[1];
     out.v0 = f->box[2];

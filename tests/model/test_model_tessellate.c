@@ -432,11 +432,69 @@ static void check_options(void)
     bs_model_destroy(m);
 }
 
+/* Faces without trims (an IGES lone 128, an OBJ surf without trim statements) are reported
+ * untrimmed (no loop) and meshed over their whole box: within tolerance, inside the face, and of
+ * the face's area to the chords' order (5e-3 relative at about 1e-3 D). */
+static void check_untrimmed(const char *what, bs_model *m, double tol)
+{
+    if (m == NULL)
+        return;
+    bs_face_info fi;
+    fi.size = sizeof fi;
+    CHECK(bs_model_face_info(m, 0, &fi) == BS_OK && fi.loop_count == 0);
+    double area = NAN;
+    CHECK_STATUS(bs_model_properties(m, 1e-9, &area, NULL, NULL), BS_OK);
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    o.method = BS_TESS_SUBDIVIDE;
+    o.tolerance = tol;
+    bs_mesh *mesh = NULL;
+    bs_status st = bs_model_tessellate(m, &o, &mesh);
+    CHECKF(st == BS_OK, "%s: %s", what, bs_status_string(st));
+    mesh_copy c;
+    if (st == BS_OK && copy_mesh(mesh, &c)) {
+        double sum = 0.0;
+        const double *xyz[3] = {c.x, c.y, c.z};
+        for (size_t t = 0; t < c.nt; t++) {
+            double e[2][3], n[3];
+            for (int k = 0; k < 3; k++) {
+                e[0][k] = xyz[k][c.tri[3 * t + 1]] - xyz[k][c.tri[3 * t]];
+                e[1][k] = xyz[k][c.tri[3 * t + 2]] - xyz[k][c.tri[3 * t]];
+            }
+            for (int k = 0; k < 3; k++)
+                n[k] = e[0][(k + 1) % 3] * e[1][(k + 2) % 3] - e[0][(k + 2) % 3] * e[1][(k + 1) % 3];
+            sum += 0.5 * hypot(hypot(n[0], n[1]), n[2]);
+        }
+        stats s;
+        sample_triangles(m, &c, tol, &s);
+        CHECKF(c.nt > 100 && s.worst_err <= 1.0 && s.outside == 0 && s.degenerate == 0 && fabs(sum - area) <= 5e-3 * area,
+               "%s: %zu triangles, error %.3g tol, %zu outside, %zu degenerate, area %.8g of %.8g", what, c.nt,
+               s.worst_err, s.outside, s.degenerate, sum, area);
+        mesh_copy_free(&c);
+    }
+    bs_mesh_destroy(mesh);
+    bs_model_destroy(m);
+}
+
+static void check_untrimmed_faces(void)
+{
+    bs_model *m = NULL;
+    CHECK_STATUS(bs_model_read_iges_file(BS_TEST_SOURCE_DIR "/../io/data/iges/vase.igs", NULL, &m), BS_OK);
+    check_untrimmed("vase.igs (a lone 128 closed round its axis)", m, 4e-3);
+    static const char obj[] = "v 0 0 0\nv 1 0 0.2\nv 2 0 0\nv 0 1 0.3\nv 1 1 1\nv 2 1 0.1\nv 0 2 0\nv 1 2 0.4\n"
+                              "v 2 2 0\ncstype bezier\ndeg 2 2\nsurf 0 1 0 1 1 2 3 4 5 6 7 8 9\nparm u 0 1\n"
+                              "parm v 0 1\nend\n";
+    m = NULL;
+    CHECK_STATUS(bs_model_read_obj(obj, sizeof obj - 1, NULL, &m), BS_OK);
+    check_untrimmed("an OBJ surf without trims", m, 3e-3);
+}
+
 int main(void)
 {
     int quick = getenv("BS_TEST_QUICK") != NULL, full = getenv("BS_TEST_FULL") != NULL;
     check_options();
     check_t_junction_detected();
+    check_untrimmed_faces();
     for (size_t p = 0; p < sizeof parts / sizeof parts[0]; p++)
         for (size_t s = 0; s < (quick ? 1 : sizeof suffixes / sizeof suffixes[0]); s++) {
             check_file(parts[p], suffixes[s], 1e-3, s == 0);
