@@ -166,9 +166,11 @@ int cli_load(const char *cmd, const cli_input *in, bs_surface **out)
     if (strcmp(in->path, "-") == 0)
         return read_stdin(cmd, fmt, out);
     bs_parse_error err;
+    memset(&err, 0, sizeof err);
     errno = 0;
     bs_status st = fmt->read_file(in->path, &err, out);
-    if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED)
+    /* a size cap the reader names (B-spline spans past the points per byte) is the input's fault */
+    if (st == BS_ERR_PARSE || st == BS_ERR_UNSUPPORTED || (st == BS_ERR_SIZE && err.message[0] != '\0'))
         return cli_fail(cmd, CLI_INPUT, "%s:%zu:%zu: %s", in->path, err.line, err.column, err.message);
     if (st == BS_ERR_IO) /* the library's reason, and the system's where a system call failed */
         return cli_fail(cmd, CLI_INPUT, "%s: %s%s%s", in->path, err.message, errno ? ": " : "",

@@ -18,6 +18,7 @@ typedef struct iges {
     size_t first[IGES_SECTIONS];     /* first record of each section */
     size_t count[IGES_SECTIONS];     /* its number of records */
     char pdelim, rdelim;             /* parameter and record delimiters of the global section */
+    size_t points;                   /* patch control points made so far (BSI_READ_POINTS caps them) */
 } iges;
 
 /* Parameters spread over consecutive records: columns 1..width of records first .. first+nrec-1. */

@@ -212,15 +212,21 @@ static bs_status face_box(igm *m, size_t s, igm_surface *sf, const igm_acc *a, d
     return BS_OK;
 }
 
-/* The patches a face added since `before` counted against the copies the file allows (16 points
- * each): a large surface trimmed by many faces cannot outgrow the input either. */
+/* The patches a face added since `before` counted against the copies the file allows, each as its
+ * control points and at least 16 (a patch's own record weighs as much): a large surface trimmed by
+ * many faces cannot outgrow the input either. */
 static bs_status spend_patches(igm *m, size_t s, size_t before)
 {
-    size_t added = bs_surface_count(bs_model_surface(m->model)) - before;
-    size_t cap = m->g.len < SIZE_MAX / 8 ? 8 * m->g.len : SIZE_MAX;
-    if (added > (cap - m->copies) / 16)
+    const bs_surface *all = bs_model_surface(m->model);
+    size_t points = 0, cap = m->g.len < SIZE_MAX / 8 ? 8 * m->g.len : SIZE_MAX;
+    for (size_t p = before; p < bs_surface_count(all); p++) {
+        const bs_patch *q = bs_surface_get(all, p);
+        size_t own = (q->deg_u + 1) * (q->deg_v + 1); /* degrees at most BS_MAX_DEGREE: no overflow */
+        points += own > 16 ? own : 16;
+    }
+    if (points > cap - m->copies)
         return bsi_igm_fail(m, s, 1, "surfaces reused more often than the file's size allows");
-    m->copies += 16 * added;
+    m->copies += points;
     return BS_OK;
 }
 

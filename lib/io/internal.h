@@ -46,6 +46,22 @@ bs_status bsi_read_file(const char *path, bs_parse_error *err, char **data, size
  * BS_ERR_INVALID_ARG if path or out is NULL, bsi_read_file's statuses, or the reader's. */
 typedef bs_status (*bsi_text_reader)(const char *text, size_t len, bs_parse_error *err, bs_surface **out);
 bs_status bsi_read_surface_file(const char *path, bs_parse_error *err, bs_surface **out, bsi_text_reader read);
+/* Patch control points the surface readers (OBJ, IGES 128) make from a text of len bytes at most:
+ * 4 per byte and 2^16 more. A B-spline's spans each become (p + 1) (q + 1) points, so a small
+ * file of degree-64 surfaces would otherwise ask for gigabytes: the count is taken from the spans
+ * before anything is converted, and past the cap the reader fails with BS_ERR_SIZE. Files of
+ * ordinary B-splines make well under one point per byte (a bicubic span per control point of
+ * some 35 bytes: 0.5). */
+#define BSI_READ_POINTS(len) ((len) < (SIZE_MAX - 65536) / 4 ? 4 * (len) + 65536 : SIZE_MAX)
+/* The control points of nu x nv patches of degrees du x dv, saturating at SIZE_MAX. */
+static inline size_t bsi_span_points(size_t nu, size_t nv, size_t du, size_t dv)
+{
+    size_t per = (du + 1) * (dv + 1); /* degrees are at most BS_MAX_DEGREE */
+    if (nu == 0 || nv == 0)
+        return 0;
+    return nv > SIZE_MAX / nu || nu * nv > SIZE_MAX / per ? SIZE_MAX : nu * nv * per;
+}
+
 /* An array appended to as the data is read (never sized from a declared count). */
 typedef struct bsi_growing {
     void *data;

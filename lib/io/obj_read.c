@@ -30,6 +30,7 @@ typedef struct obj {
     int have_parm[2];
     bs_surface *s;
     size_t surfs;             /* surf statements read */
+    size_t points;            /* patch control points made so far (BSI_READ_POINTS caps them) */
     size_t skipped[4], skip_line, skip_col; /* f, l, p, curv/curv2 skipped; where the first was */
 } obj;
 
@@ -367,6 +368,12 @@ static bs_status build_bspline(obj *o, double *ctrl, double *w)
         if (!(cut[d + 1] > cut[d]))
             return fail_surf(o, -1, "the surf range is empty or outside the knots' domain");
     }
+    size_t made = bsi_span_points(nu, nv, b.deg_u, b.deg_v);
+    if (made > BSI_READ_POINTS(o->len) - o->points) {
+        (void)fail_surf(o, -1, "B-spline spans of more patch control points than 4 per byte of the file");
+        return BS_ERR_SIZE;
+    }
+    o->points += made;
     bs_status st = bsi_add_bspline_range(o->s, &b, cut);
     if (st == BS_ERR_NONFINITE)
         return fail_surf(o, -1, "weight times coordinate overflows");

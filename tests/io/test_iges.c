@@ -507,6 +507,22 @@ static void test_no_bspline(void)
     free(t);
 }
 
+/* tests/hostile/iges_deg64_amp_10.igs: 36 KB of degree-64 B-spline spans, 100 patches of 4,225
+ * points: refused by both IGES readers before any span is converted. */
+static void test_amplified(void)
+{
+    const char *path = BS_TEST_SOURCE_DIR "/../hostile/iges_deg64_amp_10.igs";
+    bs_surface *s = (bs_surface *)&s;
+    bs_model *m = (bs_model *)&m;
+    bs_parse_error err;
+    memset(&err, 0, sizeof err);
+    CHECK_STATUS(bs_surface_read_iges_file(path, &err, &s), BS_ERR_SIZE);
+    CHECKF(s == NULL && strstr(err.message, "4 per byte") != NULL, "%s", err.message);
+    memset(&err, 0, sizeof err);
+    CHECK_STATUS(bs_model_read_iges_file(path, &err, &m), BS_ERR_SIZE);
+    CHECKF(m == NULL && strstr(err.message, "4 per byte") != NULL, "%s", err.message);
+}
+
 int main(void)
 {
     make_nets();
@@ -522,5 +538,6 @@ int main(void)
     test_locale();
     test_files();
     test_no_bspline();
+    test_amplified();
     return bs_test_exit("test_iges");
 }

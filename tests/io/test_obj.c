@@ -420,6 +420,35 @@ static void test_locale(void)
     bs_surface_destroy(b);
 }
 
+/* tests/hostile/obj_deg64_amp_40.obj: 22 KB of degree-64 B-spline spans that would become 1,600
+ * patches of 4,225 points (624 MB): refused before any is converted, and a degree-64 surface of
+ * one span in a file of its size read. */
+static void test_amplified(void)
+{
+    bs_surface *s = (bs_surface *)&s;
+    bs_parse_error err;
+    memset(&err, 0, sizeof err);
+    CHECK_STATUS(bs_surface_read_obj_file(BS_TEST_SOURCE_DIR "/../hostile/obj_deg64_amp_40.obj", &err, &s), BS_ERR_SIZE);
+    CHECKF(s == NULL && err.line == 4 && strstr(err.message, "4 per byte") != NULL, "%zu: %s", err.line, err.message);
+    size_t n = 65 * 65, cap = 64 * n + 4096, len = 0;
+    char *t = malloc(cap);
+    if (t == NULL)
+        return;
+    len += (size_t)snprintf(t + len, cap - len, "v 0 0 0\nv 1 0 0\ncstype bspline\ndeg 64 64\nsurf 0 1 0 1");
+    for (size_t k = 0; k < n; k++)
+        len += (size_t)snprintf(t + len, cap - len, " %d", k % 2 ? 2 : 1);
+    for (int d = 0; d < 2; d++) {
+        len += (size_t)snprintf(t + len, cap - len, "\nparm %c", d ? 'v' : 'u');
+        for (int k = 0; k < 130; k++)
+            len += (size_t)snprintf(t + len, cap - len, " %d", k < 65 ? 0 : 1);
+    }
+    len += (size_t)snprintf(t + len, cap - len, "\nend\n");
+    CHECK_STATUS(bs_surface_read_obj(t, len, &err, &s), BS_OK);
+    CHECK(s != NULL && bs_surface_count(s) == 1);
+    bs_surface_destroy(s);
+    free(t);
+}
+
 int main(void)
 {
     test_round_trips();
@@ -427,6 +456,7 @@ int main(void)
     test_bspline();
     test_errors();
     test_hostile();
+    test_amplified();
     test_locale();
     return bs_test_exit("test_obj");
 }
