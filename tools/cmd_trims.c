@@ -61,7 +61,7 @@ static void line(const plot *p, double xa, double ya, double xb, double yb, int 
 
 static int classify(const plot *p, size_t n, const double *u, const double *v, unsigned char *in)
 {
-    uint32_t *faces = malloc(n * sizeof(uint32_t) + 1);
+    uint32_t *faces = calloc(n + 1, sizeof(uint32_t)); /* zeroed: n may be 0 */
     if (faces == NULL)
         return -1;
     for (size_t k = 0; k < n; k++)

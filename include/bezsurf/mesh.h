@@ -150,7 +150,10 @@ BS_API bs_status bs_surface_tessellate(const bs_surface *s, const bs_tess_option
 /**
  * @brief The vertex and triangle counts bs_surface_tessellate() would produce with the same
  * arguments, computed without building the mesh (memory O(number of patches), plus the quadtree for
- * BS_TESS_SUBDIVIDE). Budgets are not applied, so a caller can see how far over they are.
+ * BS_TESS_SUBDIVIDE). Budgets give no error, so a caller can see that they are exceeded. With
+ * BS_TESS_SUBDIVIDE a budget bounds the work: as soon as the mesh surely exceeds it, counting stops
+ * and the counts returned are lower bounds, already over the budget (since 1.2; set no budget
+ * for the exact counts, at the cost of the whole quadtree: about 16 bytes per leaf).
  * @param[in]  s          the surface (dim 3).
  * @param[in]  o          the options.
  * @param[out] vertices   NULL or receives the vertex count.

@@ -47,10 +47,18 @@ static bs_status prepare(subdiv *sd, const bs_surface *s, double tol, size_t max
     return st;
 }
 
-bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t *vertices, size_t *triangles)
+bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t max_vertices, size_t max_triangles,
+                                   size_t *vertices, size_t *triangles)
 {
     subdiv sd;
-    bs_status st = prepare(&sd, s, tol, 0, 0);
+    bs_status st = prepare(&sd, s, tol, max_triangles, max_vertices);
+    /* past a budget the trees stop growing: their lower bounds, already over it, are the answer */
+    if (st == BS_ERR_SIZE && ((max_triangles && sd.tri_lower > max_triangles) ||
+                              (max_vertices && sd.vert_lower > max_vertices))) {
+        sd.nvert = sd.vert_lower;
+        sd.ntri = sd.tri_lower;
+        st = BS_OK;
+    }
     if (st == BS_OK) {
         if (vertices)
             *vertices = sd.nvert;

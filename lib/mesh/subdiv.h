@@ -73,11 +73,13 @@ bs_status bsi_subdiv_emit(subdiv *s, tess *t);
 void bsi_subdiv_centres(const subdiv *s, double *uv);
 void bsi_subdiv_free(subdiv *s);
 
-/* The whole method (subdiv.c), tol absolute: the counts only, or the mesh, refused with BS_ERR_SIZE
- * before the mesh's arrays are allocated when it would have more than max_vertices vertices or
- * max_triangles triangles (0: no budget) or exceed 32-bit indices; vertices sampled on up to
- * `threads` threads (0 = one per online CPU). */
-bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t *vertices, size_t *triangles);
+/* The whole method (subdiv.c), tol absolute: the counts only (past a budget, lower bounds already
+ * over it, found as soon as the trees show it), or the mesh, refused with BS_ERR_SIZE before the
+ * mesh's arrays are allocated when it would have more than max_vertices vertices or max_triangles
+ * triangles (0: no budget) or exceed 32-bit indices; vertices sampled on up to `threads` threads
+ * (0 = one per online CPU). */
+bs_status bsi_tess_subdivide_count(const bs_surface *s, double tol, size_t max_vertices, size_t max_triangles,
+                                   size_t *vertices, size_t *triangles);
 bs_status bsi_tess_subdivide(const bs_surface *s, double tol, int flags, size_t max_vertices, size_t max_triangles,
                              size_t threads, bs_mesh **out);
 

@@ -129,8 +129,8 @@ bs_status bs_surface_tessellate_count(const bs_surface *s, const bs_tess_options
     if (st != BS_OK)
         return st;
     if (o->method == BS_TESS_SUBDIVIDE)
-        return bsi_tess_subdivide_count(s, bsi_tess_absolute_tolerance(s, o->tolerance, o->flags), vertices,
-                                        triangles);
+        return bsi_tess_subdivide_count(s, bsi_tess_absolute_tolerance(s, o->tolerance, o->flags), o->max_vertices,
+                                        o->max_triangles, vertices, triangles);
     tess_counts c;
     st = bsi_tess_measure(&t, &c);
     bsi_tess_free(&t);

@@ -416,6 +416,26 @@ static void repeat_strips_budgets(void)
     o.max_triangles = 0;
     CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_SIZE);
     CHECK(m == NULL);
+    /* counting under a budget stops there too: lower bounds over the budget, below the exact
+     * counts (at 1e-12 without a budget the trees would take gigabytes) */
+    size_t nv = 0, exact_nv = 0, exact_nt = 0;
+    o.max_vertices = 0;
+    o.tolerance = 1e-4;
+    CHECK_STATUS(bs_surface_tessellate_count(s, &o, &exact_nv, &exact_nt), BS_OK);
+    o.max_triangles = exact_nt / 8;
+    CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv, &nt), BS_OK);
+    CHECKF(nt > o.max_triangles && nt < exact_nt && nv < exact_nv, "count under a budget of %zu: %zu (exact %zu)",
+           o.max_triangles, nt, exact_nt);
+    o.max_triangles = 0;
+    o.max_vertices = exact_nv / 8;
+    CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv, &nt), BS_OK);
+    CHECKF(nv > o.max_vertices && nv < exact_nv, "count under a budget of %zu vertices: %zu (exact %zu)",
+           o.max_vertices, nv, exact_nv);
+    o.max_vertices = 0;
+    o.max_triangles = 1000;
+    o.tolerance = 1e-12;
+    CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv, &nt), BS_OK);
+    CHECK(nt > 1000);
     bs_surface_destroy(s);
 }
 

@@ -379,7 +379,8 @@ impl Surface {
     }
 
     /// The (vertices, triangles) [`Surface::tessellate`] would give with `options`, computed
-    /// without building the mesh (`bs_surface_tessellate_count`; budgets are not applied).
+    /// without building the mesh (`bs_surface_tessellate_count`; budgets give no error, but with
+    /// the subdivision method counting stops past one and the counts are then lower bounds over it).
     pub fn tessellate_count(&self, options: &TessOptions) -> Result<(usize, usize)> {
         let o = options.raw();
         let (mut nv, mut nt) = (0usize, 0usize);
