@@ -70,11 +70,15 @@ def mesh_format(f: Any, name: str = "format") -> int:
 
 
 def path(p: Any, name: str = "path") -> bytes:
-    """A file name for the C library (str, bytes or os.PathLike)."""
+    """A file name for the C library (str, bytes or os.PathLike); a NUL byte in it is refused as
+    open() refuses it (the C library would read the name only up to it)."""
     try:
-        return os.fsencode(p)
+        b = os.fsencode(p)
     except TypeError:
         raise TypeError(f"{name} must be a str, bytes or os.PathLike, not {_name(p)}") from None
+    if b"\0" in b:
+        raise ValueError(f"{name} must not contain a NUL byte (embedded null byte): {p!r}")
+    return b
 
 
 def instance(x: Any, cls: type, name: str) -> None:

@@ -279,6 +279,19 @@ class IOErrorTest(unittest.TestCase):
             bezsurf.Surface([square(0)]).save(bytes(ok, "utf-8"))   # bytes paths work too
             self.assertEqual(len(bezsurf.Surface.load(ok)), 1)
 
+    @requires("bs_mesh_write")
+    def test_nul_in_paths(self):
+        # refused as open() refuses it, nothing written under the name cut at the NUL
+        m = bezsurf.Surface([square(0)]).tessellate(1)
+        with tempfile.TemporaryDirectory() as d:
+            cut = os.path.join(d, "a")
+            surface = bezsurf.Surface([square(0)])
+            for save in (surface.save, m.write, bezsurf.Surface.load,
+                         lambda p: surface.save(bytes(p, "utf-8"))):
+                with self.assertRaisesRegex(ValueError, "null byte"):
+                    save(cut + "\0b.bpt")
+                self.assertFalse(os.path.exists(cut))
+
     @unittest.skipIf(os.geteuid() == 0, "root reads and writes anything")
     def test_permission(self):
         with tempfile.TemporaryDirectory() as d:
