@@ -7,6 +7,8 @@
 
 #include "io/internal.h"
 
+#include <math.h>
+
 enum { IGES_S, IGES_G, IGES_D, IGES_P, IGES_T, IGES_SECTIONS };
 
 typedef struct iges {
@@ -52,5 +54,19 @@ bs_status bsi_iges_int(const iges *g, iges_stream *s, const char *what, long lo,
 /* Integer field f (1..20) of the directory entry whose first record is D record de: BS_ERR_PARSE
  * when it is not blank or an integer. */
 bs_status bsi_iges_de_field(const iges *g, size_t de, int f, long *x);
+
+/* 1 when the 3 x 3 part of a 124 matrix (rows of 4: R | T) maps space onto a plane or less: its
+ * determinant is zero or negligible against its entries (an all-zero rotation was accepted once,
+ * collapsing every point to T). */
+static inline int bsi_iges_singular(const double *m)
+{
+    double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                 m[2] * (m[4] * m[9] - m[5] * m[8]);
+    double big = 0.0;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            big = fabs(m[4 * r + c]) > big ? fabs(m[4 * r + c]) : big;
+    return !(fabs(det) > 1e-12 * big * big * big);
+}
 
 #endif

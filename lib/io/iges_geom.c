@@ -22,6 +22,8 @@ static bs_status read_124(igm *m, size_t s)
         r = bsi_iges_real(&m->g, &st, "a matrix entry", &mat[k], &f);
     if (r == BS_OK)
         r = bsi_igm_rest(m, &st);
+    if (r == BS_OK && bsi_iges_singular(mat))
+        r = bsi_igm_fail(m, s, 1, "transformation matrix (124) is singular");
     if (r != BS_OK) {
         free(mat);
         return bsi_igm_name(m, s, r);

@@ -75,6 +75,8 @@ static bs_status transform(const iges *g, size_t de, double *ctrl, size_t n)
             st = bsi_iges_real(g, &s, "a matrix entry", &m[k], &f);
         if (st == BS_OK)
             st = rest(g, &s);
+        if (st == BS_OK && bsi_iges_singular(m))
+            return fail_de(g, de, 1, "transformation matrix (124) is singular");
         for (size_t i = 0; i < n && st == BS_OK; i++) {
             double x[3] = {ctrl[3 * i], ctrl[3 * i + 1], ctrl[3 * i + 2]};
             for (size_t r = 0; r < 3; r++)

@@ -240,6 +240,17 @@ static void test_syntax_and_transforms(void)
     t = make_iges("1H//1H!/9Hx/y!z;,!!/4Htest/1.5D0!", e, 3);
     expect_error(t, 3, 49, "even transformation pointer");
     free(t);
+    /* a 124 that maps space onto a point (an all-zero rotation), then onto a plane */
+    e[0].transform = 3;
+    e[1].transform = 0;
+    e[1].params = "124/0/0/0/1/0/0/0/0/0/0/0/0!";
+    t = make_iges("1H//1H!/9Hx/y!z;,!!/4Htest/1.5D0!", e, 3);
+    expect_error(t, 5, 1, "singular"); /* the 124's own directory entry */
+    free(t);
+    e[1].params = "124/1/2/0/0/2/4/0/0/0/0/1/0!";
+    t = make_iges("1H//1H!/9Hx/y!z;,!!/4Htest/1.5D0!", e, 3);
+    expect_error(t, 5, 1, "singular"); /* the 124's own directory entry */
+    free(t);
     free(p);
 }
 

@@ -458,6 +458,10 @@ static void test_refusals(void)
     memcpy(chain, square, sizeof e);
     chain[8] = (ent){124, 0, 17, "124,1.,0.,0.,0.,0.,1.,0.,0.,0.,0.,1.,0.;"}, chain[5].xform = 17;
     refused(chain, 9, 0, BS_ERR_PARSE, "longer than 16 or circular");
+    chain[8] = (ent){124, 0, 0, "124,0.,0.,0.,1.,0.,0.,0.,0.,0.,0.,0.,0.;"}; /* all points onto (1,0,0) */
+    refused(chain, 9, 0, BS_ERR_PARSE, "singular");
+    chain[8] = (ent){124, 0, 0, "124,1.,2.,0.,0.,2.,4.,0.,0.,0.,0.,1.,0.;"}; /* onto a plane */
+    refused(chain, 9, 0, BS_ERR_PARSE, "singular");
     memcpy(e, square, sizeof e);
     e[2] = (ent){142, 0, 0, "142,0,3,0,8,2;"}; /* an even pointer */
     refused(e, 8, 0, BS_ERR_PARSE, "pointer 8 to no directory entry");
