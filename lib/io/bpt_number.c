@@ -29,7 +29,9 @@ int bsi_parse_double(const char *tok, size_t len, double *out)
 {
     /* Grammar: [+-] (digits [. [digits]] | . digits) [(e|E) [+-] digits] */
     size_t k = 0, ndig = 0;
-    if (len == 0 || len > BSI_NUMBER_MAX)
+    if (len > BSI_NUMBER_MAX)
+        return -2;
+    if (len == 0)
         return 0;
     if (tok[k] == '+' || tok[k] == '-')
         k++;

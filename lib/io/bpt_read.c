@@ -81,6 +81,8 @@ static bs_status read_number(reader *r, const char *what, double *x)
     int ok = bsi_parse_double(r->text + start, tlen, x);
     if (ok == 0)
         return fail(r, start, "expected %s (a finite decimal number)", what);
+    if (ok == -2)
+        return fail(r, start, "%s longer than 400 characters", what);
     if (ok < 0)
         return fail(r, start, "%s out of range for a double", what);
     return BS_OK;

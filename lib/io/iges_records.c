@@ -170,6 +170,10 @@ static bs_status number_field(const iges *g, iges_stream *s, const char *what, i
     bs_status st = bsi_iges_field(g, s, f);
     if (st != BS_OK)
         return st;
+    if (!f->hollerith && f->len > BSI_NUMBER_MAX) {
+        (void)bsi_iges_fail_at(g, s, f->start, "%s longer than 400 characters", what);
+        return BS_ERR_PARSE;
+    }
     if (f->hollerith || !copy_field(g, s, f, buf, BSI_NUMBER_MAX + 1)) {
         (void)bsi_iges_fail_at(g, s, f->start, "expected %s (a number)", what);
         return BS_ERR_PARSE; /* as bsi_iges_fail_at, said here for the analyzer */

@@ -14,7 +14,8 @@
 
 /* Parse the whole token tok[0..len) as a C-notation decimal number (no hex, no nan/inf). Returns 1
  * and sets *out when it is valid and finite, 0 when it is not a number, -1 when it is a number too
- * large for a double (the value underflows quietly to a subnormal or zero, correctly rounded). */
+ * large for a double (the value underflows quietly to a subnormal or zero, correctly rounded), -2
+ * when it is longer than BSI_NUMBER_MAX (whatever it holds). */
 int bsi_parse_double(const char *tok, size_t len, double *out);
 
 /* Write the shortest of "%.15g", "%.16g", "%.17g" that reads back to x exactly, with '.' as the
