@@ -13,8 +13,8 @@
  * Checks, in this order, with the first failure returned and nothing changed: s or b NULL, or a
  * NULL array (BS_ERR_INVALID_ARG); a degree of 0 or over BS_MAX_DEGREE (BS_ERR_DEGREE); dim 0 or
  * over BS_MAX_DIM (BS_ERR_DIMENSION); a count below degree + 1 (BS_ERR_SIZE); a knot that is not
- * finite, knots that decrease, a knot value repeated more than degree + 1 times, or an empty
- * domain (BS_ERR_DOMAIN); a control point coordinate that is not finite, or a weight that is not
+ * finite, knots that decrease, a knot value repeated more than degree + 1 times, an empty domain,
+ * or knots spread over more than DBL_MAX (their differences overflow; since 1.2) (BS_ERR_DOMAIN); a control point coordinate that is not finite, or a weight that is not
  * finite and positive (BS_ERR_NONFINITE). bs_bspline_span_count() and bs_bspline_locate() need only
  * the knots: they check degrees, counts and knots, and do not read dim, ctrl or weights.
  */

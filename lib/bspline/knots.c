@@ -24,7 +24,9 @@ bs_status bsi_knots_check(size_t deg, size_t count, const double *t, bsi_knots *
     size_t nspan = 0;
     for (size_t i = deg; i < count; i++)
         nspan += t[i] < t[i + 1];
-    if (nspan == 0)
+    /* knot differences are the blossom's denominators: past DBL_MAX (knots near +-DBL_MAX) every
+     * patch point would come out Inf */
+    if (nspan == 0 || !isfinite(t[nknot - 1] - t[0]))
         return BS_ERR_DOMAIN;
     k->deg = deg;
     k->count = count;

@@ -289,6 +289,16 @@ static void errors(void)
     EXPECT((kv[0] = kv[1] = kv[2] = kv[3] = 1), BS_ERR_DOMAIN); /* empty domain */
     kv[0] = kv[1] = 0;
     {
+        double wide[] = {-DBL_MAX, -DBL_MAX, DBL_MAX, DBL_MAX}; /* finite knots whose span overflows */
+        EXPECT(b.knots_v = wide, BS_ERR_DOMAIN);
+        double half[] = {-DBL_MAX / 4, -DBL_MAX / 4, DBL_MAX / 4, DBL_MAX / 4}; /* wide, but no overflow */
+        b = good;
+        b.knots_v = half;
+        CHECK_STATUS(bs_bspline_span_count(&b, &nu, &nv), BS_OK);
+        b.knots_v = wide;
+        CHECK_STATUS(bs_bspline_span_count(&b, &nu, &nv), BS_ERR_DOMAIN);
+    }
+    {
         double k3[] = {0, 1, 1, 1, 2}; /* a triple knot in a degree-1 vector: mult > p + 1 */
         EXPECT(b.knots_u = k3, BS_ERR_DOMAIN);
         double e3[] = {0, 0, 0, 1, 2}; /* the same at the start, the domain [0,1] not empty */
