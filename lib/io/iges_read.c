@@ -181,7 +181,7 @@ static bs_status read_128(iges *g, size_t de, bsi_growing *vals, bs_surface *out
         st = bsi_add_bspline_range(out, &b, cut);
     free(ctrl);
     if (st == BS_ERR_DOMAIN)
-        return bsi_iges_fail_at(g, &s, knots_at, "knots repeated more than degree + 1 times, an empty domain or knots spanning more than DBL_MAX");
+        return bsi_iges_fail_at(g, &s, knots_at, "knots repeated over degree + 1 times, an empty domain or knots spanning over DBL_MAX");
     if (st == BS_ERR_NONFINITE)
         return fail_de(g, de, 7, "a control point (transformed, times its weight) is not finite");
     if (st == BS_ERR_SIZE)

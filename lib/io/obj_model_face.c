@@ -150,7 +150,7 @@ static bs_status bspline_face(objm *o, face_build *fb)
         bu.deg_v = b.deg_u;
         bu.count_v = b.count_u;
         int d = bs_bspline_span_count(&bu, &nu, &nv) == BS_OK ? 1 : 0;
-        st = fail_surf(o, d, "knots must not decrease, repeat more than degree + 1 times, leave an empty domain or span more than DBL_MAX");
+        st = fail_surf(o, d, "knots decrease, repeat over degree + 1 times, leave an empty domain or span over DBL_MAX");
     }
     const double *ku = b.knots_u, *kv = b.knots_v;
     double dom[4] = {ku[b.deg_u], ku[b.count_u], kv[b.deg_v], kv[b.count_v]};

@@ -356,7 +356,7 @@ static bs_status build_bspline(obj *o, double *ctrl, double *w)
         bu.deg_v = b.deg_u;
         bu.count_v = b.count_u;
         int d = bs_bspline_span_count(&bu, &nu, &nv) == BS_OK ? 1 : 0;
-        return fail_surf(o, d, "knots must not decrease, repeat more than degree + 1 times, leave an empty domain or span more than DBL_MAX");
+        return fail_surf(o, d, "knots decrease, repeat over degree + 1 times, leave an empty domain or span over DBL_MAX");
     }
     /* the surf statement's range s0 s1 t0 t1, within the knots' domain */
     const double *ku = b.knots_u, *kv = b.knots_v;
