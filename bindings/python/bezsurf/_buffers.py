@@ -236,6 +236,14 @@ class Output:
                 self.columns.append(col)
         self.views = views
 
+    def fill(self, x: float) -> None:
+        """Every value set to x (for results the library leaves unwritten)."""
+        if self.array is not None:
+            self.array[...] = x
+        for col in self.columns:
+            for i in range(len(col)):
+                col[i] = x
+
     def result(self) -> Any:
         if self.array is not None:
             return self.array
@@ -347,6 +355,7 @@ def uint32s(x: Any, what: str) -> Tuple[Any, int, int]:
         arr.append(0)  # a valid pointer; the count passed stays 0
         return arr, arr.buffer_info()[0], 0
     return arr, arr.buffer_info()[0], len(arr)
+
 
 
 class UInt32Output:

@@ -118,9 +118,9 @@ class Locator(Handle):
         ``threads`` threads answer the queries (0: one per CPU; since 1.1), with the same
         results."""
         threads = A.integer(threads, "threads")
-        dim = self.dim
-        if dim == 0:
-            raise ValueError("the locator's surface is empty")
+        # an empty surface: every query misses (patch 0xFFFFFFFF, distance inf, NaN elsewhere), as
+        # every ray does in intersect(); its queries are read as 3-D points there too
+        dim = self.dim or 3
         q = B.PointsIn(points, dim, "points")
         ids = B.UInt32Output(q.n, (q.n,))
         uv = B.Output(q.n, 2)
@@ -128,6 +128,8 @@ class Locator(Handle):
         pos = B.Output(q.n, dim)
         LIB.bs_locator_closest_point_mt(self._ptr, q.n, q.views, ids.address, uv.views,
                                         dist.views, pos.views, threads)
+        if self.dim == 0:
+            pos.fill(math.nan)  # the library writes no coordinate for a surface of none
         return ClosestPoints(_finish(q.scalar, ids.result()), _finish(q.scalar, uv.result()),
                              _finish(q.scalar, _column(dist.result())),
                              _finish(q.scalar, pos.result()))

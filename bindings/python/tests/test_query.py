@@ -114,6 +114,20 @@ class LocatorTest(PlainTestCase):
         with self.assertRaises(ValueError):
             self.loc.intersect([(0, 0, 1.0)], [(0, 0, 1.0), (0, 0, 1.0)])
 
+    def test_empty_surface_misses_alike(self):
+        # rays and closest points on an empty surface both answer with misses (1.2: closest_point
+        # raised ValueError where intersect missed)
+        empty = bezsurf.Surface([]).locator()
+        near = empty.closest_point([(0, 0, 0.0), (1, 2, 3.0)])
+        self.assertEqual(plain(near.patch), [bezsurf.NO_PATCH] * 2)
+        self.assertEqual(list(plain(near.dist)), [math.inf] * 2)
+        self.assertTrue(all(math.isnan(x) for p in plain(near.pos) for x in p))
+        self.assertTrue(all(math.isnan(x) for p in plain(near.uv) for x in p))
+        ray = empty.intersect([(0, 0, 0.0)], [(0, 0, 1.0)])
+        self.assertEqual((list(plain(ray.patch)), list(plain(ray.t))), ([bezsurf.NO_PATCH], [math.inf]))
+        one = empty.closest_point((0, 0, 0.0))
+        self.assertEqual((one.patch, one.dist), (bezsurf.NO_PATCH, math.inf))
+
     def test_ray_normal_kinds(self):
         # down onto the lid's pole (a limit normal), and a miss (since 1.2)
         hits, kinds = self.loc.intersect_kinds([(0, 0, 10.0), (0, 0, -10.0)],
