@@ -346,6 +346,49 @@ static void test_mapped_items(void)
     must_refuse("a relationship to a solid", cube_file(text, sizeof text, notrep), BS_ERR_PARSE, 0, "not a representation");
 }
 
+/* Solids with voids and surface models placed by an assembly, and the refusals of what an
+ * assembly names: a map that is not a REPRESENTATION_MAP, a map of something that is not a
+ * representation, a solid whose shell is not a shell. */
+static void test_held_shapes(void)
+{
+    static char more[1 << 15];
+    /* the cube with a void (a second cube, used reversed) in #70, placed twice: 4 shells, 2 x 7 */
+    size_t n = (size_t)snprintf(more, sizeof more,
+                                "#1 = SHAPE_REPRESENTATION('asm',(#8,#20,#21),#9);\n#20 = MAPPED_ITEM('',#72,#8);\n"
+                                "#21 = MAPPED_ITEM('',#72,#40);\n#40 = AXIS2_PLACEMENT_3D('',#41,$,$);\n"
+                                "#41 = CARTESIAN_POINT('',(5.,0.,0.));\n#72 = REPRESENTATION_MAP(#8,#70);\n"
+                                "#70 = ADVANCED_BREP_SHAPE_REPRESENTATION('',(#71),#9);\n"
+                                "#71 = BREP_WITH_VOIDS('',#1000,(#73));\n#73 = ORIENTED_CLOSED_SHELL('',*,#2000,.F.);\n");
+    n += cube(more + n, sizeof more - n, 2000, 0.5, 1.5);
+    (void)n;
+    bs_model *m = must_read("voids placed twice", cube_file(text, sizeof text, more));
+    double volume = NAN;
+    if (m != NULL) {
+        CHECK_STATUS(bs_model_properties(m, 1e-10, NULL, &volume, NULL), BS_OK);
+        CHECKF(bs_model_shell_count(m) == 4 && fabs(volume - 14.0) <= 1e-9, "voids placed twice: %zu shells, volume %.15g",
+               bs_model_shell_count(m), volume);
+        bs_model_destroy(m);
+    }
+    /* the cube's shell as a surface model's (SHELL_BASED_SURFACE_MODEL) placed twice */
+    (void)snprintf(more, sizeof more,
+                   "#1 = SHAPE_REPRESENTATION('asm',(#8,#20,#21),#9);\n#20 = MAPPED_ITEM('',#72,#8);\n"
+                   "#21 = MAPPED_ITEM('',#72,#40);\n#40 = AXIS2_PLACEMENT_3D('',#41,$,$);\n"
+                   "#41 = CARTESIAN_POINT('',(5.,0.,0.));\n#72 = REPRESENTATION_MAP(#8,#70);\n"
+                   "#70 = MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(#71),#9);\n"
+                   "#71 = SHELL_BASED_SURFACE_MODEL('',(#1000));\n");
+    const double lo[2][3] = {{0, 0, 0}, {5, 0, 0}}, hi[2][3] = {{2, 2, 2}, {7, 2, 2}};
+    expect_boxes("a surface model placed twice", cube_file(text, sizeof text, more), 2, lo, hi);
+
+    const char *not_map = "#1 = SHAPE_REPRESENTATION('asm',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#8,#8);\n";
+    must_refuse("a mapped item of a placement", cube_file(text, sizeof text, not_map), BS_ERR_PARSE, 0,
+                "expected a REPRESENTATION_MAP");
+    const char *map_solid = "#1 = SHAPE_REPRESENTATION('asm',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#72,#8);\n"
+                            "#72 = REPRESENTATION_MAP(#8,#3);\n";
+    must_refuse("a map of a solid", cube_file(text, sizeof text, map_solid), BS_ERR_PARSE, 0, "not a representation");
+    const char *bad_solid = "#70 = ADVANCED_BREP_SHAPE_REPRESENTATION('',(#71),#9);\n#71 = MANIFOLD_SOLID_BREP('',#8);\n";
+    must_refuse("a solid of a placement", cube_file(text, sizeof text, bad_solid), BS_ERR_PARSE, 0, "is not a shell");
+}
+
 /* `levels` assemblies #5000.., each placing the next `copies` times (copy c of level j moved by
  * c 3 2^j along x, or by 1 along x when copies is 1), the last placing the cube part; cycle: the
  * last level also places the first. */
@@ -397,6 +440,7 @@ int main(void)
 {
     test_occt_assembly();
     test_mapped_items();
+    test_held_shapes();
     test_nesting();
     return bs_test_exit("test_step_assembly");
 }
