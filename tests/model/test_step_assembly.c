@@ -389,6 +389,78 @@ static void test_held_shapes(void)
     must_refuse("a solid of a placement", cube_file(text, sizeof text, bad_solid), BS_ERR_PARSE, 0, "is not a shell");
 }
 
+/* Assembly entities spoiled one at a time: a clean refusal naming what is wrong, or (units the
+ * reader cannot tell) a model read as if the units agreed. */
+static void test_spoiled_entities(void)
+{
+    static const struct {
+        const char *what, *more;
+        bs_status status;
+        const char *words;
+    } cases[] = {
+        {"a relationship to an undefined representation", "#60 = SHAPE_REPRESENTATION_RELATIONSHIP('','',#2,#999);\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"a transformation that is not defined",
+         "#1 = SHAPE_REPRESENTATION('',(#8),#9);\n#60 = ( REPRESENTATION_RELATIONSHIP('','',#2,#1) "
+         "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#61) SHAPE_REPRESENTATION_RELATIONSHIP() );\n",
+         BS_ERR_PARSE, "refers to #61"},
+        {"an item-defined transformation of one item",
+         "#1 = SHAPE_REPRESENTATION('',(#8),#9);\n#60 = ( REPRESENTATION_RELATIONSHIP('','',#2,#1) "
+         "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#61) SHAPE_REPRESENTATION_RELATIONSHIP() );\n"
+         "#61 = ITEM_DEFINED_TRANSFORMATION('','',#8);\n",
+         BS_ERR_PARSE, "missing"},
+        {"an item-defined transformation from a point",
+         "#1 = SHAPE_REPRESENTATION('',(#8),#9);\n#60 = ( REPRESENTATION_RELATIONSHIP('','',#2,#1) "
+         "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#61) SHAPE_REPRESENTATION_RELATIONSHIP() );\n"
+         "#61 = ITEM_DEFINED_TRANSFORMATION('','',#7,#8);\n",
+         BS_ERR_UNSUPPORTED, "AXIS2_PLACEMENT_3D"},
+        {"a relationship without its transformation",
+         "#1 = SHAPE_REPRESENTATION('',(#8),#9);\n#60 = ( REPRESENTATION_RELATIONSHIP('','',#2,#1) "
+         "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION() SHAPE_REPRESENTATION_RELATIONSHIP() );\n",
+         BS_ERR_PARSE, "missing"},
+        {"a mapped item without a target", "#1 = SHAPE_REPRESENTATION('',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#6);\n",
+         BS_ERR_PARSE, "missing"},
+        {"a map without its representation",
+         "#1 = SHAPE_REPRESENTATION('',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#72,#8);\n#72 = REPRESENTATION_MAP(#8);\n",
+         BS_ERR_PARSE, "missing"},
+        {"a solid without its shell", "#70 = ADVANCED_BREP_SHAPE_REPRESENTATION('',(#71),#9);\n#71 = MANIFOLD_SOLID_BREP('');\n",
+         BS_ERR_PARSE, "missing"},
+        {"a surface model of an undefined shell",
+         "#70 = MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(#71),#9);\n#71 = SHELL_BASED_SURFACE_MODEL('',(#999));\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"a surface model whose shells are not a list",
+         "#70 = MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(#71),#9);\n#71 = SHELL_BASED_SURFACE_MODEL('',#1000);\n",
+         BS_ERR_PARSE, "must be a list"},
+        {"an oriented shell without its shell",
+         "#70 = ADVANCED_BREP_SHAPE_REPRESENTATION('',(#71),#9);\n#71 = BREP_WITH_VOIDS('',#1000,(#73));\n"
+         "#73 = ORIENTED_CLOSED_SHELL('',*);\n",
+         BS_ERR_PARSE, "missing"},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
+        must_refuse(cases[k].what, cube_file(text, sizeof text, cases[k].more), cases[k].status, 0, cases[k].words);
+    /* units the reader cannot read are not compared: an unknown prefix, a conversion without its
+     * measure, a context without units or without a length unit */
+    static const char *const units[] = {
+        "#1 = SHAPE_REPRESENTATION('',(#8,#20),#80);\n#20 = MAPPED_ITEM('',#6,#8);\n"
+        "#80 = ( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT((#81)) REPRESENTATION_CONTEXT('','') );\n"
+        "#81 = ( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MYRIA.,.METRE.) );\n",
+        "#1 = SHAPE_REPRESENTATION('',(#8,#20),#80);\n#20 = MAPPED_ITEM('',#6,#8);\n"
+        "#80 = ( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT((#81)) REPRESENTATION_CONTEXT('','') );\n"
+        "#81 = ( CONVERSION_BASED_UNIT('X',$) LENGTH_UNIT() NAMED_UNIT(#14) );\n",
+        "#1 = SHAPE_REPRESENTATION('',(#8,#20),#80);\n#20 = MAPPED_ITEM('',#6,#8);\n"
+        "#80 = ( GEOMETRIC_REPRESENTATION_CONTEXT(3) REPRESENTATION_CONTEXT('','') );\n",
+        "#1 = SHAPE_REPRESENTATION('',(#8,#20),#80);\n#20 = MAPPED_ITEM('',#6,#8);\n"
+        "#80 = ( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT((#82,$)) REPRESENTATION_CONTEXT('','') );\n"
+        "#82 = ( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) );\n",
+        "#1 = SHAPE_REPRESENTATION('',(#8,#20),#80);\n#20 = MAPPED_ITEM('',#6,#8);\n"
+        "#80 = ( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT((#81)) REPRESENTATION_CONTEXT('','') );\n"
+        "#81 = ( CONVERSION_BASED_UNIT('X',#83) LENGTH_UNIT() NAMED_UNIT(#14) );\n#83 = LENGTH_MEASURE_WITH_UNIT('a',#10);\n",
+    };
+    const double lo[1][3] = {{0, 0, 0}}, hi[1][3] = {{2, 2, 2}};
+    for (size_t k = 0; k < sizeof units / sizeof units[0]; k++)
+        expect_boxes("units not compared", cube_file(text, sizeof text, units[k]), 1, lo, hi);
+}
+
 /* `levels` assemblies #5000.., each placing the next `copies` times (copy c of level j moved by
  * c 3 2^j along x, or by 1 along x when copies is 1), the last placing the cube part; cycle: the
  * last level also places the first. */
@@ -441,6 +513,7 @@ int main(void)
     test_occt_assembly();
     test_mapped_items();
     test_held_shapes();
+    test_spoiled_entities();
     test_nesting();
     return bs_test_exit("test_step_assembly");
 }
