@@ -435,6 +435,38 @@ static void test_spoiled_entities(void)
          "#70 = ADVANCED_BREP_SHAPE_REPRESENTATION('',(#71),#9);\n#71 = BREP_WITH_VOIDS('',#1000,(#73));\n"
          "#73 = ORIENTED_CLOSED_SHELL('',*);\n",
          BS_ERR_PARSE, "missing"},
+        {"a relationship to a representation without a context",
+         "#60 = SHAPE_REPRESENTATION_RELATIONSHIP('','',#2,#70);\n#70 = SHAPE_REPRESENTATION('',(#8),$);\n",
+         BS_ERR_PARSE, "not a representation"},
+        {"a relationship of a solid", "#60 = SHAPE_REPRESENTATION_RELATIONSHIP('','',#3,#2);\n", BS_ERR_PARSE,
+         "not a representation"},
+        {"a relationship of an undefined representation", "#60 = SHAPE_REPRESENTATION_RELATIONSHIP('','',#999,#2);\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"an item-defined transformation from an undefined item",
+         "#1 = SHAPE_REPRESENTATION('',(#8),#9);\n#60 = ( REPRESENTATION_RELATIONSHIP('','',#2,#1) "
+         "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#61) SHAPE_REPRESENTATION_RELATIONSHIP() );\n"
+         "#61 = ITEM_DEFINED_TRANSFORMATION('','',#999,#8);\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"an item-defined transformation onto a point",
+         "#1 = SHAPE_REPRESENTATION('',(#8),#9);\n#60 = ( REPRESENTATION_RELATIONSHIP('','',#2,#1) "
+         "REPRESENTATION_RELATIONSHIP_WITH_TRANSFORMATION(#61) SHAPE_REPRESENTATION_RELATIONSHIP() );\n"
+         "#61 = ITEM_DEFINED_TRANSFORMATION('','',#8,#7);\n",
+         BS_ERR_UNSUPPORTED, "AXIS2_PLACEMENT_3D"},
+        {"a placement at an undefined point",
+         "#1 = SHAPE_REPRESENTATION('',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#6,#62);\n"
+         "#62 = AXIS2_PLACEMENT_3D('',#999,$,$);\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"a mapped item of an undefined map", "#1 = SHAPE_REPRESENTATION('',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#999,#8);\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"a map from an undefined origin",
+         "#1 = SHAPE_REPRESENTATION('',(#8,#20),#9);\n#20 = MAPPED_ITEM('',#72,#8);\n#72 = REPRESENTATION_MAP(#999,#4);\n",
+         BS_ERR_PARSE, "refers to #999"},
+        {"a part in metres by a general measure",
+         "#1 = SHAPE_REPRESENTATION('',(#8,#20),#80);\n#20 = MAPPED_ITEM('',#6,#8);\n"
+         "#80 = ( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNIT_ASSIGNED_CONTEXT((#81)) REPRESENTATION_CONTEXT('','') );\n"
+         "#81 = ( CONVERSION_BASED_UNIT('M',#83) LENGTH_UNIT() NAMED_UNIT(#14) );\n"
+         "#83 = MEASURE_WITH_UNIT(LENGTH_MEASURE(1000.),#10);\n",
+         BS_ERR_UNSUPPORTED, "mixed length units"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++)
         must_refuse(cases[k].what, cube_file(text, sizeof text, cases[k].more), cases[k].status, 0, cases[k].words);
