@@ -24,10 +24,14 @@ void bsi_stp_assembly_free(stp *s)
     memset(&s->as, 0, sizeof s->as);
 }
 
-static size_t find(const stp *s, size_t i)
+/* The class of instance i, halving the path to it on the way (joins in an adversarial order would
+ * otherwise chain the classes and make each find linear). */
+static size_t find(stp *s, size_t i)
 {
-    while (s->as.cls[i] != i)
+    while (s->as.cls[i] != i) {
+        s->as.cls[i] = s->as.cls[s->as.cls[i]];
         i = s->as.cls[i];
+    }
     return i;
 }
 
