@@ -177,17 +177,15 @@ static int line_ends(const igm_slot *e, double *p0, double *p1)
     return 1;
 }
 
-/* 1 when c ends where it starts (within 1e-12 of its size): the sweep of it is periodic along it. */
+/* 1 when c ends where it starts, within 1e-12 of its control points' size: its sweep is periodic
+ * along it. */
 static int closed_curve(const bsi_curve *c)
 {
-    double a[3], b[3], d = 0.0, size = 0.0;
-    if (!bsi_curve_eval(c, c->axis.breaks[0], a) || !bsi_curve_eval(c, c->axis.breaks[c->axis.n], b))
-        return 0;
-    for (size_t k = 0; k < 3; k++) {
-        d = hypot(d, a[k] - b[k]);
-        size = fmax(size, fmax(fabs(a[k]), fabs(b[k])));
-    }
-    return d <= 1e-12 * size;
+    double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0}, size = 0.0; /* a 2-D curve fills two */
+    bsi_curve_bounds(c, lo, hi);
+    for (size_t k = 0; k < 3; k++)
+        size = fmax(size, fmax(fabs(lo[k]), fabs(hi[k])));
+    return bsi_curve_closed(c, 1e-12 * size);
 }
 
 static bs_status swept(igm *m, size_t s, iges_stream *st, igm_surface *sf, int depth)

@@ -55,6 +55,15 @@ bs_status bsi_curve_copy(const bsi_curve *src, bsi_curve *dst)
     return BS_OK;
 }
 
+int bsi_curve_closed(const bsi_curve *c, double tol)
+{
+    if (c == NULL || c->axis.n == 0 || c->dim != 3)
+        return 0;
+    const double *a = c->hom, *z = c->hom + (c->axis.n * (c->degree + 1) - 1) * 4;
+    double p[3] = {a[0] / a[3], a[1] / a[3], a[2] / a[3]}, q[3] = {z[0] / z[3], z[1] / z[3], z[2] / z[3]};
+    return hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]) <= tol;
+}
+
 bs_status bsi_curve_repeat(const bsi_curve *src, bsi_curve *out)
 {
     memset(out, 0, sizeof *out);

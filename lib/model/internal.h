@@ -67,6 +67,8 @@ typedef struct bsi_curve {
 
 void bsi_curve_free(bsi_curve *c);
 bs_status bsi_curve_copy(const bsi_curve *src, bsi_curve *dst);
+/* 1 when the 3-D curve c ends within tol of where it starts (its first and last control points). */
+int bsi_curve_closed(const bsi_curve *c, double tol);
 /* A closed curve over three of its periods (the period its parameter range), the same points one
  * period before and after: what a sweep of it needs for trims on either side of its start.
  * BS_ERR_DOMAIN for an empty curve; BS_ERR_NO_MEMORY. */

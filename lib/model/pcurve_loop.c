@@ -60,16 +60,6 @@ static int bspline_closed(const bs_bspline *b, int dir, double tol)
     return 1;
 }
 
-/* Whether a 3-D curve ends where it starts. */
-static int curve_closed(const bsi_curve *c, double tol)
-{
-    if (c == NULL || c->axis.n == 0 || c->dim != 3)
-        return 0;
-    const double *a = c->hom, *z = c->hom + (c->axis.n * (c->degree + 1) - 1) * 4;
-    double p[3] = {a[0] / a[3], a[1] / a[3], a[2] / a[3]}, q[3] = {z[0] / z[3], z[1] / z[3], z[2] / z[3]};
-    return dist3(p, q) <= tol;
-}
-
 /* The canonical directions closed but not periodic, and the canonical domain along them. */
 static void closed_dirs(const bsi_surface_def *def, double tol, int *closed, double *box)
 {
@@ -81,7 +71,7 @@ static void closed_dirs(const bsi_surface_def *def, double tol, int *closed, dou
         box[0] = b->knots_u[b->deg_u], box[1] = b->knots_u[b->count_u];
         box[2] = b->knots_v[b->deg_v], box[3] = b->knots_v[b->count_v];
     } else if ((def->kind == BS_FACE_EXTRUSION || def->kind == BS_FACE_REVOLUTION) &&
-               curve_closed(def->curve, tol)) {
+               bsi_curve_closed(def->curve, tol)) {
         size_t k = def->kind == BS_FACE_REVOLUTION; /* the curve runs along u, or v */
         closed[k] = 1;
         box[2 * k] = def->curve->axis.breaks[0];
