@@ -117,6 +117,11 @@ int bsi_stp_part(const stp *s, size_t i, const char *name, size_t *list);
 int bsi_stp_arg(const stp *s, size_t list, size_t k, size_t *node);
 /* Fail at instance i's line and column, the message prefixed with "#id NAME: ". */
 bs_status bsi_stp_fail(const stp *s, size_t i, const char *fmt, ...);
+/* Node n as a number (LENGTH_MEASURE(25.4) and the like unwrapped): 1 and *x, or 0 when it is
+ * none. */
+int bsi_stp_number(const stp *s, size_t n, double *x);
+/* 1 when node n is the enumeration .word. */
+int bsi_stp_enum(const stp *s, size_t n, const char *word);
 /* Argument k of list (of instance i) as a number / an entity reference (its instance) / a LIST node
  * / an enumeration (1 .T., 0 .F.) : BS_ERR_PARSE naming `what` otherwise. */
 bs_status bsi_stp_num(const stp *s, size_t i, size_t list, size_t k, const char *what, double *x);

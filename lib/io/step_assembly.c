@@ -64,17 +64,6 @@ static int rep_items(const stp *s, size_t i, size_t *items)
     return 1;
 }
 
-/* Node n as a number (LENGTH_MEASURE(25.4) and the like unwrapped): 1, or 0 when it is none. */
-static int number(const stp *s, size_t n, double *x)
-{
-    if (stp_at(s, n)->kind == STP_TYPED && stp_at(s, n + 1)->count == 1)
-        n += 2;
-    if (stp_at(s, n)->kind != STP_INT && stp_at(s, n)->kind != STP_REAL)
-        return 0;
-    *x = stp_at(s, n)->v.num;
-    return 1;
-}
-
 /* Metres per length unit u (0 when it is not understood). */
 static double unit_metres(const stp *s, size_t u, int depth)
 {
@@ -92,15 +81,14 @@ static double unit_metres(const stp *s, size_t u, int depth)
         if (!bsi_stp_arg(s, list, 0, &n) || stp_at(s, n)->kind != STP_ENUM)
             return 1.0;
         for (size_t k = 0; k < sizeof prefix / sizeof prefix[0]; k++)
-            if (stp_at(s, n)->len == strlen(prefix[k].name) &&
-                memcmp(s->text + stp_at(s, n)->v.off, prefix[k].name, stp_at(s, n)->len) == 0)
+            if (bsi_stp_enum(s, n, prefix[k].name))
                 return prefix[k].f;
         return 0.0;
     }
     if (!bsi_stp_part(s, u, "CONVERSION_BASED_UNIT", &list) || !bsi_stp_arg(s, list, 1, &n) ||
         stp_at(s, n)->kind != STP_REF || !bsi_stp_find(s, stp_at(s, n)->v.ref, &m) ||
         (!bsi_stp_part(s, m, "LENGTH_MEASURE_WITH_UNIT", &list) && !bsi_stp_part(s, m, "MEASURE_WITH_UNIT", &list)) ||
-        !bsi_stp_arg(s, list, 0, &n) || !number(s, n, &f) || !bsi_stp_arg(s, list, 1, &n) ||
+        !bsi_stp_arg(s, list, 0, &n) || !bsi_stp_number(s, n, &f) || !bsi_stp_arg(s, list, 1, &n) ||
         stp_at(s, n)->kind != STP_REF || !bsi_stp_find(s, stp_at(s, n)->v.ref, &u))
         return 0.0;
     return f * unit_metres(s, u, depth + 1);

@@ -147,17 +147,23 @@ bs_status bsi_stp_fail(const stp *s, size_t i, const char *fmt, ...)
     return bsi_fail(s->err, in->line, in->col, "#%zu %.*s: %s", in->id, len > 60 ? 60 : len, name, msg);
 }
 
+int bsi_stp_number(const stp *s, size_t n, double *x)
+{
+    if (stp_at(s, n)->kind == STP_TYPED && stp_at(s, n + 1)->count == 1) /* LENGTH_MEASURE(1.) and the like */
+        n += 2;
+    if (stp_at(s, n)->kind != STP_INT && stp_at(s, n)->kind != STP_REAL)
+        return 0;
+    *x = stp_at(s, n)->v.num;
+    return 1;
+}
+
 bs_status bsi_stp_num(const stp *s, size_t i, size_t list, size_t k, const char *what, double *x)
 {
     size_t n;
     if (!bsi_stp_arg(s, list, k, &n))
         return bsi_stp_fail(s, i, "%s missing", what);
-    const stp_node *v = stp_at(s, n);
-    if (v->kind == STP_TYPED && stp_at(s, n + 1)->count == 1) /* LENGTH_MEASURE(1.) and the like */
-        v = stp_at(s, n + 2);
-    if (v->kind != STP_INT && v->kind != STP_REAL)
+    if (!bsi_stp_number(s, n, x))
         return bsi_stp_fail(s, i, "%s must be a number", what);
-    *x = v->v.num;
     return BS_OK;
 }
 
@@ -201,8 +207,7 @@ bs_status bsi_stp_bool(const stp *s, size_t i, size_t list, size_t k, const char
     return bsi_stp_fail(s, i, "%s must be .T. or .F.", what);
 }
 
-/* An enumeration node equal to word. */
-static int is_enum(const stp *s, size_t n, const char *word)
+int bsi_stp_enum(const stp *s, size_t n, const char *word)
 {
     const stp_node *v = stp_at(s, n);
     size_t w = strlen(word);
@@ -216,7 +221,7 @@ static bs_status angle_unit(const stp *s, size_t u, int depth, double *out)
     if (depth > STP_DEPTH)
         return bsi_stp_fail(s, u, "units defined in a cycle");
     if (bsi_stp_part(s, u, "SI_UNIT", &list)) {
-        if (!bsi_stp_arg(s, list, 1, &n) || !is_enum(s, n, "RADIAN"))
+        if (!bsi_stp_arg(s, list, 1, &n) || !bsi_stp_enum(s, n, "RADIAN"))
             return bsi_stp_fail(s, u, "a plane angle unit of the SI must be the radian");
         *out = 1.0;
         return BS_OK;
