@@ -68,13 +68,11 @@ bs_status bsi_igm_bspline_128(igm *m, size_t s, iges_stream *st, igm_surface *sf
     sf->b = b;
     /* its Bezier spans counted before any face converts them (each surface is parsed once) */
     size_t nu = 0, nv = 0;
-    if (bs_bspline_span_count(&b, &nu, &nv) == BS_OK) { /* bad knots are refused where faces convert */
-        size_t made = bsi_span_points(nu, nv, pu, pv);
-        if (made > BSI_READ_POINTS(m->g.len) - m->g.points) {
-            (void)bsi_igm_fail(m, s, 1, "B-spline spans of more patch control points than 4 per byte of the file");
-            return BS_ERR_SIZE;
-        }
-        m->g.points += made;
+    /* bad knots are refused where faces convert */
+    if (bs_bspline_span_count(&b, &nu, &nv) == BS_OK &&
+        !bsi_spend_span_points(&m->g.points, m->g.len, nu, nv, pu, pv)) {
+        (void)bsi_igm_fail(m, s, 1, BSI_READ_POINTS_SAY);
+        return BS_ERR_SIZE;
     }
     double dom[4] = {val[pu], val[cu], val[nku + pv], val[nku + cv]};
     for (size_t d = 0; d < 2; d++) {

@@ -170,13 +170,11 @@ static bs_status read_128(iges *g, size_t de, bsi_growing *vals, bs_surface *out
         if (st == BS_OK && !(cut[2 * d + 1] > cut[2 * d]))
             st = bsi_iges_fail_at(g, &s, range_at, "parameter range empty or outside the knots' domain");
     }
-    size_t made = st == BS_OK ? bsi_span_points(nu, nv, pu, pv) : 0;
-    if (made > BSI_READ_POINTS(g->len) - g->points) {
+    if (st == BS_OK && !bsi_spend_span_points(&g->points, g->len, nu, nv, pu, pv)) {
         free(ctrl);
-        (void)fail_de(g, de, 1, "B-spline spans of more patch control points than 4 per byte of the file");
+        (void)fail_de(g, de, 1, BSI_READ_POINTS_SAY);
         return BS_ERR_SIZE;
     }
-    g->points += made;
     if (st == BS_OK)
         st = bsi_add_bspline_range(out, &b, cut);
     free(ctrl);

@@ -54,13 +54,20 @@ bs_status bsi_read_surface_file(const char *path, bs_parse_error *err, bs_surfac
  * ordinary B-splines make well under one point per byte (a bicubic span per control point of
  * some 35 bytes: 0.5). */
 #define BSI_READ_POINTS(len) ((len) < (SIZE_MAX - 65536) / 4 ? 4 * (len) + 65536 : SIZE_MAX)
-/* The control points of nu x nv patches of degrees du x dv, saturating at SIZE_MAX. */
-static inline size_t bsi_span_points(size_t nu, size_t nv, size_t du, size_t dv)
+#define BSI_READ_POINTS_SAY "B-spline spans of more patch control points than 4 per byte of the file"
+/* The control points of nu x nv patches of degrees du x dv charged to *spent, the points a text of
+ * len bytes has made so far: 1, or 0 (nothing charged) when they pass BSI_READ_POINTS(len). */
+static inline int bsi_spend_span_points(size_t *spent, size_t len, size_t nu, size_t nv, size_t du, size_t dv)
 {
-    size_t per = (du + 1) * (dv + 1); /* degrees are at most BS_MAX_DEGREE */
+    size_t per = (du + 1) * (dv + 1), made = SIZE_MAX; /* degrees are at most BS_MAX_DEGREE */
     if (nu == 0 || nv == 0)
+        made = 0;
+    else if (nv <= SIZE_MAX / nu && nu * nv <= SIZE_MAX / per)
+        made = nu * nv * per;
+    if (made > BSI_READ_POINTS(len) - *spent)
         return 0;
-    return nv > SIZE_MAX / nu || nu * nv > SIZE_MAX / per ? SIZE_MAX : nu * nv * per;
+    *spent += made;
+    return 1;
 }
 
 /* An array appended to as the data is read (never sized from a declared count). */

@@ -367,12 +367,10 @@ static bs_status build_bspline(obj *o, double *ctrl, double *w)
         if (!(cut[d + 1] > cut[d]))
             return fail_surf(o, -1, "the surf range is empty or outside the knots' domain");
     }
-    size_t made = bsi_span_points(nu, nv, b.deg_u, b.deg_v);
-    if (made > BSI_READ_POINTS(o->len) - o->points) {
-        (void)fail_surf(o, -1, "B-spline spans of more patch control points than 4 per byte of the file");
+    if (!bsi_spend_span_points(&o->points, o->len, nu, nv, b.deg_u, b.deg_v)) {
+        (void)fail_surf(o, -1, BSI_READ_POINTS_SAY);
         return BS_ERR_SIZE;
     }
-    o->points += made;
     bs_status st = bsi_add_bspline_range(o->s, &b, cut);
     if (st == BS_ERR_NONFINITE)
         return fail_surf(o, -1, "weight times coordinate overflows");
