@@ -83,6 +83,13 @@ int bsi_parse_double(const char *tok, size_t len, double *out)
     return 1;
 }
 
+const char *bsi_parse_double_says(int ok)
+{
+    return ok == -2 ? "%s longer than 400 characters"
+           : ok == -1 ? "%s out of range for a double"
+                      : "expected %s (a finite decimal number)";
+}
+
 size_t bsi_format_double(double x, char *buf)
 {
     const char *point = locale_point();

@@ -79,13 +79,7 @@ static bs_status read_number(reader *r, const char *what, double *x)
     if (!next_token(r, &start, &tlen))
         return fail(r, r->pos, "unexpected end of input: expected %s", what);
     int ok = bsi_parse_double(r->text + start, tlen, x);
-    if (ok == 0)
-        return fail(r, start, "expected %s (a finite decimal number)", what);
-    if (ok == -2)
-        return fail(r, start, "%s longer than 400 characters", what);
-    if (ok < 0)
-        return fail(r, start, "%s out of range for a double", what);
-    return BS_OK;
+    return ok <= 0 ? fail(r, start, bsi_parse_double_says(ok), what) : BS_OK;
 }
 
 /* One patch: degrees, optional rational marker "w", then the net. */

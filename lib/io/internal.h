@@ -17,6 +17,9 @@
  * large for a double (the value underflows quietly to a subnormal or zero, correctly rounded), -2
  * when it is longer than BSI_NUMBER_MAX (whatever it holds). */
 int bsi_parse_double(const char *tok, size_t len, double *out);
+/* The readers' message for bsi_parse_double's answer ok <= 0 (-2, -1, 0): a format of one %s,
+ * the name of what was expected. */
+const char *bsi_parse_double_says(int ok);
 
 /* Write the shortest of "%.15g", "%.16g", "%.17g" that reads back to x exactly, with '.' as the
  * decimal point, into buf (room for 32 bytes); returns its length (NUL not counted). */

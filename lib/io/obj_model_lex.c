@@ -77,11 +77,7 @@ bs_status bsi_objm_number(objm *o, size_t start, size_t tlen, const char *what, 
 {
     int ok = bsi_parse_double(o->text + start, tlen, x);
     if (ok <= 0)
-        return bsi_objm_fail(o, start,
-                             ok == 0    ? "expected %s (a finite decimal number)"
-                             : ok == -2 ? "%s longer than 400 characters"
-                                        : "%s out of range for a double",
-                             what);
+        return bsi_objm_fail(o, start, bsi_parse_double_says(ok), what);
     return BS_OK;
 }
 

@@ -108,9 +108,7 @@ static int token_is(const obj *o, size_t start, size_t tlen, const char *word)
 static bs_status parse_number(obj *o, size_t start, size_t tlen, const char *what, double *x)
 {
     int ok = bsi_parse_double(o->text + start, tlen, x);
-    static const char *const why[] = {"%s longer than 400 characters", "%s out of range for a double",
-                                      "expected %s (a finite decimal number)"}; /* ok = -2, -1, 0 */
-    return ok <= 0 ? fail_at(o, start, why[ok + 2], what) : BS_OK;
+    return ok <= 0 ? fail_at(o, start, bsi_parse_double_says(ok), what) : BS_OK;
 }
 
 static bs_status read_number(obj *o, const char *what, double *x)
