@@ -334,17 +334,21 @@ static stp_xf compose(const stp_xf *a, const stp_xf *b)
     return m;
 }
 
+static bs_status push(bsi_growing *out, const stp_xf *m)
+{
+    if (bsi_grow(out, sizeof(stp_xf), 1) != BS_OK)
+        return BS_ERR_NO_MEMORY;
+    ((stp_xf *)out->data)[out->n++] = *m;
+    return BS_OK;
+}
+
 /* The world motions of class c's placements, `inner` (the motion into c's coordinates) first. */
 static bs_status place(stp *s, size_t c, const stp_xf *inner, bsi_growing *out)
 {
     size_t lo, hi;
     links_of(s, c, &lo, &hi);
-    if (lo == hi) {
-        if (bsi_grow(out, sizeof(stp_xf), 1) != BS_OK)
-            return BS_ERR_NO_MEMORY;
-        ((stp_xf *)out->data)[out->n++] = *inner;
-        return BS_OK;
-    }
+    if (lo == hi)
+        return push(out, inner);
     for (size_t k = lo; k < hi; k++) {
         const stp_link *l = (const stp_link *)s->as.links.data + k;
         stp_xf m = compose(&l->xf, inner);
@@ -364,12 +368,8 @@ bs_status bsi_stp_placements(stp *s, size_t i, bsi_growing *out, size_t *first)
     *first = 0;
     if (st != BS_OK)
         return st;
-    if (s->as.links.n == 0 || s->as.holder[i] == SIZE_MAX) {
-        if (bsi_grow(out, sizeof(stp_xf), 1) != BS_OK)
-            return BS_ERR_NO_MEMORY;
-        ((stp_xf *)out->data)[out->n++] = identity;
-        return BS_OK;
-    }
+    if (s->as.links.n == 0 || s->as.holder[i] == SIZE_MAX)
+        return push(out, &identity);
     size_t c = find(s, s->as.holder[i]);
     if (s->as.base[c] == 0) { /* each class its own ids, in the order shells are read */
         s->as.base[c] = s->as.next + 1;
