@@ -240,6 +240,16 @@ static int is_known_open(const char *file)
     return 0;
 }
 
+/* The options of the meshes checked here: the model method at an absolute tolerance. */
+static bs_tess_options subdivide_at(double tol)
+{
+    bs_tess_options o;
+    bs_tess_options_init(&o);
+    o.method = BS_TESS_SUBDIVIDE;
+    o.tolerance = tol;
+    return o;
+}
+
 static void check_file(const char *part, const char *suffix, double rel, int threads_too)
 {
     char file[128];
@@ -251,10 +261,7 @@ static void check_file(const char *part, const char *suffix, double rel, int thr
     if (m == NULL)
         return;
     double tol = rel * r.diag;
-    bs_tess_options o;
-    bs_tess_options_init(&o);
-    o.method = BS_TESS_SUBDIVIDE;
-    o.tolerance = tol;
+    bs_tess_options o = subdivide_at(tol);
     bs_mesh *mesh = NULL;
     bs_status st = bs_model_tessellate(m, &o, &mesh);
     CHECKF(st == BS_OK, "%s at %g D: %s", file, rel, bs_status_string(st));
@@ -444,10 +451,7 @@ static void check_untrimmed(const char *what, bs_model *m, double tol)
     CHECK(bs_model_face_info(m, 0, &fi) == BS_OK && fi.loop_count == 0);
     double area = NAN;
     CHECK_STATUS(bs_model_properties(m, 1e-9, &area, NULL, NULL), BS_OK);
-    bs_tess_options o;
-    bs_tess_options_init(&o);
-    o.method = BS_TESS_SUBDIVIDE;
-    o.tolerance = tol;
+    bs_tess_options o = subdivide_at(tol);
     bs_mesh *mesh = NULL;
     bs_status st = bs_model_tessellate(m, &o, &mesh);
     CHECKF(st == BS_OK, "%s: %s", what, bs_status_string(st));
