@@ -26,8 +26,9 @@ typedef struct tm_vertex {
     double uv[2];
 } tm_vertex;
 
-/* The samples of one trim, ascending in its own parameter: sample k has parameter
- * param[first + k] and vertex vid[first + k]. */
+/* The samples of one trim, ascending in its own parameter: sample k has native (u, v)
+ * uv[2 (first + k) ..] on the trim's face and vertex vid[first + k]. The (u, v) are the trim's,
+ * or where the edge's faces meet when the file wrote its trims apart (tess_meet.c). */
 typedef struct tm_trim {
     size_t first, count;
     int pole;          /* the trim's 3-D image is one point */
@@ -45,7 +46,7 @@ typedef struct tm_edges {
     double *grade;         /* NULL, or per model vertex (in the order of model[]) the length of
                               the shortest segment that ends there: no segment of an edge at
                               distance d from its end may be longer than grade + d */
-    double *param;
+    double *uv;
     uint32_t *vid;
     size_t nsample, sample_cap;
     tm_trim *trim;         /* one per trim of the model */
@@ -67,6 +68,7 @@ typedef struct tm_face_mesh {
 typedef struct tm_job {
     const bs_model *m;
     double tol;            /* absolute */
+    double diag;           /* the model's diagonal */
     double merge;          /* points closer than this are one vertex */
     size_t max_points;     /* per face, 0: none */
     tm_face_scale *scale;  /* per face */

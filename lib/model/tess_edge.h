@@ -28,6 +28,10 @@ bs_status bsi_tm_model_vertex(tm_job *j, const double *p, uint32_t face, const d
 int bsi_tm_is_pole(const tm_job *j, size_t t, double *P);
 /* A pole trim's samples: uniform in its parameter, all the pole's vertex. */
 bs_status bsi_tm_sample_pole(tm_job *j, size_t t, const double *P);
+/* The point X where faces fa and fb meet, from (u, v) uva on fa and uvb on fb near it, both
+ * moved there: 1, or 0 where Newton does not bring the two points within eps (nearly tangent
+ * faces, poles, off a face). */
+int bsi_tm_meet(const bs_model *m, size_t fa, double *uva, size_t fb, double *uvb, double eps, double *X);
 /* e->grade from the samples of a first pass. */
 bs_status bsi_tm_grading(tm_edges *e);
 

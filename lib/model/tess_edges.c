@@ -25,90 +25,133 @@
 
 /* ---- One edge: its trims, the samples' parameters on each ---- */
 #define MAX_USES 8
+/* Trims of one edge whose ends a file wrote up to this much of the model's diagonal apart (the
+ * tolerance of the kernel that wrote them) share its vertices, moved to where the faces meet. */
+#define LOOSE_GAP 2e-3
+
+/* One sample of an edge: its parameter and (u, v) on each trim, its point and vertex. */
+typedef struct edge_sample {
+    double par[MAX_USES];
+    double uv[MAX_USES][2];
+    double P[3];
+    uint32_t vid;
+} edge_sample;
 
 typedef struct edge_run {
     tm_job *j;
     size_t n;                   /* trims of the edge (master first) */
     size_t trim[MAX_USES];
     curve3 c[MAX_USES];
+    int loose;                  /* the second trim is apart from the master (LOOSE_GAP) */
     double end[2][3];           /* the edge's ends */
     double grade[2];            /* the grading at its ends (INFINITY: none) */
-    /* samples so far, in the master's order: (param on each trim, vertex) */
-    double *par;                /* n per sample */
-    uint32_t *vid;
+    edge_sample *s;             /* samples so far, in the master's order */
     size_t ns, cap;
 } edge_run;
 
-static bs_status add_sample(edge_run *r, const double *par, uint32_t vid)
+static bs_status add_sample(edge_run *r, const edge_sample *s)
 {
-    if (!bsi_grow_array((void **)&r->par, &r->cap, r->ns + 1, MAX_USES * sizeof(double)))
+    if (!bsi_grow_array((void **)&r->s, &r->cap, r->ns + 1, sizeof(edge_sample)))
         return BS_ERR_NO_MEMORY;
-    size_t cap = r->cap;
-    void *q = realloc(r->vid, cap * sizeof(uint32_t));
-    if (q == NULL)
-        return BS_ERR_NO_MEMORY;
-    r->vid = q;
-    memcpy(r->par + r->ns * MAX_USES, par, r->n * sizeof(double));
-    r->vid[r->ns++] = vid;
+    r->s[r->ns++] = *s;
     return BS_OK;
 }
 
-/* 1 when the interval between samples with parameters pa and pb (points Pa, Pb) is fine. */
-static int interval_fine(const edge_run *r, const double *pa, const double *pb, const double *Pa,
-                         const double *Pb)
+/* s's point and (u, v) moved to where the master's face and the loose trim's meet; left as they
+ * are where they do not meet near it (nearly tangent faces, where the gap matters least). */
+static void meet(const edge_run *r, edge_sample *s)
 {
-    double half = 0.5 * r->j->tol, len = bsi_tm_dist3(Pa, Pb);
+    double ua[2] = {s->uv[0][0], s->uv[0][1]}, ub[2] = {s->uv[1][0], s->uv[1][1]}, X[3];
+    const tm_job *j = r->j;
+    if (bsi_tm_meet(j->m, r->c[0].face, ua, r->c[1].face, ub, 1e-6 * j->tol, X) &&
+        bsi_tm_dist3(X, s->P) <= LOOSE_GAP * j->diag) {
+        memcpy(s->P, X, sizeof s->P);
+        memcpy(s->uv[0], ua, sizeof ua);
+        memcpy(s->uv[1], ub, sizeof ub);
+    }
+}
+
+/* The loose trim's (u, v) at an end of the edge: where the faces meet next to the master's end. */
+static void meet_at_end(const edge_run *r, edge_sample *s)
+{
+    edge_sample moved = *s;
+    meet(r, &moved);
+    memcpy(s->uv[1], moved.uv[1], sizeof moved.uv[1]);
+}
+
+/* The point at master parameter t between a and the parameters hi (the next known sample or
+ * the edge's end): on the master, projected onto the other trims. 0 when off the face. */
+static int edge_point(const edge_run *r, double t, const edge_sample *a, const double *hi, edge_sample *out)
+{
+    out->par[0] = t;
+    if (!bsi_tm_curve_at(&r->c[0], t, out->uv[0], out->P))
+        return 0;
+    double frac = (t - a->par[0]) / (hi[0] - a->par[0]);
+    for (size_t i = 1; i < r->n; i++) {
+        out->par[i] = bsi_tm_project(&r->c[i], out->P, a->par[i], hi[i], a->par[i] + (hi[i] - a->par[i]) * frac);
+        bsi_curve_eval(r->c[i].uv, out->par[i], out->uv[i]);
+    }
+    if (r->loose)
+        meet(r, out);
+    return 1;
+}
+
+/* edge_point, a new vertex there. */
+static bs_status new_sample(edge_run *r, double t, const edge_sample *a, const double *hi, edge_sample *out)
+{
+    if (!edge_point(r, t, a, hi, out))
+        return BS_ERR_DOMAIN;
+    return bsi_tm_new_vertex(&r->j->edges, out->P, (uint32_t)r->c[0].face, out->uv[0], &out->vid);
+}
+
+/* 1 when the interval between samples a and b is fine. */
+static int interval_fine(const edge_run *r, const edge_sample *a, const edge_sample *b)
+{
+    double half = 0.5 * r->j->tol, len = bsi_tm_dist3(a->P, b->P);
     /* graded from the ends (GRADE), so that a long straight edge meeting finely sampled curves
      * leaves no slivers there */
-    if (len > GRADE * (r->grade[0] + bsi_tm_dist3(Pa, r->end[0])) ||
-        len > GRADE * (r->grade[1] + bsi_tm_dist3(Pb, r->end[1])))
+    if (len > GRADE * (r->grade[0] + bsi_tm_dist3(a->P, r->end[0])) ||
+        len > GRADE * (r->grade[1] + bsi_tm_dist3(b->P, r->end[1])))
         return 0;
     for (int q = 1; q <= 3; q++) {
-        double f = 0.25 * q, uv[2], p[3], chord[3];
-        if (!bsi_tm_curve_at(&r->c[0], pa[0] + f * (pb[0] - pa[0]), uv, p))
+        double f = 0.25 * q, t = a->par[0] + f * (b->par[0] - a->par[0]), chord[3];
+        /* the edge is the master's curve, or where the faces meet when the trims are apart */
+        edge_sample at;
+        if (!(r->loose ? edge_point(r, t, a, b->par, &at) : bsi_tm_curve_at(&r->c[0], t, at.uv[0], at.P)))
             return 0;
         for (int k = 0; k < 3; k++)
-            chord[k] = Pa[k] + f * (Pb[k] - Pa[k]);
-        if (bsi_tm_dist3(p, chord) > half)
+            chord[k] = a->P[k] + f * (b->P[k] - a->P[k]);
+        if (bsi_tm_dist3(at.P, chord) > half)
             return 0;
     }
     double mid[3];
     for (int k = 0; k < 3; k++)
-        mid[k] = 0.5 * (Pa[k] + Pb[k]);
+        mid[k] = 0.5 * (a->P[k] + b->P[k]);
     for (size_t i = 0; i < r->n; i++) {
-        double ua[2], ub[2], p[3];
-        bsi_curve_eval(r->c[i].uv, pa[i], ua);
-        bsi_curve_eval(r->c[i].uv, pb[i], ub);
-        if (!bsi_face_point(r->j->m, r->c[i].face, 0.5 * (ua[0] + ub[0]), 0.5 * (ua[1] + ub[1]), p) ||
+        double p[3];
+        if (!bsi_face_point(r->j->m, r->c[i].face, 0.5 * (a->uv[i][0] + b->uv[i][0]), 0.5 * (a->uv[i][1] + b->uv[i][1]), p) ||
             bsi_tm_dist3(p, mid) > half)
             return 0;
     }
     return 1;
 }
 
-/* Sample (pa, pb] recursively; the sample at pa is already in. */
-static bs_status refine(edge_run *r, const double *pa, const double *Pa, const double *pb,
-                        const double *Pb, uint32_t vb, int depth, int forced)
+/* Sample (a, b] recursively; a is already in. */
+static bs_status refine(edge_run *r, const edge_sample *a, const edge_sample *b, int depth, int forced)
 {
-    if (depth >= MAX_DEPTH || (forced <= 0 && interval_fine(r, pa, pb, Pa, Pb)))
-        return add_sample(r, pb, vb);
-    double pm[MAX_USES], uv[2], Pm[3];
-    pm[0] = 0.5 * (pa[0] + pb[0]);
-    if (!bsi_tm_curve_at(&r->c[0], pm[0], uv, Pm))
-        return BS_ERR_DOMAIN;
-    for (size_t i = 1; i < r->n; i++)
-        pm[i] = bsi_tm_project(&r->c[i], Pm, pa[i], pb[i], 0.5 * (pa[i] + pb[i]));
-    uint32_t vm;
-    bs_status st = bsi_tm_new_vertex(&r->j->edges, Pm, (uint32_t)r->c[0].face, uv, &vm);
+    if (depth >= MAX_DEPTH || (forced <= 0 && interval_fine(r, a, b)))
+        return add_sample(r, b);
+    edge_sample mid;
+    bs_status st = new_sample(r, 0.5 * (a->par[0] + b->par[0]), a, b->par, &mid);
     if (st == BS_OK)
-        st = refine(r, pa, Pa, pm, Pm, vm, depth + 1, forced - 1);
+        st = refine(r, a, &mid, depth + 1, forced - 1);
     if (st == BS_OK)
-        st = refine(r, pm, Pm, pb, Pb, vb, depth + 1, forced - 1);
+        st = refine(r, &mid, b, depth + 1, forced - 1);
     return st;
 }
 
-/* The parameters on trim i of the master's ends: 1, or 0 when its ends are not the master's. */
-static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1, int closed,
+/* The parameters on trim i of the master's ends when they lie within slack of them: 1, or 0. */
+static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1, int closed, double slack,
                       double *s0, double *s1)
 {
     const curve3 *c = &r->c[i];
@@ -116,7 +159,6 @@ static int match_ends(edge_run *r, size_t i, const double *P0, const double *P1,
     if (!bsi_tm_curve_at(c, c->t0, uv, Q0) || !bsi_tm_curve_at(c, c->t1, uv, Q1))
         return 0;
     double same = bsi_tm_dist3(Q0, P0) + bsi_tm_dist3(Q1, P1), other = bsi_tm_dist3(Q0, P1) + bsi_tm_dist3(Q1, P0);
-    double slack = 10.0 * r->j->merge;
     if ((same < other ? same : other) > slack)
         return 0;
     int forward = same <= other;
@@ -145,113 +187,141 @@ static bs_status store(tm_job *j, edge_run *r)
 {
     tm_edges *e = &j->edges;
     for (size_t i = 0; i < r->n; i++) {
-        if (!bsi_grow_array((void **)&e->param, &e->sample_cap, e->nsample + r->ns, sizeof(double)))
+        if (!bsi_grow_array((void **)&e->uv, &e->sample_cap, e->nsample + r->ns, 2 * sizeof(double)))
             return BS_ERR_NO_MEMORY;
         void *q = realloc(e->vid, e->sample_cap * sizeof(uint32_t));
         if (q == NULL)
             return BS_ERR_NO_MEMORY;
         e->vid = q;
         tm_trim *t = &e->trim[r->trim[i]];
-        int descending = r->ns > 1 && r->par[(r->ns - 1) * MAX_USES + i] < r->par[i];
+        int descending = r->ns > 1 && r->s[r->ns - 1].par[i] < r->s[0].par[i];
         t->first = e->nsample;
         t->count = r->ns;
         for (size_t k = 0; k < r->ns; k++) {
-            size_t src = descending ? r->ns - 1 - k : k;
-            e->param[e->nsample] = r->par[src * MAX_USES + i];
-            e->vid[e->nsample++] = r->vid[src];
+            const edge_sample *src = &r->s[descending ? r->ns - 1 - k : k];
+            memcpy(e->uv + 2 * e->nsample, src->uv[i], 2 * sizeof(double));
+            e->vid[e->nsample++] = src->vid;
         }
     }
     return BS_OK;
 }
 
-/* Sample the edge whose trims are trims[0 .. n) (the first the master). */
-static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n)
+/* The trims of the edge after the master that share its samples: those whose ends are the
+ * master's, or failing any, one within LOOSE_GAP of them; the rest into alone[]. */
+static void gather_trims(edge_run *r, const size_t *trims, size_t n, edge_sample *first, edge_sample *last,
+                         int closed, size_t *alone, size_t *nalone, size_t alone_cap)
+{
+    const tm_job *j = r->j;
+    for (size_t k = 1; k < n; k++) {
+        if (r->n < MAX_USES) {
+            bsi_tm_curve_init(&r->c[r->n], j, trims[k]);
+            if (match_ends(r, r->n, first->P, last->P, closed, 10.0 * j->merge, &first->par[r->n],
+                           &last->par[r->n])) {
+                r->trim[r->n++] = trims[k];
+                continue;
+            }
+        }
+        if (*nalone < alone_cap)
+            alone[(*nalone)++] = trims[k];
+    }
+    /* an edge of two trims written apart: the second shares the master's samples, moved to
+     * where the faces meet */
+    if (r->n == 1 && n == 2 && *nalone == 1) {
+        bsi_tm_curve_init(&r->c[1], j, trims[1]);
+        if (match_ends(r, 1, first->P, last->P, closed, LOOSE_GAP * j->diag, &first->par[1],
+                       &last->par[1])) {
+            r->trim[r->n++] = trims[1];
+            r->loose = 1;
+            *nalone = 0;
+        }
+    }
+}
+
+/* How far the master's points stand from where the faces meet, less the second trim's: > 0 when
+ * the second trim is the better master (the sum at the master's quarter points). */
+static double master_excess(const edge_run *r)
+{
+    double excess = 0.0;
+    for (int q = 1; q <= 3; q++) {
+        double t = r->c[0].t0 + 0.25 * q * (r->c[0].t1 - r->c[0].t0), P[3], Q[3], X[3], ua[2], ub[2];
+        if (!bsi_tm_curve_at(&r->c[0], t, ua, P))
+            return 0.0;
+        double s = bsi_tm_project(&r->c[1], P, r->c[1].t0, r->c[1].t1, 0.5 * (r->c[1].t0 + r->c[1].t1));
+        if (!bsi_tm_curve_at(&r->c[1], s, ub, Q) || !bsi_tm_meet(r->j->m, r->c[0].face, ua, r->c[1].face, ub, 1e-6 * r->j->tol, X))
+            return 0.0;
+        excess += bsi_tm_dist3(X, P) - bsi_tm_dist3(X, Q);
+    }
+    return excess;
+}
+
+/* Sample the edge whose trims are trims[0 .. n) (the first the master; of an edge of two trims
+ * written apart, the one nearer where the faces meet unless keep_master). */
+static bs_status sample_edge(tm_job *j, const size_t *trims, size_t n, int keep_master)
 {
     edge_run r;
     memset(&r, 0, sizeof r);
     r.j = j;
-    bs_status st = BS_OK;
-    r.n = 0;
-    r.trim[r.n] = trims[0];
-    bsi_tm_curve_init(&r.c[r.n++], j, trims[0]);
+    r.trim[0] = trims[0];
+    bsi_tm_curve_init(&r.c[0], j, trims[0]);
+    r.n = 1;
     const curve3 *mc = &r.c[0];
-    double uv0[2], uv1[2], P0[3], P1[3];
-    if (!bsi_tm_curve_at(mc, mc->t0, uv0, P0) || !bsi_tm_curve_at(mc, mc->t1, uv1, P1))
+    edge_sample first, last;
+    memset(&first, 0, sizeof first);
+    memset(&last, 0, sizeof last);
+    first.par[0] = mc->t0;
+    last.par[0] = mc->t1;
+    if (!bsi_tm_curve_at(mc, mc->t0, first.uv[0], first.P) || !bsi_tm_curve_at(mc, mc->t1, last.uv[0], last.P))
         return BS_ERR_DOMAIN;
-    int closed = bsi_tm_dist3(P0, P1) <= j->merge;
-    double par0[MAX_USES] = {0.0}, par1[MAX_USES] = {0.0};
-    par0[0] = mc->t0;
-    par1[0] = mc->t1;
-    /* the other trims whose ends match; those that do not are sampled on their own */
+    int closed = bsi_tm_dist3(first.P, last.P) <= j->merge;
     size_t alone[MAX_USES * 4];
     size_t nalone = 0;
-    for (size_t k = 1; k < n; k++) {
-        if (r.n == MAX_USES) {
-            if (nalone < sizeof alone / sizeof alone[0])
-                alone[nalone++] = trims[k];
-            continue;
-        }
-        bsi_tm_curve_init(&r.c[r.n], j, trims[k]);
-        double s0, s1;
-        if (match_ends(&r, r.n, P0, P1, closed, &s0, &s1)) {
-            r.trim[r.n] = trims[k];
-            par0[r.n] = s0;
-            par1[r.n] = s1;
-            r.n++;
-        } else if (nalone < sizeof alone / sizeof alone[0]) {
-            alone[nalone++] = trims[k];
-        }
+    gather_trims(&r, trims, n, &first, &last, closed, alone, &nalone, sizeof alone / sizeof alone[0]);
+    if (r.loose && !keep_master && master_excess(&r) > 0.0) {
+        size_t swapped[2] = {trims[1], trims[0]};
+        return sample_edge(j, swapped, 2, 1);
     }
-    uint32_t v0 = TM_NONE, v1 = TM_NONE;
-    st = bsi_tm_model_vertex(j, P0, (uint32_t)mc->face, uv0, &v0, &r.grade[0]);
+    for (size_t i = 1; i < r.n; i++) {
+        bsi_curve_eval(r.c[i].uv, first.par[i], first.uv[i]);
+        bsi_curve_eval(r.c[i].uv, last.par[i], last.uv[i]);
+    }
+    /* the ends are the neighbouring edges' too and stay where the master has them; the loose
+     * trim's (u, v) there are where the faces meet, next to them */
+    if (r.loose) {
+        meet_at_end(&r, &first);
+        meet_at_end(&r, &last);
+    }
+    bs_status st = bsi_tm_model_vertex(j, first.P, (uint32_t)mc->face, first.uv[0], &first.vid, &r.grade[0]);
     if (st == BS_OK)
-        st = bsi_tm_model_vertex(j, P1, (uint32_t)mc->face, uv1, &v1, &r.grade[1]);
-    memcpy(r.end[0], P0, sizeof r.end[0]);
-    memcpy(r.end[1], P1, sizeof r.end[1]);
+        st = bsi_tm_model_vertex(j, last.P, (uint32_t)mc->face, last.uv[0], &last.vid, &r.grade[1]);
+    memcpy(r.end[0], first.P, sizeof r.end[0]);
+    memcpy(r.end[1], last.P, sizeof r.end[1]);
     if (st == BS_OK)
-        st = add_sample(&r, par0, v0);
+        st = add_sample(&r, &first);
     /* start from the master's Bezier segments, each halved at least once (twice for a closed
      * edge of one segment, so that it is never a two-gon) */
     const bsi_axis *ax = &mc->uv->axis;
     int forced = closed && ax->n < 2 ? 2 : 1;
-    double pa[MAX_USES], Pa[3];
-    memcpy(pa, par0, sizeof pa);
-    memcpy(Pa, P0, sizeof Pa);
+    edge_sample a = first;
     for (size_t s = 1; s <= ax->n && st == BS_OK; s++) {
-        double pb[MAX_USES], Pb[3], uv[2];
-        uint32_t vb = v1;
-        if (s == ax->n) {
-            memcpy(pb, par1, sizeof pb);
-            memcpy(Pb, P1, sizeof Pb);
-        } else {
-            pb[0] = ax->breaks[s];
-            if (!bsi_tm_curve_at(mc, pb[0], uv, Pb)) {
-                st = BS_ERR_DOMAIN;
-                break;
-            }
-            for (size_t i = 1; i < r.n; i++)
-                pb[i] = bsi_tm_project(&r.c[i], Pb, pa[i], par1[i],
-                                       pa[i] + (par1[i] - pa[i]) * (pb[0] - pa[0]) / (par1[0] - pa[0]));
-            st = bsi_tm_new_vertex(&j->edges, Pb, (uint32_t)mc->face, uv, &vb);
-        }
+        edge_sample b = last;
+        if (s < ax->n)
+            st = new_sample(&r, ax->breaks[s], &a, last.par, &b);
         if (st == BS_OK)
-            st = refine(&r, pa, Pa, pb, Pb, vb, 0, forced);
-        memcpy(pa, pb, sizeof pa);
-        memcpy(Pa, Pb, sizeof Pa);
+            st = refine(&r, &a, &b, 0, forced);
+        a = b;
     }
     if (st == BS_OK)
         st = store(j, &r);
-    free(r.par);
-    free(r.vid);
+    free(r.s);
     for (size_t k = 0; k < nalone && st == BS_OK; k++)
-        st = sample_edge(j, &alone[k], 1);
+        st = sample_edge(j, &alone[k], 1, 1);
     return st;
 }
 
 void bsi_tm_edges_free(tm_edges *e)
 {
     free(e->vert);
-    free(e->param);
+    free(e->uv);
     free(e->vid);
     free(e->trim);
     free(e->trim_face);
@@ -299,7 +369,7 @@ static bs_status sample_all(tm_job *j)
         } else {
             group[n++] = t;
         }
-        st = sample_edge(j, group, n);
+        st = sample_edge(j, group, n, 0);
     }
     /* poles last: their spacing follows the samples of their faces' other trims */
     for (size_t t = 0; t < m->ntrim && st == BS_OK; t++)

@@ -122,7 +122,8 @@ static bs_status gather_loops(const tm_job *j, size_t f, loop_pt **pts_out, size
             int rev = m->trims[t].reversed;
             for (size_t s = 0; s + 1 < tt->count; s++) {
                 size_t at = tt->first + (rev ? tt->count - 1 - s : s);
-                bsi_curve_eval(&m->trims[t].uv, j->edges.param[at], pts[np].uv);
+                pts[np].uv[0] = j->edges.uv[2 * at];
+                pts[np].uv[1] = j->edges.uv[2 * at + 1];
                 pts[np].vid = j->edges.vid[at];
                 /* one vertex met again at (nearly) the same place, as across a trim of no length
                  * or the small gap a file leaves between a trim's end and the next one's start:

@@ -60,6 +60,7 @@ static bs_status run(const bs_model *m, const bs_tess_options *o, tm_job *j, cou
     j->m = m;
     double diag = bsi_model_diagonal(m);
     j->tol = (o->flags & BS_TESS_RELATIVE) ? o->tolerance * diag : o->tolerance;
+    j->diag = diag;
     j->merge = MERGE * diag;
     j->max_points = o->max_vertices;
     j->face = calloc(m->nface ? m->nface : 1, sizeof(tm_face_mesh));

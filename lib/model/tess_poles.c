@@ -32,9 +32,7 @@ bs_status bsi_tm_sample_pole(tm_job *j, size_t t, const double *P)
             if (o->pole || o->count < 2)
                 continue;
             for (size_t q = 0; q + 1 < o->count; q++) {
-                double u0[2], u1[2];
-                bsi_curve_eval(&m->trims[k].uv, j->edges.param[o->first + q], u0);
-                bsi_curve_eval(&m->trims[k].uv, j->edges.param[o->first + q + 1], u1);
+                const double *u0 = j->edges.uv + 2 * (o->first + q), *u1 = u0 + 2;
                 spacing += hypot((u1[0] - u0[0]) * s->su, (u1[1] - u0[1]) * s->sv);
                 count++;
             }
@@ -50,7 +48,7 @@ bs_status bsi_tm_sample_pole(tm_job *j, size_t t, const double *P)
     if (st != BS_OK)
         return st;
     tm_edges *e = &j->edges;
-    if (!bsi_grow_array((void **)&e->param, &e->sample_cap, e->nsample + n + 1, sizeof(double)))
+    if (!bsi_grow_array((void **)&e->uv, &e->sample_cap, e->nsample + n + 1, 2 * sizeof(double)))
         return BS_ERR_NO_MEMORY;
     void *q = realloc(e->vid, e->sample_cap * sizeof(uint32_t));
     if (q == NULL)
@@ -60,7 +58,7 @@ bs_status bsi_tm_sample_pole(tm_job *j, size_t t, const double *P)
     e->trim[t].count = n + 1;
     e->trim[t].pole = 1;
     for (size_t k = 0; k <= n; k++) {
-        e->param[e->nsample] = k == n ? c.t1 : c.t0 + (c.t1 - c.t0) * (double)k / (double)n;
+        bsi_curve_eval(c.uv, k == n ? c.t1 : c.t0 + (c.t1 - c.t0) * (double)k / (double)n, e->uv + 2 * e->nsample);
         e->vid[e->nsample++] = vid;
     }
     return BS_OK;

@@ -226,18 +226,13 @@ static int all_closed(const bs_model *m)
 
 static double worst_angle = 180.0;
 
-/* Files whose mesh is known not to close: block-brep.igs has a hole whose circle starts at one
- * point on the plane's trim and at another on the cylinder's (a closed edge whose two trims do
- * not start together), and such an edge is sampled twice, once per trim. The check asserts that
- * they are open, so that fixing them shows here. */
-static const char *known_open[] = {"block-brep.igs"};
-
-static int is_known_open(const char *file)
+/* Files whose edges' trims stand apart by more than the mesh's tolerance, meshed at 1e-4 D in
+ * every run: block-brep.igs writes the trims of its slanted hole on the planes up to 0.0325
+ * (6.3e-4 D) off those on the cylinder (OpenCASCADE reading it back gives the edges that
+ * tolerance), and a vertex on one trim errs by that much on the other face. */
+static int trims_apart(const char *part, const char *suffix)
 {
-    for (size_t k = 0; k < sizeof known_open / sizeof known_open[0]; k++)
-        if (strcmp(file, known_open[k]) == 0)
-            return 1;
-    return 0;
+    return strcmp(part, "block") == 0 && strcmp(suffix, "-brep.igs") == 0;
 }
 
 /* The options of the meshes checked here: the model method at an absolute tolerance. */
@@ -269,9 +264,7 @@ static void check_file(const char *part, const char *suffix, double rel, int thr
     if (st == BS_OK && copy_mesh(mesh, &c)) {
         size_t bad = bad_edges(c.tri, c.nt);
         int closed = all_closed(m);
-        if (closed && is_known_open(file))
-            CHECKF(bad > 0, "%s at %g D: closed now: take it off known_open", file, rel);
-        else if (closed)
+        if (closed)
             CHECKF(bad == 0, "%s at %g D: %zu mesh edges not used once each way", file, rel, bad);
         double o3[3] = {0.0, 0.0, 0.0};
         double vol = signed_volume(&c, o3);
@@ -502,7 +495,7 @@ int main(void)
     for (size_t p = 0; p < sizeof parts / sizeof parts[0]; p++)
         for (size_t s = 0; s < (quick ? 1 : sizeof suffixes / sizeof suffixes[0]); s++) {
             check_file(parts[p], suffixes[s], 1e-3, s == 0);
-            if (!quick && (full || s == 0))
+            if (!quick && (full || s == 0 || trims_apart(parts[p], suffixes[s])))
                 check_file(parts[p], suffixes[s], 1e-4, 0);
         }
     printf("smallest corner angle over all meshes: %.2f degrees\n", worst_angle);
