@@ -54,38 +54,56 @@ static void check_frame(const result *r, const double n[3])
 static double worst_regular, worst_angle; /* errors over the scale, and in radians */
 static double worst_limit;                /* error at the sphere's pole over the scale */
 
+/* The fundamental forms of a net at (u, v) in long double: the first partials d[0..1], the
+ * second d[2..4], the unit normal N, and K, H, k_min, k_max in want[]. */
+typedef struct ref_forms {
+    long double d[5][3], N[3], E, F, G, L, M, NN, want[4];
+} ref_forms;
+
+static void ref_curvature(const ref_net *net, long double u, long double v, ref_forms *f)
+{
+    long double(*d)[3] = f->d;
+    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
+    for (int j = 0; j < 5; j++)
+        ref_deriv(net, ab[j][0], ab[j][1], u, v, d[j]);
+    long double cr[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1], d[0][2] * d[1][0] - d[0][0] * d[1][2],
+                         d[0][0] * d[1][1] - d[0][1] * d[1][0]};
+    long double wl = sqrtl(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
+    for (int c = 0; c < 3; c++)
+        f->N[c] = cr[c] / wl;
+    f->E = f->F = f->G = f->L = f->M = f->NN = 0;
+    for (int c = 0; c < 3; c++) {
+        f->E += d[0][c] * d[0][c];
+        f->F += d[0][c] * d[1][c];
+        f->G += d[1][c] * d[1][c];
+        f->L += d[2][c] * f->N[c];
+        f->M += d[3][c] * f->N[c];
+        f->NN += d[4][c] * f->N[c];
+    }
+    long double W = f->E * f->G - f->F * f->F, K = (f->L * f->NN - f->M * f->M) / W;
+    long double H = (f->E * f->NN - 2 * f->F * f->M + f->G * f->L) / (2 * W);
+    long double s = sqrtl(fmaxl(H * H - K, 0.0L));
+    f->want[0] = K;
+    f->want[1] = H;
+    f->want[2] = H - s;
+    f->want[3] = H + s;
+}
+
 /* One random point of a random patch against the long double fundamental forms. */
 static void against_reference(const bs_patch *p, const double *ctrl, const double *w, size_t m,
                               size_t n, double u, double v, double inv_d)
 {
     ref_net net = {m, n, 3, ctrl, w};
-    long double d[5][3];
-    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
-    for (int j = 0; j < 5; j++)
-        ref_deriv(&net, ab[j][0], ab[j][1], u, v, d[j]);
-    long double cr[3] = {d[0][1] * d[1][2] - d[0][2] * d[1][1], d[0][2] * d[1][0] - d[0][0] * d[1][2],
-                         d[0][0] * d[1][1] - d[0][1] * d[1][0]};
-    long double wl = sqrtl(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]), N[3];
-    for (int c = 0; c < 3; c++)
-        N[c] = cr[c] / wl;
-    long double E = 0, F = 0, G = 0, L = 0, M = 0, NN = 0;
-    for (int c = 0; c < 3; c++) {
-        E += d[0][c] * d[0][c];
-        F += d[0][c] * d[1][c];
-        G += d[1][c] * d[1][c];
-        L += d[2][c] * N[c];
-        M += d[3][c] * N[c];
-        NN += d[4][c] * N[c];
-    }
-    long double W = E * G - F * F, K = (L * NN - M * M) / W, H = (E * NN - 2 * F * M + G * L) / (2 * W);
-    long double s = sqrtl(fmaxl(H * H - K, 0.0L)), kmin = H - s, kmax = H + s;
+    ref_forms rf;
+    ref_curvature(&net, u, v, &rf);
+    long double(*d)[3] = rf.d, *N = rf.N, E = rf.E, F = rf.F, G = rf.G, L = rf.L, M = rf.M, NN = rf.NN;
+    long double kmin = rf.want[2], kmax = rf.want[3], s = 0.5L * (kmax - kmin);
     result r;
     CHECK_STATUS(curvature_at(p, u, v, &r), BS_OK);
     CHECK(r.kind == BS_CURV_REGULAR);
     double scale = fabs((double)kmin) + fabs((double)kmax) + inv_d;
-    long double want[4] = {K, H, kmin, kmax};
     for (int i = 0; i < 4; i++) {
-        double e = (double)fabsl((long double)r.k[i] - want[i]) / (i == 0 ? scale * scale : scale);
+        double e = (double)fabsl((long double)r.k[i] - rf.want[i]) / (i == 0 ? scale * scale : scale);
         worst_regular = fmax(worst_regular, e);
         CHECKF(e <= 1e-9, "(%g,%g) value %d: error %.3g of the scale", u, v, i, e);
     }
@@ -250,6 +268,58 @@ static void teapot_poles(void)
     bs_surface_destroy(s);
 }
 
+/* Every point of the teapot's collapsed edges (u or v = 0 or 1 on a side that is one point,
+ * at k / 20 along it) is a limit point whose curvature exists (the lid and the bottom are
+ * smooth there): its kind is LIMIT and its values within 1e-6 of the scale of the limit along
+ * the line to the centre, from the long double forms at h = 2^-24 and 2^-25 extrapolated
+ * linearly (the curvature is nearly linear in h there). */
+static void teapot_collapsed_edges(void)
+{
+    bs_surface *s;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    int points = 0;
+    double worst = 0.0;
+    for (size_t i = 0; s != NULL && i < bs_surface_count(s); i++) {
+        const bs_patch *p = bs_surface_get(s, i);
+        double ctrl[16 * 3], w[16];
+        CHECK_STATUS(bs_patch_get_ctrl(p, ctrl, 48, w, 16), BS_OK);
+        ref_net net = {3, 3, 3, ctrl, w};
+        for (int side = 0; side < 4; side++) {
+            double ends[2][3];
+            for (int e = 0; e < 2; e++) {
+                double u = side < 2 ? side : e, v = side < 2 ? e : side - 2;
+                long double P[3];
+                ref_deriv(&net, 0, 0, u, v, P);
+                for (int c = 0; c < 3; c++)
+                    ends[e][c] = (double)P[c];
+            }
+            if (ends[0][0] != ends[1][0] || ends[0][1] != ends[1][1] || ends[0][2] != ends[1][2])
+                continue; /* not a collapsed side */
+            for (int k = 0; k <= 20; k++) {
+                double t = k / 20.0, u = side < 2 ? side : t, v = side < 2 ? t : side - 2;
+                result r;
+                CHECK_STATUS(curvature_at(p, u, v, &r), BS_OK);
+                CHECKF(r.kind == BS_CURV_LIMIT, "patch %zu (%g, %g): kind %d", i, u, v, r.kind);
+                ref_forms a, b;
+                long double h = ldexpl(1.0L, -24);
+                ref_curvature(&net, u + h * (0.5L - u), v + h * (0.5L - v), &a);
+                ref_curvature(&net, u + 0.5L * h * (0.5L - u), v + 0.5L * h * (0.5L - v), &b);
+                double scale = fabs((double)b.want[2]) + fabs((double)b.want[3]) + 0.1;
+                for (int q = 0; q < 4 && r.kind == BS_CURV_LIMIT; q++) {
+                    long double want = 2.0L * b.want[q] - a.want[q];
+                    double e = (double)fabsl((long double)r.k[q] - want) / (q == 0 ? scale * scale : scale);
+                    worst = fmax(worst, e);
+                    CHECKF(e <= 1e-6, "patch %zu (%g, %g) value %d: %.9g, limit %.9Lg", i, u, v, q, r.k[q], want);
+                }
+                points++;
+            }
+        }
+    }
+    CHECKF(points == 168, "%d points on the teapot's collapsed edges, 168 expected", points);
+    printf("teapot collapsed edges: %d limit points, worst %.3g of the scale\n", points, worst);
+    bs_surface_destroy(s);
+}
+
 /* n points at once (packed outputs) against the same points one by one (the same bits), and
  * each kind against bs_patch_eval_normal's at the point: regular with regular, undefined with
  * undefined, a limit normal giving a limit or undefined curvature. Returns the limits seen. */
@@ -407,6 +477,7 @@ int main(void)
     printf("limit points (the sphere's pole): worst error %.3g of the scale (contract 1e-6)\n", worst_limit);
     cylinder();
     teapot_poles();
+    teapot_collapsed_edges();
     kinds_polynomial();
     cone_apex();
     arguments();
