@@ -47,6 +47,10 @@ static const char usage[] =
     "      --nets            draw the patches' control nets over the surface\n"
     "      --closest N       draw N points around the surface, each joined to its closest point\n"
     "                        on the surface (red), 0..100000\n"
+    "      --max-query-work N\n"
+    "                        refuse, before any work, --closest points that would cost more than\n"
+    "                        N steps: (m+1)(n+1)(m+n+2) a point for patches of degree m x n\n"
+    "                        (default 100000000, 10 to 50 s; 0: no limit)\n"
     "      --patch ID        render only patch ID\n"
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
     "                        the four sub-nets are drawn)\n"
@@ -75,6 +79,7 @@ typedef struct render_opts {
     int faces;     /* --faces */
     model_draw *md; /* a model's trimmed faces (NULL, or md->model NULL: patches drawn whole) */
     out_file *of;   /* the output opened (nothing open: standard output) */
+    size_t query_budget; /* --max-query-work */
 } render_opts;
 
 static int parse_args(int argc, char **argv, render_opts *o)
@@ -158,6 +163,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
                 return cli_usage_error("render", "bad patch id", val);
         } else if (strcmp(a, "--max-triangles") == 0) {
             if (cli_parse_budget("render", val, &o->budget) != CLI_OK)
+                return CLI_USAGE;
+        } else if (strcmp(a, "--max-query-work") == 0) {
+            if (cli_parse_query_budget("render", val, &o->query_budget) != CLI_OK)
                 return CLI_USAGE;
         } else if (strcmp(a, "-m") == 0 || strcmp(a, "--method") == 0) {
             if (cli_parse_method("render", val, &o->method) != CLI_OK)
@@ -425,7 +433,7 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
     return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
 }
 
-/* Load the input, check it and render it. CLI_OK or the exit code
+/* Load the input, check it and the cost of its queries, and render it. CLI_OK or the exit code
  * after a message. */
 static int render_input(render_opts *o)
 {
@@ -440,6 +448,8 @@ static int render_input(render_opts *o)
     bs_surface *picked = NULL;
     if (rc == CLI_OK)
         rc = select_patches(o, s, &picked);
+    if (rc == CLI_OK)
+        rc = cli_query_budget("render", picked, o->closest, o->query_budget);
     model_draw md = {NULL, 0, 0};
     if (rc == CLI_OK && !o->curvature && !o->split && o->patch == (size_t)-1)
         rc = model_draw_open("render", &o->in, o->faces, &md);
@@ -456,7 +466,7 @@ int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL, 0}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
                      {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0, 0, NULL,
-                     NULL};
+                     NULL, CLI_RENDER_MAX_QUERY_WORK};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;

@@ -129,6 +129,15 @@ int cli_parse_method(const char *cmd, const char *val, int *method);
  * line gives the budget); CLI_INPUT or CLI_INTERNAL when the library fails. */
 int cli_tessellate(const char *cmd, const bs_surface *s, const bs_tess_options *o, size_t budget, bs_mesh **out);
 
+/* Default budget of render --closest, in steps (tools/budget.c): 0.1 to 0.5 microseconds each
+ * (docs/cli.md), so 10 to 50 s of work; 100000 points on bicubic patches take 13 million. */
+#define CLI_RENDER_MAX_QUERY_WORK ((size_t)100000000)
+/* Parse the value of --max-query-work (0: no budget); CLI_OK, or CLI_USAGE after the message. */
+int cli_parse_query_budget(const char *cmd, const char *val, size_t *budget);
+/* CLI_OK when n closest points on s fit the budget (0: no budget), else CLI_INPUT after one line
+ * naming the estimated work, the patch degrees that price it and the flag that raises it. */
+int cli_query_budget(const char *cmd, const bs_surface *s, size_t n, size_t budget);
+
 /* "v0", "u1", "v1", "u0" for BS_SIDE_*. */
 const char *cli_side_name(int side);
 
