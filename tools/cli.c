@@ -1,6 +1,7 @@
 /* Helpers shared by the subcommands of the bezsurf tool. */
 #include "cmds.h"
 #include "outfile.h"
+#include "png.h"
 
 #include <errno.h>
 #include <math.h>
@@ -254,11 +255,32 @@ int cli_value(const char *cmd, const char *opt, const char *val, char *buf, size
     return 1;
 }
 
-int cli_check_output(const char *cmd, const char *path)
+int cli_open_output(const char *cmd, const char *path, out_file *o)
 {
-    if (out_check(path) != 0)
-        return cli_fail_write(cmd, path);
-    return CLI_OK;
+    if (strcmp(path, "-") == 0) { /* standard output: nothing to open */
+        memset(o, 0, sizeof *o);
+        o->path = path;
+        return CLI_OK;
+    }
+    if (out_open(path, o) == 0)
+        return CLI_OK;
+    return o->why ? cli_fail(cmd, CLI_OUTPUT, "cannot write %s: %s", path[0] ? path : "''", o->why)
+                  : cli_fail_write(cmd, path);
+}
+
+int cli_close_output(const char *cmd, out_file *o, int rc)
+{
+    if (out_close(o, rc == CLI_OK) != 0 && rc == CLI_OK)
+        return cli_fail_write(cmd, o->path);
+    return rc;
+}
+
+int cli_write_png(const char *cmd, out_file *o, const unsigned char *rgb, size_t w, size_t h)
+{
+    int to_file = o->tmp != NULL, rc = CLI_OK;
+    if ((to_file ? png_write_rgb_file(o->f, rgb, w, h) : png_write_rgb("-", rgb, w, h)) != 0)
+        rc = cli_fail_write(cmd, to_file ? o->path : "standard output");
+    return cli_close_output(cmd, o, rc);
 }
 
 int cli_fail_write(const char *cmd, const char *path)

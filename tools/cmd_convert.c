@@ -18,22 +18,53 @@ static const char usage[] =
     "      --to FORMAT       the output's format: bpt or obj\n"
     "  -h, --help            this text\n";
 
+/* Close the output after a library writer, which took its temporary file's name; st is what the
+ * writer returned. CLI_OK or the exit code after a message. */
+static int finish(const char *cmd, out_file *of, bs_status st)
+{
+    int rc = CLI_OK;
+    if (st == BS_ERR_IO)
+        rc = cli_fail_write(cmd, of->path);
+    else if (st != BS_OK)
+        rc = cli_fail(cmd, st == BS_ERR_NO_MEMORY ? CLI_INTERNAL : CLI_INPUT, "%s: %s", of->path,
+                      bs_status_string(st));
+    return cli_close_output(cmd, of, rc);
+}
+
 /* A trimmed model (STEP, IGES) to OBJ free-form with its trim loops. */
-static int convert_model(const char *cmd, const cli_input *in, const char *out)
+static int convert_model(const char *cmd, const cli_input *in, const char *out, out_file *of)
 {
     bs_model *m;
     int rc = cli_load_model(cmd, in, &m);
     if (rc != CLI_OK)
         return rc;
-    bs_status st = bs_model_write_obj_file(m, out);
+    out_hold(of); /* the library writes through a temporary file of its own */
+    bs_status st = bs_model_write_obj_file(m, of->tmp);
+    out_release();
     size_t nf = bs_model_face_count(m);
     bs_model_destroy(m);
-    if (st == BS_ERR_IO)
-        return cli_fail_write(cmd, out);
-    if (st != BS_OK)
-        return cli_fail(cmd, st == BS_ERR_NO_MEMORY ? CLI_INTERNAL : CLI_INPUT, "%s: %s", out,
-                        bs_status_string(st));
+    if ((rc = finish(cmd, of, st)) != CLI_OK)
+        return rc;
     printf("%s: %zu trimmed faces (obj)\n", out, nf);
+    return cli_finish(cmd);
+}
+
+/* A surface to a .bpt or OBJ file. */
+static int convert_surface(const char *cmd, const cli_input *in, const cli_format *fmt, const char *out,
+                           out_file *of)
+{
+    bs_surface *s;
+    int rc = cli_load(cmd, in, &s);
+    if (rc != CLI_OK)
+        return rc;
+    out_hold(of);
+    bs_status st = fmt->write_file(s, of->tmp);
+    out_release();
+    size_t np = bs_surface_count(s);
+    bs_surface_destroy(s);
+    if ((rc = finish(cmd, of, st)) != CLI_OK)
+        return rc;
+    printf("%s: %zu patches (%s)\n", out, np, fmt->name);
     return cli_finish(cmd);
 }
 
@@ -85,7 +116,8 @@ int cmd_convert(int argc, char **argv)
                   : cli_usage_error(cmd, "no format for this extension: use --to (bpt, obj)", out);
     if (fmt->write_file == NULL)
         return cli_usage_error(cmd, "this format is read, not written", fmt->name);
-    int rc = cli_check_output(cmd, out);
+    out_file of;
+    int rc = cli_open_output(cmd, strcmp(out, "-") == 0 ? "./-" : out, &of); /* a file named "-" */
     if (rc != CLI_OK)
         return rc;
     const cli_format *from = NULL;
@@ -93,18 +125,8 @@ int cmd_convert(int argc, char **argv)
         from = in.format ? cli_format_named(in.format) : cli_format_of_path(in.path);
     if (from != NULL && (strcmp(from->name, "step") == 0 || strcmp(from->name, "iges") == 0) &&
         strcmp(fmt->name, "obj") == 0)
-        return convert_model(cmd, &in, out);
-    bs_surface *s;
-    if ((rc = cli_load(cmd, &in, &s)) != CLI_OK)
-        return rc;
-    bs_status st = fmt->write_file(s, out);
-    size_t np = bs_surface_count(s);
-    bs_surface_destroy(s);
-    if (st == BS_ERR_IO)
-        return cli_fail_write(cmd, out);
-    if (st != BS_OK)
-        return cli_fail(cmd, st == BS_ERR_NO_MEMORY ? CLI_INTERNAL : CLI_INPUT, "%s: %s", out,
-                        bs_status_string(st));
-    printf("%s: %zu patches (%s)\n", out, np, fmt->name);
-    return cli_finish(cmd);
+        rc = convert_model(cmd, &in, out, &of);
+    else
+        rc = convert_surface(cmd, &in, fmt, out, &of);
+    return cli_close_output(cmd, &of, rc); /* removes the temporary file after a failure */
 }

@@ -5,6 +5,7 @@
 #include "legend.h"
 #include "raycast.h"
 #include "closest_draw.h"
+#include "line_draw.h"
 #include "model_draw.h"
 #include "cmds.h"
 
@@ -46,6 +47,10 @@ static const char usage[] =
     "      --nets            draw the patches' control nets over the surface\n"
     "      --closest N       draw N points around the surface, each joined to its closest point\n"
     "                        on the surface (red), 0..100000\n"
+    "      --max-query-work N\n"
+    "                        refuse, before any work, --closest points that would cost more than\n"
+    "                        N steps: (m+1)(n+1)(m+n+2) a point for patches of degree m x n\n"
+    "                        (default 100000000, 10 to 50 s; 0: no limit)\n"
     "      --patch ID        render only patch ID\n"
     "      --split           subdivide every patch at (0.5, 0.5) into four first (with --nets:\n"
     "                        the four sub-nets are drawn)\n"
@@ -73,6 +78,8 @@ typedef struct render_opts {
     double unit;   /* the factor unit_scale() applied to the model */
     int faces;     /* --faces */
     model_draw *md; /* a model's trimmed faces (NULL, or md->model NULL: patches drawn whole) */
+    out_file *of;   /* the output opened (nothing open: standard output) */
+    size_t query_budget; /* --max-query-work */
 } render_opts;
 
 static int parse_args(int argc, char **argv, render_opts *o)
@@ -157,6 +164,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
         } else if (strcmp(a, "--max-triangles") == 0) {
             if (cli_parse_budget("render", val, &o->budget) != CLI_OK)
                 return CLI_USAGE;
+        } else if (strcmp(a, "--max-query-work") == 0) {
+            if (cli_parse_query_budget("render", val, &o->query_budget) != CLI_OK)
+                return CLI_USAGE;
         } else if (strcmp(a, "-m") == 0 || strcmp(a, "--method") == 0) {
             if (cli_parse_method("render", val, &o->method) != CLI_OK)
                 return CLI_USAGE;
@@ -189,30 +199,6 @@ static void surface_box(const bs_surface *s, double lo[3], double hi[3])
             for (int c = 0; c < 3; c++) {
                 lo[c] = fmin(lo[c], net[3 * k + (size_t)c]);
                 hi[c] = fmax(hi[c], net[3 * k + (size_t)c]);
-            }
-        free(net);
-    }
-}
-
-static void draw_nets(raster *r, const bs_surface *s)
-{
-    static const double ink[3] = {0.62, 0.08, 0.06}, dot[3] = {0.1, 0.1, 0.1};
-    for (size_t i = 0; i < bs_surface_count(s); i++) {
-        const bs_patch *p = bs_surface_get(s, i);
-        size_t m = bs_patch_degree_u(p), n = bs_patch_degree_v(p), cnt = (m + 1) * (n + 1);
-        double *net = malloc(3 * cnt * sizeof(double));
-        if (net == NULL || bs_patch_get_ctrl(p, net, 3 * cnt, NULL, 0) != BS_OK) {
-            free(net);
-            continue;
-        }
-        for (size_t a = 0; a <= m; a++)
-            for (size_t b = 0; b <= n; b++) {
-                const double *x = net + 3 * (a * (n + 1) + b);
-                if (a < m)
-                    raster_line(r, x, net + 3 * ((a + 1) * (n + 1) + b), 1.5, ink);
-                if (b < n)
-                    raster_line(r, x, net + 3 * (a * (n + 1) + b + 1), 1.5, ink);
-                raster_line(r, x, x, 5.0, dot);
             }
         free(net);
     }
@@ -259,16 +245,6 @@ static double *curvature_vertex_colors(const render_opts *o, const bs_surface *s
         return NULL;
     }
     return rgb;
-}
-
-/* Every triangle's edges, thin and dark (an edge shared by two triangles is drawn twice, alike). */
-static void draw_wire(raster *r, const double *pos, const uint32_t *tri, size_t nt)
-{
-    static const double ink[3] = {0.08, 0.09, 0.14};
-    for (size_t t = 0; t < nt; t++)
-        for (int k = 0; k < 3; k++)
-            raster_line(r, pos + 3 * (size_t)tri[3 * t + (size_t)k], pos + 3 * (size_t)tri[3 * t + (size_t)(k + 1) % 3],
-                        0.6, ink);
 }
 
 /* Face the mesh outwards where it encloses a negative signed volume (the teapot's patches face
@@ -387,8 +363,7 @@ static int render(const render_opts *o, const bs_surface *s)
             legend_draw(rgb, o->w, o->h, o->curvature == 2 ? "K (Gauss)" : "H (mean)", cr.range);
         else if (o->md != NULL && o->md->model != NULL)
             model_draw_legend(o->md, rgb, o->w, o->h);
-        if (png_write_rgb(o->output, rgb, o->w, o->h) != 0)
-            rc = cli_fail_write("render", strcmp(o->output, "-") == 0 ? "standard output" : o->output);
+        rc = cli_write_png("render", o->of, rgb, o->w, o->h); /* in place before the report */
     }
     if (rc == CLI_OK) {
         FILE *report = strcmp(o->output, "-") == 0 ? stderr : stdout; /* not into the picture */
@@ -458,10 +433,40 @@ static int select_patches(render_opts *o, const bs_surface *s, bs_surface **out)
     return st == BS_OK ? CLI_OK : cli_fail("render", CLI_INTERNAL, "%s", bs_status_string(st));
 }
 
+/* Load the input, check it and the cost of its queries, and render it. CLI_OK or the exit code
+ * after a message. */
+static int render_input(render_opts *o)
+{
+    bs_surface *s = NULL;
+    int rc = cli_load("render", &o->in, &s);
+    if (rc != CLI_OK)
+        return rc;
+    if (bs_surface_count(s) == 0)
+        rc = cli_fail("render", CLI_INPUT, "the surface has no patches: nothing to render");
+    else if (bs_surface_dim(s) != 3)
+        rc = cli_fail("render", CLI_INPUT, "the surface is not 3-D");
+    bs_surface *picked = NULL;
+    if (rc == CLI_OK)
+        rc = select_patches(o, s, &picked);
+    if (rc == CLI_OK)
+        rc = cli_query_budget("render", picked, o->closest, o->query_budget);
+    model_draw md = {NULL, 0, 0};
+    if (rc == CLI_OK && !o->curvature && !o->split && o->patch == (size_t)-1)
+        rc = model_draw_open("render", &o->in, o->faces, &md);
+    o->md = &md;
+    if (rc == CLI_OK)
+        rc = render(o, picked);
+    bs_surface_destroy(picked);
+    bs_surface_destroy(s);
+    model_draw_close(&md);
+    return rc;
+}
+
 int cmd_render(int argc, char **argv)
 {
     render_opts o = {{NULL, "teapot", 0, NULL, 0}, NULL, 800, 600, 3, CLI_RENDER_MAX_TRIANGLES, -60.0, 25.0, 2e-4,
-                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0, 0, NULL};
+                     {0.72, 0.76, 0.86}, 0, 0, 0, 0, 0, BS_TESS_PER_PATCH, (size_t)-1, 0, 0, 0, 1.0, 0, NULL,
+                     NULL, CLI_RENDER_MAX_QUERY_WORK};
     int rc = parse_args(argc, argv, &o);
     if (rc >= 0)
         return rc;
@@ -479,32 +484,10 @@ int cmd_render(int argc, char **argv)
     if (o.w * o.h * o.ss * o.ss > RENDER_MAX_SAMPLES) /* each at most 8192 and 4: no overflow */
         return cli_usage_error("render", "--size W x H times --ss N squared exceeds 67108864 samples (1 GiB)",
                                NULL);
-    rc = strcmp(o.output, "-") == 0 ? CLI_OK : cli_check_output("render", o.output); /* before the work */
-    if (rc != CLI_OK)
-        return rc;
-    bs_surface *s = NULL;
-    rc = cli_load("render", &o.in, &s);
-    if (rc != CLI_OK)
-        return rc;
-    if (bs_surface_count(s) == 0) {
-        bs_surface_destroy(s);
-        return cli_fail("render", CLI_INPUT, "the surface has no patches: nothing to render");
-    }
-    if (bs_surface_dim(s) != 3) {
-        bs_surface_destroy(s);
-        return cli_fail("render", CLI_INPUT, "the surface is not 3-D");
-    }
-    model_draw md = {NULL, 0, 0};
-    if (!o.curvature && !o.split && o.patch == (size_t)-1)
-        rc = model_draw_open("render", &o.in, o.faces, &md);
-    o.md = &md;
-    bs_surface *picked = NULL;
+    out_file of;
+    rc = cli_open_output("render", o.output, &of); /* before the work */
+    o.of = &of;
     if (rc == CLI_OK)
-        rc = select_patches(&o, s, &picked);
-    if (rc == CLI_OK)
-        rc = render(&o, picked);
-    bs_surface_destroy(picked);
-    bs_surface_destroy(s);
-    model_draw_close(&md);
-    return rc;
+        rc = render_input(&o);
+    return cli_close_output("render", &of, rc);
 }

@@ -143,6 +143,38 @@ static int tessellate_model(const cli_input *in, const bs_tess_options *o, size_
     return CLI_OK;
 }
 
+/* The input's mesh: a model's (STEP, IGES) or a surface's. CLI_OK or the exit code after a message. */
+static int make_mesh(const cli_input *in, const bs_tess_options *o, size_t budget, bs_mesh **m)
+{
+    if (cli_input_is_model(in))
+        return tessellate_model(in, o, budget, m);
+    bs_surface *s = NULL;
+    int rc = cli_load("tessellate", in, &s);
+    if (rc == CLI_OK)
+        rc = cli_tessellate("tessellate", s, o, budget, m);
+    bs_surface_destroy(s);
+    return rc;
+}
+
+/* The mesh file into the output opened (standard output when nothing is). CLI_OK or the exit code
+ * after a message. */
+static int write_mesh(const bs_mesh *m, int format, out_file *of)
+{
+    bs_status st = BS_OK;
+    if (of->tmp == NULL) {
+        st = write_stdout(m, format);
+    } else {
+        out_hold(of); /* the library writes of->tmp through a temporary file of its own */
+        st = bs_mesh_write(m, format, of->tmp);
+        out_release();
+    }
+    if (st == BS_OK)
+        return CLI_OK;
+    const char *name = of->tmp == NULL ? "standard output" : of->path;
+    return st == BS_ERR_IO ? cli_fail_write("tessellate", name)
+                           : cli_fail("tessellate", CLI_OUTPUT, "cannot write %s: %s", name, bs_status_string(st));
+}
+
 int cmd_tessellate(int argc, char **argv)
 {
     cli_input in = {NULL, "teapot", 0, NULL, 0};
@@ -217,16 +249,8 @@ int cmd_tessellate(int argc, char **argv)
     if (format < 0)
         format = format_of_path(output);
     int to_stdout = strcmp(output, "-") == 0;
-    int rc = to_stdout ? CLI_OK : cli_check_output("tessellate", output); /* before the work */
-    if (rc != CLI_OK)
-        return rc;
-    int is_model = cli_input_is_model(&in);
-    bs_surface *s = NULL;
-    if (!is_model) {
-        rc = cli_load("tessellate", &in, &s);
-        if (rc != CLI_OK)
-            return rc;
-    }
+    out_file of;
+    int rc = cli_open_output("tessellate", output, &of); /* before the work */
     bs_tess_options o;
     bs_tess_options_init(&o);
     o.method = mode == 2 ? BS_TESS_UNIFORM : method;
@@ -235,25 +259,21 @@ int cmd_tessellate(int argc, char **argv)
     o.nv = nv;
     o.tolerance = tol;
     bs_mesh *m = NULL;
-    rc = is_model ? tessellate_model(&in, &o, budget, &m) : cli_tessellate("tessellate", s, &o, budget, &m);
-    bs_surface_destroy(s);
-    if (rc != CLI_OK)
-        return rc;
-    bs_status st = to_stdout ? write_stdout(m, format) : bs_mesh_write(m, format, output);
-    if (st != BS_OK) {
-        int e = errno;
+    if (rc == CLI_OK)
+        rc = make_mesh(&in, &o, budget, &m);
+    if (rc == CLI_OK)
+        rc = write_mesh(m, format, &of);
+    rc = cli_close_output("tessellate", &of, rc);
+    if (rc != CLI_OK) {
         bs_mesh_destroy(m);
-        errno = e;
-        const char *name = to_stdout ? "standard output" : output;
-        return st == BS_ERR_IO ? cli_fail_write("tessellate", name)
-                               : cli_fail("tessellate", CLI_OUTPUT, "cannot write %s: %s", name, bs_status_string(st));
+        return rc;
     }
     FILE *report = to_stdout ? stderr : stdout; /* not into the mesh */
     fprintf(report, "%s: %zu vertices, %zu triangles", to_stdout ? "<stdout>" : output, bs_mesh_vertex_count(m),
             bs_mesh_triangle_count(m));
     if (flags & BS_TESS_STRIPS)
         fprintf(report, ", %zu strips", bs_mesh_strip_count(m));
-    if (is_model) {
+    if (cli_input_is_model(&in)) {
         int closed = mesh_closed(m);
         fprintf(report, closed == 1 ? ", closed" : closed == 0 ? ", not closed" : "");
     }

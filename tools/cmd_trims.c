@@ -187,6 +187,8 @@ static void draw_axes(const plot *p, const char *title)
 static const char *const kind_names[9] = {"bezier", "bspline", "plane", "cylinder", "cone",
                                           "sphere", "torus", "revolution", "extrusion"};
 
+static int trims_picture(const char *cmd, const cli_input *in, size_t face, size_t size, out_file *of);
+
 int cmd_trims(int argc, char **argv)
 {
     static const char *cmd = "trims";
@@ -220,11 +222,20 @@ int cmd_trims(int argc, char **argv)
         cli_default_output(&in, "-trims.png", outbuf, sizeof outbuf);
         output = outbuf;
     }
-    int rc = strcmp(output, "-") == 0 ? CLI_OK : cli_check_output(cmd, output);
-    if (rc != CLI_OK)
-        return rc;
+    out_file of;
+    int rc = cli_open_output(cmd, output, &of); /* before the work */
+    if (rc == CLI_OK)
+        rc = trims_picture(cmd, &in, face, size, &of);
+    return cli_close_output(cmd, &of, rc);
+}
+
+/* The picture of face (the first with the most loops when (size_t)-1) into the output opened.
+ * CLI_OK or the exit code after a message. */
+static int trims_picture(const char *cmd, const cli_input *in, size_t face, size_t size, out_file *of)
+{
+    const char *output = of->path;
     bs_model *m = NULL;
-    rc = cli_load_model(cmd, &in, &m);
+    int rc = cli_load_model(cmd, in, &m);
     if (rc != CLI_OK)
         return rc;
     size_t nf = bs_model_face_count(m);
@@ -277,8 +288,7 @@ int cmd_trims(int argc, char **argv)
     rc = draw_face(&p, span / 3) == 0 ? CLI_OK : cli_fail(cmd, CLI_INTERNAL, "out of memory");
     if (rc == CLI_OK) {
         draw_axes(&p, title);
-        if (png_write_rgb(output, p.rgb, size, size) != 0)
-            rc = cli_fail_write(cmd, strcmp(output, "-") == 0 ? "standard output" : output);
+        rc = cli_write_png(cmd, of, p.rgb, size, size); /* in place before the report */
     }
     if (rc == CLI_OK) {
         FILE *report = strcmp(output, "-") == 0 ? stderr : stdout;

@@ -2,6 +2,8 @@
 #ifndef BEZSURF_TOOL_CMDS_H
 #define BEZSURF_TOOL_CMDS_H
 
+#include "outfile.h"
+
 #include <bezsurf.h>
 
 /* Exit codes, the same for every subcommand (docs/cli.md). */
@@ -98,9 +100,16 @@ int cli_fail(const char *cmd, int code, const char *fmt, ...);
 int cli_finish(const char *cmd);
 /* Copy the value of option opt into buf (cap bytes); 0 after a usage error if it does not fit. */
 int cli_value(const char *cmd, const char *opt, const char *val, char *buf, size_t cap);
-/* Before any work: CLI_OK if path can be written (a temporary file can be made beside it and it is
- * not an existing directory, FIFO or device), else CLI_OUTPUT after "cannot write PATH: reason". */
-int cli_check_output(const char *cmd, const char *path);
+/* Before any work: open the output file path (tools/outfile.h: a temporary file beside its target,
+ * removed on failure and on SIGINT, SIGTERM and SIGHUP); "-" (standard output) opens nothing.
+ * CLI_OK, or CLI_OUTPUT after "cannot write PATH: reason" (an empty name, a directory, FIFO or
+ * device, a file the user may not write, a missing directory, a link to a missing file). */
+int cli_open_output(const char *cmd, const char *path, out_file *o);
+/* Finish the output of cli_open_output: with rc CLI_OK put the file in place, otherwise remove the
+ * temporary file. Returns rc, or CLI_OUTPUT after "cannot write PATH: reason". */
+int cli_close_output(const char *cmd, out_file *o, int rc);
+/* A w x h RGB picture as PNG into the output of cli_open_output, then cli_close_output. */
+int cli_write_png(const char *cmd, out_file *o, const unsigned char *rgb, size_t w, size_t h);
 /* "cannot write PATH: strerror(errno)"; returns CLI_OUTPUT. */
 int cli_fail_write(const char *cmd, const char *path);
 /* Print x with the fewest of 15, 16, 17 significant digits that read back exactly. */
@@ -119,6 +128,15 @@ int cli_parse_method(const char *cmd, const char *val, int *method);
  * budget), after one line naming the count (for subdivision, refused while its trees are built: the
  * line gives the budget); CLI_INPUT or CLI_INTERNAL when the library fails. */
 int cli_tessellate(const char *cmd, const bs_surface *s, const bs_tess_options *o, size_t budget, bs_mesh **out);
+
+/* Default budget of render --closest, in steps (tools/budget.c): 0.1 to 0.5 microseconds each
+ * (docs/cli.md), so 10 to 50 s of work; 100000 points on bicubic patches take 13 million. */
+#define CLI_RENDER_MAX_QUERY_WORK ((size_t)100000000)
+/* Parse the value of --max-query-work (0: no budget); CLI_OK, or CLI_USAGE after the message. */
+int cli_parse_query_budget(const char *cmd, const char *val, size_t *budget);
+/* CLI_OK when n closest points on s fit the budget (0: no budget), else CLI_INPUT after one line
+ * naming the estimated work, the patch degrees that price it and the flag that raises it. */
+int cli_query_budget(const char *cmd, const bs_surface *s, size_t n, size_t budget);
 
 /* "v0", "u1", "v1", "u0" for BS_SIDE_*. */
 const char *cli_side_name(int side);

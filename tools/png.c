@@ -104,7 +104,7 @@ static unsigned char *zlib_stream(const unsigned char *raw, size_t n, size_t *z_
     return z;
 }
 
-int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h)
+int png_write_rgb_file(FILE *f, const unsigned char *rgb, size_t w, size_t h)
 {
     errno = EINVAL;
     if (w == 0 || h == 0 || w > 0x7fffffffu / 3 || h > 0x7fffffffu)
@@ -134,23 +134,30 @@ int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h
     ihdr[11] = 0; /* filter method */
     ihdr[12] = 0; /* no interlace */
     static const unsigned char sig[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-    out_file o;
-    int rc = 0;
-    if (strcmp(path, "-") == 0) { /* standard output */
-        errno = 0;
-        int ok = fwrite(sig, 1, 8, stdout) == 8 && chunk(stdout, "IHDR", ihdr, 13) && chunk(stdout, "IDAT", z, k) &&
-                 chunk(stdout, "IEND", NULL, 0) && fflush(stdout) == 0;
-        rc = ok ? 0 : -1;
-        if (!ok && errno == 0)
-            errno = EIO;
-    } else if ((rc = out_open(path, &o)) == 0) {
-        errno = 0;
-        int ok = fwrite(sig, 1, 8, o.f) == 8 && chunk(o.f, "IHDR", ihdr, 13) && chunk(o.f, "IDAT", z, k) &&
-                 chunk(o.f, "IEND", NULL, 0);
-        rc = out_close(&o, ok);
-    }
+    errno = 0;
+    int ok = fwrite(sig, 1, 8, f) == 8 && chunk(f, "IHDR", ihdr, 13) && chunk(f, "IDAT", z, k) &&
+             chunk(f, "IEND", NULL, 0);
+    if (!ok && errno == 0)
+        errno = EIO;
     int e = errno;
     free(z);
     errno = e;
-    return rc;
+    return ok ? 0 : -1;
+}
+
+int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h)
+{
+    if (strcmp(path, "-") == 0) { /* standard output */
+        if (png_write_rgb_file(stdout, rgb, w, h) != 0)
+            return -1;
+        errno = 0;
+        if (fflush(stdout) == 0)
+            return 0;
+        errno = errno ? errno : EIO;
+        return -1;
+    }
+    out_file o;
+    if (out_open(path, &o) != 0)
+        return -1;
+    return out_close(&o, png_write_rgb_file(o.f, rgb, w, h) == 0);
 }

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /* CRC-32 (ISO 3309, as PNG uses it) of n bytes, continued from crc (start with 0). */
 uint32_t png_crc32(uint32_t crc, const unsigned char *p, size_t n);
@@ -16,5 +17,8 @@ uint32_t png_adler32(uint32_t adler, const unsigned char *p, size_t n);
  * (tools/outfile.h: the old file stays as it was unless the whole new one was written). 0 on
  * success, -1 with errno set if the file cannot be written (EINVAL: the size is out of range). */
 int png_write_rgb(const char *path, const unsigned char *rgb, size_t w, size_t h); /* "-": stdout */
+
+/* The same bytes written to f (not flushed): 0, or -1 with errno set. */
+int png_write_rgb_file(FILE *f, const unsigned char *rgb, size_t w, size_t h);
 
 #endif

@@ -62,5 +62,37 @@ check "[ ! -e '$work/big.png' ]" "no picture when refused"
 expect 2 "render under a small budget" -- "$tool" render --size 32x32 --ss 1 --max-triangles 100 -o "$work/s.png"
 expect 0 "render with a budget it fits" -- "$tool" render --size 32x32 --ss 1 -r 0.01 --max-triangles 0 -o "$work/s.png"
 
+# The closest points of render --closest: a point costs (m+1)(n+1)(m+n+2) steps for patches of
+# degree m x n, the default budget is 100,000,000 steps. A degree-64 rational patch (150 KB) costs
+# 549,250 steps, a third of a second, a point: 100,000 of them (hours) are refused at once, as
+# are 183 (one over the budget; 182 would fit).
+awk 'BEGIN {
+    print 1
+    print "64 64 w"
+    for (i = 0; i <= 64; i++)
+        for (j = 0; j <= 64; j++)
+            printf "%.6f %.6f %.6f %.4f\n", i / 32 - 1, j / 32 - 1,
+                0.3 * sin(7 * (i / 32 - 1)) * cos(5 * (j / 32 - 1)), 1 + 0.5 * sin(3 * i + 5 * j)
+}' >"$work/r64.bpt"
+expect 0 "render --help" -- "$tool" render --help
+has out "--max-query-work N" "render help names the query budget"
+expect 1 "bad query budget" -- "$tool" render --max-query-work 1e8
+has err "bad query work" "bad query budget message"
+limit=10
+expect 2 "100000 closest points on degree 64 refused" -- "$tool" render --closest 100000 -o "$work/q.png" "$work/r64.bpt"
+has err "--closest 100000 would take about 54925000000 steps of work (549250 a point on patches of degree 64x64), more than the budget of 100000000 (--max-query-work N raises it, 0 removes it)" \
+    "query refusal names the work, the degrees and the flag"
+check "[ ! -e '$work/q.png' ] && [ ! -s '$work/out' ]" "nothing written when the queries are refused"
+expect 2 "183 closest points on degree 64 refused" -- "$tool" render --closest 183 -o "$work/q.png" "$work/r64.bpt"
+has err "about 100512750 steps" "one point over the query budget"
+# the teapot (bicubic: 128 steps a point): the budget is inclusive, 0 removes it
+expect 2 "one step over a query budget" -- "$tool" render --size 32x32 --ss 1 --closest 1000 --max-query-work 127999 -o "$work/q.png"
+has err "about 128000 steps of work (128 a point on patches of degree 3x3), more than the budget of 127999" "teapot's work"
+expect 0 "exactly at a query budget" -- "$tool" render --size 32x32 --ss 1 --closest 1000 --max-query-work 128000 -o "$work/q.png"
+expect 0 "100000 points on the teapot by default" -- "$tool" render --size 32x32 --ss 1 --closest 100000 -o "$work/q.png"
+limit=60
+expect 0 "no query budget" -- "$tool" render --size 32x32 --ss 1 -r 0.05 --closest 2 --max-query-work 0 -o "$work/q.png" "$work/r64.bpt"
+check "[ -s '$work/q.png' ]" "queries without a budget drawn"
+
 echo "test_cli_budget: $checks checks, $fails failures"
 [ "$fails" -eq 0 ]
