@@ -1,5 +1,6 @@
 /*
- * The IGES reader's records and parameter fields (iges_records.c), used by iges_read.c. Private
+ * The IGES readers' records and parameter fields (iges_records.c), used by iges_read.c and the
+ * model reader (iges_model.h). Private
  * to lib/io/; not installed. docs/formats.md describes the subset read.
  */
 #ifndef BEZSURF_IO_IGES_H
@@ -51,6 +52,10 @@ bs_status bsi_iges_field(const iges *g, iges_stream *s, iges_field *f);
  * integer in [lo, hi] (an empty field is 0); what names it in the error message. */
 bs_status bsi_iges_real(const iges *g, iges_stream *s, const char *what, double *x, iges_field *f);
 bs_status bsi_iges_int(const iges *g, iges_stream *s, const char *what, long lo, long hi, long *x);
+/* The parameter data of the directory entry whose first record is D record de (its fields 2 and
+ * 14), the back pointer of each of its P records checked to name that entry: BS_ERR_PARSE when
+ * the records lie outside the P section or one names another entry. */
+bs_status bsi_iges_open(const iges *g, size_t de, iges_stream *s);
 /* Integer field f (1..20) of the directory entry whose first record is D record de: BS_ERR_PARSE
  * when it is not blank or an integer. */
 bs_status bsi_iges_de_field(const iges *g, size_t de, int f, long *x);

@@ -8,8 +8,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define P_BACK 64 /* 0-based column of a P record's back pointer to its directory entry */
-
 bs_status bsi_igm_fail(igm *m, size_t s, int f, const char *fmt, ...)
 {
     char msg[96];
@@ -51,34 +49,10 @@ bs_status bsi_igm_name(igm *m, size_t s, bs_status st)
 
 bs_status bsi_igm_open(igm *m, size_t s, iges_stream *st)
 {
-    const iges *g = &m->g;
-    long ptr, lines;
-    bs_status r = bsi_iges_de_field(g, 2 * s, 2, &ptr);
-    if (r == BS_OK)
-        r = bsi_iges_de_field(g, 2 * s, 14, &lines);
-    if (r != BS_OK)
-        return bsi_igm_name(m, s, r);
-    size_t np = g->count[IGES_P];
-    if (ptr < 1 || (size_t)ptr > np)
-        return bsi_igm_fail(m, s, 2, "parameter data pointer outside the P section");
-    if (lines < 1 || (size_t)lines > np - (size_t)ptr + 1)
-        return bsi_igm_fail(m, s, 14, "parameter line count outside the P section");
-    st->first = g->first[IGES_P] + (size_t)ptr - 1;
-    st->nrec = (size_t)lines;
-    st->width = 64;
-    st->pos = 0;
-    st->ended = 0;
-    for (size_t k = 0; k < st->nrec; k++) { /* columns 65-72 name the directory entry */
-        const char *t = g->text + g->rec[st->first + k] + P_BACK;
-        size_t a = 0, b = 8, back;
-        while (a < b && t[a] == ' ')
-            a++;
-        if (bsi_parse_size(t + a, b - a, 99999999, &back) <= 0 || back != 2 * s + 1)
-            return bsi_igm_name(m, s, bsi_fail(g->err, st->first + k + 1, P_BACK + 1,
-                                               "P record's back pointer is not DE %zu", 2 * s + 1));
-    }
     long type;
-    r = bsi_iges_int(g, st, "the entity type of the directory entry", m->slot[s].type, m->slot[s].type, &type);
+    bs_status r = bsi_iges_open(&m->g, 2 * s, st);
+    if (r == BS_OK)
+        r = bsi_iges_int(&m->g, st, "the entity type of the directory entry", m->slot[s].type, m->slot[s].type, &type);
     return bsi_igm_name(m, s, r);
 }
 

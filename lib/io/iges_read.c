@@ -20,24 +20,9 @@ static bs_status fail_de(const iges *g, size_t de, int f, const char *msg)
 /* The parameter data of the entity at D record de, its first field (the type) checked. */
 static bs_status entity_stream(const iges *g, size_t de, long type, iges_stream *s)
 {
-    long ptr, lines;
-    bs_status st = bsi_iges_de_field(g, de, 2, &ptr);
-    if (st == BS_OK)
-        st = bsi_iges_de_field(g, de, 14, &lines);
-    if (st != BS_OK)
-        return st;
-    size_t np = g->count[IGES_P];
-    if (ptr < 1 || (size_t)ptr > np)
-        return fail_de(g, de, 2, "parameter data pointer outside the P section");
-    if (lines < 1 || (size_t)lines > np - (size_t)ptr + 1)
-        return fail_de(g, de, 14, "parameter line count outside the P section");
-    s->first = g->first[IGES_P] + (size_t)ptr - 1;
-    s->nrec = (size_t)lines;
-    s->width = 64;
-    s->pos = 0;
-    s->ended = 0;
     long t;
-    return bsi_iges_int(g, s, "the entity type of the directory entry", type, type, &t);
+    bs_status st = bsi_iges_open(g, de, s);
+    return st != BS_OK ? st : bsi_iges_int(g, s, "the entity type of the directory entry", type, type, &t);
 }
 
 /* The fields after those read, up to the record delimiter (optional pointers): checked, not used. */

@@ -9,6 +9,7 @@
 
 #define IGES_LETTER 72 /* 0-based column of the section letter */
 #define IGES_WIDTH 80
+#define IGES_BACK 64 /* 0-based column of a P record's back pointer to its directory entry */
 
 static bs_status fail_rec(const iges *g, size_t rec, size_t col, const char *msg)
 {
@@ -241,6 +242,39 @@ bs_status bsi_iges_de_field(const iges *g, size_t de, int f, long *x)
         b--;
     if (!parse_long(t + a, b - a, -99999999L, 99999999L, x))
         return fail_rec(g, rec, col + a + 1, "expected an integer in a directory entry field");
+    return BS_OK;
+}
+
+bs_status bsi_iges_open(const iges *g, size_t de, iges_stream *s)
+{
+    long ptr, lines;
+    bs_status st = bsi_iges_de_field(g, de, 2, &ptr);
+    if (st == BS_OK)
+        st = bsi_iges_de_field(g, de, 14, &lines);
+    if (st != BS_OK)
+        return st;
+    size_t np = g->count[IGES_P], rec = g->first[IGES_D] + de;
+    if (ptr < 1 || (size_t)ptr > np)
+        return fail_rec(g, rec, 9, "parameter data pointer outside the P section");
+    if (lines < 1 || (size_t)lines > np - (size_t)ptr + 1)
+        return fail_rec(g, rec + 1, 25, "parameter line count outside the P section");
+    s->first = g->first[IGES_P] + (size_t)ptr - 1;
+    s->nrec = (size_t)lines;
+    s->width = 64;
+    s->pos = 0;
+    s->ended = 0;
+    /* Records that name another entry are refused, so entries cannot share parameter data: the
+     * 1.1 reader would parse it once per entry (padded with blanks, size x entries). */
+    for (size_t k = 0; k < s->nrec; k++) {
+        const char *t = g->text + g->rec[s->first + k] + IGES_BACK;
+        size_t a = 0, back;
+        while (a < 8 && t[a] == ' ')
+            a++;
+        if (bsi_parse_size(t + a, 8 - a, 99999999, &back) <= 0 || back != de + 1) {
+            (void)bsi_fail(g->err, s->first + k + 1, IGES_BACK + 1, "P record's back pointer is not DE %zu", de + 1);
+            return BS_ERR_PARSE;
+        }
+    }
     return BS_OK;
 }
 

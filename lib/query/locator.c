@@ -30,11 +30,14 @@ static void quarter(const double *net, size_t m, size_t n, size_t nc, int dir, u
 }
 
 /* The 16 leaves of patch i: nets (Cartesian points and weights) at L->nets + first net, and
- * their boxes padded by the rounding of the halvings and pad (absolute). */
+ * their boxes padded by the rounding of the halvings and pad (absolute). A patch of scale sig
+ * (not 1) is cut from its scaled copy, its boxes divided by sig and rounded outwards. */
 static void cut_patch(bs_locator *L, uint32_t i, size_t *leaf, size_t *net_at, double *hom,
                       double *tmp, double *leaf_box, double pad)
 {
-    const bs_patch *p = L->patches[i];
+    double sig;
+    const bs_patch *p = bsi_loc_patch(L, i, &sig);
+    pad = sig != 1.0 ? fmin(DBL_MAX, pad * sig) : pad;
     size_t m = p->deg_u, n = p->deg_v, nc = p->dim + 1, dim = p->dim, len = p->nctrl * nc;
     double *quarter_u = hom + len, *sub = quarter_u + len;
     hom_net(p, hom);
@@ -67,6 +70,10 @@ static void cut_patch(bs_locator *L, uint32_t i, size_t *leaf, size_t *net_at, d
             for (size_t c = 0; c < dim; c++) {
                 lo[c] -= pad + 64 * DBL_EPSILON * big;
                 hi[c] += pad + 64 * DBL_EPSILON * big;
+                if (sig != 1.0) {
+                    lo[c] = nextafter(lo[c] / sig, -INFINITY);
+                    hi[c] = nextafter(hi[c] / sig, INFINITY);
+                }
             }
             *net_at += len;
             ++*leaf;
@@ -93,6 +100,22 @@ static double surface_diagonal(bs_patch *const *patches, size_t np, size_t dim)
     return fmin(DBL_MAX, 2.0 * s);
 }
 
+/* The scaled copies of the patches beyond 2^1000 or below 2^-1000 (L->scaled), for rays. */
+static bs_status scale_extremes(bs_locator *L)
+{
+    bs_status st = BS_OK;
+    for (size_t i = 0; i < L->npatch && st == BS_OK; i++) {
+        double sig = L->dim == 3 ? bsi_extreme_scale(L->patches[i], 1000) : 1.0;
+        if (sig == 1.0)
+            continue;
+        if (L->scaled == NULL && (L->scaled = calloc(L->npatch, sizeof *L->scaled)) == NULL)
+            return BS_ERR_NO_MEMORY;
+        L->scaled[i].sig = sig;
+        st = bsi_scaled_patch(L->patches[i], sig, &L->scaled[i].copy);
+    }
+    return st;
+}
+
 /* Leaves, their nets and the hierarchy of a locator whose patches are copied. */
 static bs_status build(bs_locator *L)
 {
@@ -110,8 +133,10 @@ static bs_status build(bs_locator *L)
     L->nets = malloc(nets * sizeof(double)); // NOLINT(clang-analyzer-optin.portability.UnixAPI): nets > 0
     double *leaf_box = malloc(L->nleaf * 2 * dim * sizeof(double));
     double *work = malloc(4 * max_len * sizeof(double)); // NOLINT(clang-analyzer-optin.portability.UnixAPI): max_len > 0
-    bs_status st = BS_ERR_NO_MEMORY;
-    if (L->leaves && L->nets && leaf_box && work) {
+    bs_status st = scale_extremes(L);
+    if (st == BS_OK && !(L->leaves && L->nets && leaf_box && work))
+        st = BS_ERR_NO_MEMORY;
+    if (st == BS_OK) {
         size_t leaf = 0, net_at = 0;
         for (uint32_t i = 0; i < L->npatch; i++)
             cut_patch(L, i, &leaf, &net_at, work, work + 3 * max_len, leaf_box, 1e-12 * L->diag);
@@ -119,8 +144,10 @@ static bs_status build(bs_locator *L)
     }
     if (st == BS_OK && dim == 3) {
         st = (L->nscale = malloc(L->npatch * sizeof *L->nscale)) ? BS_OK : BS_ERR_NO_MEMORY;
-        for (size_t i = 0; st == BS_OK && i < L->npatch; i++)
-            bsi_normal_scale(L->patches[i], &L->nscale[i]);
+        for (size_t i = 0; st == BS_OK && i < L->npatch; i++) {
+            double sig;
+            bsi_normal_scale(bsi_loc_patch(L, i, &sig), &L->nscale[i]);
+        }
     }
     free(work);
     free(leaf_box);
@@ -170,6 +197,9 @@ void bs_locator_destroy(bs_locator *L)
     free(L->box);
     free(L->leaf_box);
     free(L->nscale);
+    for (size_t i = 0; L->scaled && i < L->npatch; i++)
+        bs_patch_destroy(L->scaled[i].copy);
+    free(L->scaled);
     if (L->trim)
         L->trim->release(L->trim);
     free(L);

@@ -55,6 +55,15 @@ struct bsi_loc_trim {
                     double st[2]);
 };
 
+/* A patch beyond 2^1000 or below 2^-1000 (subnormal): sig, the power of two of bsi_extreme_scale
+ * (1 for the others), and its copy times sig (else NULL). Its leaves' nets are stored times sig,
+ * so that they are halved and projected without losing bits, and its normals (nscale) are those
+ * of the copy, as bs_patch_eval_normal takes them. */
+typedef struct bsi_loc_scaled {
+    double sig;
+    bs_patch *copy;
+} bsi_loc_scaled;
+
 struct bs_locator {
     size_t dim;          /* 0 for an empty surface */
     size_t npatch, nleaf, nnode;
@@ -67,8 +76,18 @@ struct bs_locator {
     double *box;         /* node k: lower corner box[2*k*dim ...], upper corner right after */
     double *leaf_box;    /* leaf k's box, as node boxes: tested before its net is projected */
     bsi_nscale *nscale;  /* per patch, for its normals (3-D locators): bsi_normal_scale's once */
+    bsi_loc_scaled *scaled; /* per patch; NULL when every patch lies within [2^-1000, 2^1000] */
     bsi_loc_trim *trim;  /* NULL, or the trimmed faces of a model's locator (owned) */
 };
+
+/* Patch i as rays and their normals take it: its scaled copy (*sig its scale) beyond 2^1000 or
+ * below 2^-1000, else itself (*sig = 1). */
+static inline const bs_patch *bsi_loc_patch(const bs_locator *L, size_t i, double *sig)
+{
+    const bsi_loc_scaled *ext = L->scaled ? &L->scaled[i] : NULL;
+    *sig = ext && ext->copy ? ext->sig : 1.0;
+    return ext && ext->copy ? ext->copy : L->patches[i];
+}
 
 /* Halve a net of (m+1) x (n+1) points of nc interleaved doubles at the parameter 1/2 along dir
  * (BS_DIR_U: along i, the rows) into lo and hi (either may be NULL). Only midpoints (a+b)/2 are

@@ -157,6 +157,17 @@ static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_
     }
 }
 
+/* (pos / sig - o).d, formed in the units of pos (a patch's scaled copy) while o sig is finite, so
+ * that a subnormal patch's hit keeps its bits. */
+static double hit_t(const bsi_ray *ray, const double pos[3], double sig)
+{
+    double a[3], os[3] = {ray->o[0] * sig, ray->o[1] * sig, ray->o[2] * sig};
+    int far = !bsi_all_finite(os, 3); /* a patch below 2^-1000 seen from beyond 2^23 */
+    for (int c = 0; c < 3; c++)
+        a[c] = far ? pos[c] / sig - ray->o[c] : pos[c] - os[c];
+    return far ? bsi_dot3(a, ray->d) : bsi_dot3(a, ray->d) / sig;
+}
+
 /* Outputs of ray k: the hit, or a miss with t = tmiss (+Inf, or NaN for an invalid ray). */
 static void put(const bs_locator *L, size_t k, const bsi_ray *ray, const double len[2],
                 const bsi_ray_hit *hit, double tmiss, uint32_t *patch, const bs_view *uv,
@@ -172,11 +183,12 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, const double 
         id = leaf->patch;
         u = leaf->u0 + hit->s * side;
         v = leaf->v0 + hit->r * side;
-        /* bs_patch_eval_normal's bits, with the patch's normal scale made once */
-        bsi_eval_normal_one(L->patches[id], &L->nscale[id], u, v, pos, nv, &kd);
-        double a[3] = {pos[0] - ray->o[0], pos[1] - ray->o[1], pos[2] - ray->o[2]};
+        /* bs_patch_eval_normal's bits, with the patch's normal scale made once (of its scaled
+         * copy beyond 2^1000 or below 2^-1000, and pos that copy's) */
+        double sig;
+        bsi_eval_normal_one(bsi_loc_patch(L, id, &sig), &L->nscale[id], u, v, pos, nv, &kd);
         /* t of the point reported, kept within the range the hit was found in */
-        tt = fmin(DBL_MAX, fmin(ray->tmax, fmax(ray->tmin, bsi_dot3(a, ray->d))) / len[0] / len[1]);
+        tt = fmin(DBL_MAX, fmin(ray->tmax, fmax(ray->tmin, hit_t(ray, pos, sig))) / len[0] / len[1]);
         if (L->trim) { /* a model's: its face, native parameters and outward normal */
             double fuv[2];
             L->trim->to_face(L->trim, id, u, v, &id, fuv, nv);

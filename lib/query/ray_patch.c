@@ -24,6 +24,7 @@
 
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
 #define POLE_DEPTH 40  /* the same for pieces halved across a pole (2^-42 of the patch) */
@@ -233,17 +234,17 @@ SPECIALISE void nearest_corner(const double *net, size_t m, size_t n, int rat, d
     }
 }
 
-/* The leaf's net in the ray's frame, and its box as near_origin makes it (rbox: lower corner,
- * upper corner); returns the largest |P - o| coordinate. (w times each product: for a polynomial
- * net w = 1, and the product itself is the same bits.) */
-SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *ray, double *out,
-                          double rbox[6])
+/* The leaf's net in the ray's frame from origin o, and its box as near_origin makes it (rbox:
+ * lower corner, upper corner); returns the largest |P - o| coordinate. (w times each product: for
+ * a polynomial net w = 1, and the product itself is the same bits.) */
+SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *ray, const double o[3],
+                          double *out, double rbox[6])
 {
     double big = 0.0, lo0 = INFINITY, lo1 = INFINITY, lo2 = INFINITY;
     double hi0 = -INFINITY, hi1 = -INFINITY, hi2 = -INFINITY;
     for (size_t k = 0; k < np; k++) {
         const double *p = net + k * NC;
-        double a[3] = {p[0] - ray->o[0], p[1] - ray->o[1], p[2] - ray->o[2]}, w = p[3];
+        double a[3] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]}, w = p[3];
         double *q = out + k * NC, inv = rat ? 1.0 / w : 1.0;
         q[0] = rat ? w * bsi_dot3(a, ray->e1) : bsi_dot3(a, ray->e1);
         q[1] = rat ? w * bsi_dot3(a, ray->e2) : bsi_dot3(a, ray->e2);
@@ -327,7 +328,7 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
 }
 
-/* 1 when the largest |P - o| of a leaf is within [2^-256, 2^256], else the power of two that
+/* 1 when the largest |P - o| of a leaf is within [2^-64, 2^64], else the power of two that
  * brings it near 1: the products of Newton's step, of the cones and of the hull test are then
  * formed without overflow or underflow (rays at surfaces beyond about 1e77 or below 1e-77 from
  * their origin missed), and the scaling is exact. The usual range keeps its bits. */
@@ -360,10 +361,22 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     const bs_patch *p = L->patches[leaf->patch];
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
-    double rbox[6], big = project(L->nets + leaf->net, np, rat, ray, root, rbox);
-    /* the leaf's frame scaled by sig at extreme distances: lengths below are scaled, t as well
-     * (t / sig is the ray's) */
-    double sig = leaf_scale(big), diag = L->diag;
+    /* the net of a patch beyond 2^1000 or below 2^-1000 is stored times ps, and o is taken alike */
+    const double *net0 = L->nets + leaf->net;
+    double ps;
+    (void)bsi_loc_patch(L, leaf->patch, &ps);
+    double o[3] = {ray->o[0] * ps, ray->o[1] * ps, ray->o[2] * ps};
+    if (!bsi_all_finite(o, 3)) { /* a patch below 2^-1000 seen from beyond 2^23: the ray's units */
+        for (size_t q = 0; q < len; q++)
+            half[0][q] = q % NC < 3 ? net0[q] / ps : net0[q];
+        net0 = half[0];
+        ps = 1.0;
+        memcpy(o, ray->o, sizeof o);
+    }
+    double rbox[6], big = project(net0, np, rat, ray, o, root, rbox);
+    /* the leaf's frame scaled by sig at extreme distances: lengths below are the ray's times
+     * ps sig, t as well (t / sig / ps is the ray's) */
+    double sig = leaf_scale(big), diag = fmin(DBL_MAX, L->diag * ps);
     if (sig != 1.0) {
         for (size_t q = 0; q < np; q++)
             for (size_t c = 0; c < 3; c++)
@@ -373,7 +386,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         big *= sig;
         diag = fmin(DBL_MAX, diag * sig);
     }
-    double tmin = ray->tmin * sig;
+    double tmin = ray->tmin * ps * sig;
     /* rounding of the projection and of the halvings, and the distance accepted as a hit */
     double tol = 1e-13 * diag + 256 * DBL_EPSILON * big;
     double accept = 1e-11 * diag + 1024 * DBL_EPSILON * big, floor_dist = 4 * DBL_EPSILON * big;
@@ -384,7 +397,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     for (int looked = 0; top > 0 && looked < BUDGET; looked++) {
         pending e = stack[--top];
         double *net = e.slot < 0 ? root : slot + (size_t)e.slot * len, lo[3], hi[3];
-        double tmax = lesser(hit->t, ray->tmax) * sig;
+        double tmax = lesser(hit->t, ray->tmax) * ps * sig;
         if (e.slot >= 0)
             free_slot[nfree++] = e.slot;
         int near;
@@ -409,8 +422,8 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         bilinear_start(net, m, n, rat, &e, &s, &r);
         int found = newton(root, m, n, rat, &e, s, r, floor_dist, accept, &s, &r, &t, g);
         found |= within <= accept && isfinite(t); /* every point of the piece is near enough */
-        if (found && wanted(ray, t / sig, hit->t) && inside_trim(L, leaf, s, r)) {
-            hit->t = t / sig;
+        if (found && wanted(ray, t / sig / ps, hit->t) && inside_trim(L, leaf, s, r)) {
+            hit->t = t / sig / ps;
             hit->s = s;
             hit->r = r;
             hit->leaf = k;

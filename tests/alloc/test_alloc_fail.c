@@ -387,15 +387,27 @@ static bs_status op_add_bspline(void)
 /* The locator: made from the teapot, then rays and closest points through one made beforehand
  * (LOC), their outputs in the shared buffers. */
 static bs_locator *LOC;
-static bs_status op_locator_create(void)
+static bs_status locator_create(const bs_surface *s)
 {
     bs_locator *L = (bs_locator *)(void *)HSENT;
-    bs_status st = bs_locator_create(TEAPOT, &L);
+    bs_status st = bs_locator_create(s, &L);
     if (st != BS_OK)
         CHECK(L == NULL);
     else
         bs_locator_destroy(L);
     return st;
+}
+
+static bs_status op_locator_create(void)
+{
+    return locator_create(TEAPOT);
+}
+
+/* A locator of patches below 2^-1000 and beyond 2^1000 keeps their scaled copies. */
+static bs_surface *EXTREME;
+static bs_status op_locator_create_extreme(void)
+{
+    return locator_create(EXTREME);
 }
 
 static const double ray_o[3][4] = {{5, -5, 0.5, 9}, {0, 0.5, 0.2, 9}, {1, 1.5, 9, 9}};
@@ -472,6 +484,7 @@ static const op ops[] = {
     {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
     {"bs_surface_tessellate (subdivide, count)", op_tessellate_subdivide, 0},
     {"bs_locator_create", op_locator_create, 0},
+    {"bs_locator_create (extreme scales)", op_locator_create_extreme, 0},
     {"bs_locator_intersect", op_locator_intersect, 1},
     {"bs_locator_closest_point", op_locator_closest, 1},
     {"bs_model_from_surface", op_model_from_surface, 0},
@@ -484,6 +497,16 @@ int main(void)
     CHECK_STATUS(bs_patch_elevate(R, 10, 12, &HIGH), BS_OK);
     CHECK_STATUS(bs_surface_create_builtin("teapot", &TEAPOT), BS_OK);
     CHECK_STATUS(bs_locator_create(TEAPOT, &LOC), BS_OK);
+    CHECK_STATUS(bs_surface_create(&EXTREME), BS_OK);
+    for (int e = 0; e < 3; e++) { /* 1, 2^-1060, 2^1015 */
+        double sc[27];
+        bs_patch *q = NULL;
+        for (int k = 0; k < 27; k++)
+            sc[k] = ldexp(net3[k], e == 0 ? 0 : e == 1 ? -1060 : 1015);
+        CHECK_STATUS(bs_patch_create(2, 2, 3, sc, NULL, &q), BS_OK);
+        CHECK_STATUS(bs_surface_add(EXTREME, q, NULL), BS_OK);
+        bs_patch_destroy(q);
+    }
     CHECK_STATUS(bs_surface_write_bpt(TEAPOT, NULL, 0, &teapot_len), BS_OK);
     teapot_text = malloc(teapot_len);
     CHECK_STATUS(bs_surface_write_bpt(TEAPOT, teapot_text, teapot_len, &teapot_len), BS_OK);
@@ -521,6 +544,7 @@ int main(void)
     free(teapot_text);
     bs_locator_destroy(LOC);
     bs_surface_destroy(TEAPOT);
+    bs_surface_destroy(EXTREME);
     bs_patch_destroy(P);
     bs_patch_destroy(R);
     bs_patch_destroy(HIGH);

@@ -290,6 +290,8 @@ static void test_errors(void)
     SPOIL(memmove(t + 5 * L, t + 7 * L, glen - 7 * L + 1), 6, 1, "missing P");
     SPOIL(t[3 * L + 15] = '9', 4, 9, "P pointer outside");
     SPOIL(t[4 * L + 31] = '7', 5, 25, "P line count outside");
+    SPOIL(t[5 * L + 71] = '3', 6, 65, "P record pointing back at DE 3");
+    SPOIL(t[6 * L + 71] = ' ', 7, 65, "P record without a back pointer");
     SPOIL(memcpy(t + 4 * L + 38, "12", 2), 5, 33, "form 12");
     SPOIL(t[3 * L + 6] = 'x', 4, 6, "letter in a directory field");
     {
@@ -534,6 +536,86 @@ static void test_amplified(void)
     CHECKF(m == NULL && strstr(err.message, "4 per byte") != NULL, "%s", err.message);
 }
 
+/* `entries` directory entries of entity 128 that all point at one entity's P records, whose back
+ * pointers name DE 1. */
+static char *shared_iges(const char *params, size_t entries)
+{
+    text t = {NULL, 0, 0};
+    size_t seq_s = 0, seq_g = 0, seq_d = 0, seq_p = 0, lines = (strlen(params) + 63) / 64;
+    put_lines(&t, "built by test_iges", 72, "", 'S', &seq_s);
+    put_lines(&t, GLOBAL, 72, "", 'G', &seq_g);
+    for (size_t k = 0; k < entries; k++) {
+        char d[96];
+        (void)snprintf(d, sizeof d, "%8d%8d%8d%8d%8d%8d%8d%8d%8s", 128, 1, 0, 0, 0, 0, 0, 0, "00000000");
+        put_lines(&t, d, 72, "", 'D', &seq_d);
+        (void)snprintf(d, sizeof d, "%8d%8d%8d%8zu%8d%8s%8s%8s%8d", 128, 0, 0, lines, 0, "", "", "", 0);
+        put_lines(&t, d, 72, "", 'D', &seq_d);
+    }
+    put_lines(&t, params, 64, "       1", 'P', &seq_p);
+    char term[80];
+    (void)snprintf(term, sizeof term, "S%07zuG%07zuD%07zuP%07zu", seq_s, seq_g, seq_d, seq_p);
+    put_lines(&t, term, 72, "", 'T', &(size_t){0});
+    return t.buf;
+}
+
+/* Both readers refuse the text at the back pointer of DE 3's first P record (line). */
+static void expect_shared_refused(const char *t, size_t line, const char *what)
+{
+    bs_parse_error err = {0, 0, ""};
+    bs_surface *s = (bs_surface *)&err;
+    bs_model *m = (bs_model *)&err;
+    bs_status st = parse(t, &err, &s);
+    CHECKF(st == BS_ERR_PARSE && s == NULL && err.line == line && err.column == 65 &&
+               strcmp(err.message, "P record's back pointer is not DE 3") == 0,
+           "%s: status %d at %zu:%zu: %s", what, st, err.line, err.column, err.message);
+    bs_surface_destroy(st == BS_OK ? s : NULL);
+    st = bs_model_read_iges(t, strlen(t), &err, &m);
+    CHECKF(st == BS_ERR_PARSE && m == NULL && err.line == line && err.column == 65 &&
+               strcmp(err.message, "entity 128 (DE 3): P record's back pointer is not DE 3") == 0,
+           "%s (model): status %d at %zu:%zu: %s", what, st, err.line, err.column, err.message);
+}
+
+/* Parameter data shared by many directory entries would be parsed once per entry: an entity
+ * padded with 500,000 blanks under 100 entries (650 KB, 50 MB of blanks to scan; 5.6 MB of these
+ * took 66 s) and a 100 x 100 linear B-spline under 200 entries (157 KB once made 1.9 million
+ * patches) are refused at the second entry. The padded entity alone reads. */
+static void test_shared_parameters(void)
+{
+    static const char head[] = "128,1,1,1,1,0,0,1,0,0,",
+                      tail[] = "0,0,1,1,0,0,1,1,1,1,1,1,0,0,0,1,0,0,0,1,0,1,1,1,0,1,0,1;";
+    size_t pad = 500000, n = 100;
+    char *params = malloc(sizeof head + pad + sizeof tail);
+    memcpy(params, head, sizeof head - 1);
+    memset(params + sizeof head - 1, ' ', pad);
+    memcpy(params + sizeof head - 1 + pad, tail, sizeof tail);
+    char *t = shared_iges(params, 1);
+    bs_surface *s = NULL;
+    CHECK_STATUS(parse(t, NULL, &s), BS_OK);
+    CHECK(s != NULL && bs_surface_count(s) == 1);
+    bs_surface_destroy(s);
+    free(t);
+    t = shared_iges(params, n);
+    expect_shared_refused(t, 1 + 2 + 2 * n + 1, "blank-padded entity under 100 entries");
+    free(t);
+    free(params);
+    enum { C = 100 };
+    double knots[C + 2], *ctrl = malloc(3 * C * C * sizeof *ctrl), range[4] = {0, C - 1, 0, C - 1};
+    for (size_t k = 0; k < C + 2; k++)
+        knots[k] = k == 0 ? 0.0 : k > C ? (double)(C - 1) : (double)(k - 1);
+    for (size_t i = 0; i < C * C; i++) {
+        ctrl[3 * i] = (double)(i / C);
+        ctrl[3 * i + 1] = (double)(i % C);
+        ctrl[3 * i + 2] = (double)(i / C * (i % C) % 3);
+    }
+    bs_bspline b = {1, 1, C, C, 3, knots, knots, ctrl, NULL};
+    params = params_128(&b, range, ',', ';');
+    t = shared_iges(params, 200);
+    expect_shared_refused(t, 1 + 2 + 2 * 200 + 1, "100 x 100 B-spline under 200 entries");
+    free(t);
+    free(params);
+    free(ctrl);
+}
+
 int main(void)
 {
     make_nets();
@@ -550,5 +632,6 @@ int main(void)
     test_files();
     test_no_bspline();
     test_amplified();
+    test_shared_parameters();
     return bs_test_exit("test_iges");
 }

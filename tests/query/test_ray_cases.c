@@ -5,6 +5,7 @@
  * bs_patch_eval_normal's kind at the hit: limit normals at the teapot's poles, undefined on a
  * patch collapsed to a point. */
 #include "harness.h"
+#include "shapes.h"
 #include "reference.h"
 
 #include <bezsurf.h>
@@ -31,24 +32,13 @@ static bs_status shoot(const bs_locator *L, const double o[3], const double d[3]
     return bs_locator_intersect_kind(L, 1, ov, dv, NULL, &r->id, uv, &tv, nv, &r->kind);
 }
 
-static bs_locator *locator_of_patch(const bs_patch *p)
-{
-    bs_surface *s = NULL;
-    bs_locator *L = NULL;
-    CHECK_STATUS(bs_surface_create(&s), BS_OK);
-    CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
-    CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
-    bs_surface_destroy(s);
-    return L;
-}
-
 /* The unit square z = 0 seen from z = 1 with directions (0, 0, -len). */
 static void lengths(void)
 {
     double ctrl[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0};
     bs_patch *p = NULL;
     CHECK_STATUS(bs_patch_create(1, 1, 3, ctrl, NULL, &p), BS_OK);
-    bs_locator *L = p ? locator_of_patch(p) : NULL;
+    bs_locator *L = p ? shape_locator(p) : NULL;
     if (L == NULL) {
         bs_patch_destroy(p);
         return;
@@ -199,7 +189,7 @@ static void kinds(void)
     double ctrl[12] = {1, 2, 3, 1, 2, 3, 1, 2, 3, 1, 2, 3};
     bs_patch *p = NULL;
     CHECK_STATUS(bs_patch_create(1, 1, 3, ctrl, NULL, &p), BS_OK);
-    L = p ? locator_of_patch(p) : NULL;
+    L = p ? shape_locator(p) : NULL;
     if (L != NULL) {
         double o[3] = {1, 2, 5}, d[3] = {0, 0, -1};
         ray_out r;

@@ -8,6 +8,7 @@
  * (points and weights), so that S_u vanishes along all of u = 1 (a cusp edge); its rays next to
  * that side were missed. */
 #include "harness.h"
+#include "shapes.h"
 
 #include <bezsurf.h>
 #include <math.h>
@@ -97,22 +98,11 @@ static void shoot(const bs_locator *L, const bs_patch *p, double u, double v, do
     CHECKF(ok, "%s: (u,v) = (%.17g, %.17g), h = %g: patch %u t = %.17g", what, u, v, h, id, t);
 }
 
-static bs_locator *locator_of(const bs_patch *p)
-{
-    bs_surface *s = NULL;
-    bs_locator *L = NULL;
-    CHECK_STATUS(bs_surface_create(&s), BS_OK);
-    CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
-    CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
-    bs_surface_destroy(s);
-    return L;
-}
-
 /* Points 2^-k from the u = 1 pole, k = 8 .. 30, at several v, rays from h = 1/128 .. 2 times
  * size above them. */
 static void sweep(const bs_patch *p, double size, const double *vs, int nvs, const char *what)
 {
-    bs_locator *L = locator_of(p);
+    bs_locator *L = shape_locator(p);
     if (L == NULL)
         return;
     for (int k = 8; k <= 30; k += bs_test_quick() ? 7 : 1)

@@ -1,11 +1,15 @@
-/* Scale invariance: a patch and its copies scaled by 2^e, e from -1000 to 1000, give the same
+/* Scale invariance: a patch and its copies scaled by 2^e, e from -1000 to 1020, give the same
  * normals and normal kinds, the same curvature kinds and curvatures scaled by 2^-e, closest
  * distances (through the patch and through a locator) scaled by 2^e, and rays that hit the
- * scaled point at the scaled t; the hostile boxes (tests/hostile/huge_box, tiny_box,
- * subnormal_box) tessellate with a relative tolerance into the unit box's mesh and normals.
- * Before 1.2: normals (0,0,0) beyond 1e154 and below 1e-162, no closest point through a locator
- * beyond 1e154, rays missing at 1e-170 and 1e200, 2 triangles for huge_box. */
+ * scaled point at the scaled t, at the same (u, v), with the same normals (bs_patch_eval_normal's
+ * bits); rays hit subnormal copies (2^-1030 .. 2^-1060) as they hit the same net scaled back to
+ * unit size; the hostile boxes (tests/hostile/huge_box, tiny_box, subnormal_box) tessellate with
+ * a relative tolerance into the unit box's mesh and normals. Before 1.2: normals (0,0,0) beyond
+ * 1e154 and below 1e-162, no closest point through a locator beyond 1e154, rays missing at
+ * 1e-170 and 1e200, 2 triangles for huge_box; ray hit normals beyond 2^1000 a few ulps off
+ * bs_patch_eval_normal's and subnormal copies missed. */
 #include "harness.h"
+#include "shapes.h"
 
 #include <bezsurf.h>
 #include <math.h>
@@ -30,7 +34,29 @@ typedef struct answers {
     unsigned char kind, ck;
     uint32_t id;
     bs_status st;
+    double uv[2], rn[3], pn[3]; /* the ray hit's (u, v) and normal, bs_patch_eval_normal's there */
+    unsigned char rk, pk;       /* their kinds */
 } answers;
+
+/* The ray o + t d against L, a locator of p alone: its patch, (u, v), t, normal and kind into a,
+ * and bs_patch_eval_normal's normal and kind at that (u, v). */
+static void ray(const bs_locator *L, const bs_patch *p, const double o[3], const double d[3], answers *a)
+{
+    bs_cview ov[3] = {{&o[0], 1, 0}, {&o[1], 1, 0}, {&o[2], 1, 0}};
+    bs_cview dw[3] = {{&d[0], 1, 0}, {&d[1], 1, 0}, {&d[2], 1, 0}};
+    bs_view tv = {&a->t, 1, 0}, uvv[2] = {{&a->uv[0], 1, 0}, {&a->uv[1], 1, 0}};
+    bs_view rnv[3] = {{&a->rn[0], 1, 0}, {&a->rn[1], 1, 0}, {&a->rn[2], 1, 0}};
+    CHECK_STATUS(bs_locator_intersect_kind(L, 1, ov, dw, NULL, &a->id, uvv, &tv, rnv, &a->rk), BS_OK);
+    bs_cview hu = {&a->uv[0], 1, 0}, hv = {&a->uv[1], 1, 0};
+    bs_view pnv[3] = {{&a->pn[0], 1, 0}, {&a->pn[1], 1, 0}, {&a->pn[2], 1, 0}};
+    CHECK_STATUS(bs_patch_eval_normal(p, 1, &hu, &hv, NULL, pnv, &a->pk), BS_OK);
+}
+
+/* The ray hit's normal is bs_patch_eval_normal's, bit for bit. */
+static int same_normal(const answers *a)
+{
+    return a->rk == a->pk && a->rn[0] == a->pn[0] && a->rn[1] == a->pn[1] && a->rn[2] == a->pn[2];
+}
 
 static void query(const bs_patch *p, double s, answers *a)
 {
@@ -45,11 +71,7 @@ static void query(const bs_patch *p, double s, answers *a)
     bs_cview qv[3] = {{&q[0], 1, 0}, {&q[1], 1, 0}, {&q[2], 1, 0}};
     bs_view dv = {&a->d, 1, 0}, dl = {&a->dl, 1, 0};
     a->st = bs_patch_closest_point(p, 1, qv, NULL, &dv, NULL);
-    bs_surface *S = NULL;
-    bs_locator *L = NULL;
-    CHECK_STATUS(bs_surface_create(&S), BS_OK);
-    CHECK_STATUS(bs_surface_add(S, p, NULL), BS_OK);
-    CHECK_STATUS(bs_locator_create(S, &L), BS_OK);
+    bs_locator *L = shape_locator(p);
     CHECK_STATUS(bs_locator_closest_point(L, 1, qv, NULL, NULL, &dl, NULL), a->st);
     /* a ray down the normal from 0.5 s above the point */
     double o[3], d[3];
@@ -57,12 +79,8 @@ static void query(const bs_patch *p, double s, answers *a)
         o[c] = x[c] + 0.5 * s * a->nrm[c];
         d[c] = -a->nrm[c];
     }
-    bs_cview ov[3] = {{&o[0], 1, 0}, {&o[1], 1, 0}, {&o[2], 1, 0}};
-    bs_cview dw[3] = {{&d[0], 1, 0}, {&d[1], 1, 0}, {&d[2], 1, 0}};
-    bs_view tv = {&a->t, 1, 0};
-    CHECK_STATUS(bs_locator_intersect(L, 1, ov, dw, NULL, &a->id, NULL, &tv, NULL), BS_OK);
+    ray(L, p, o, d, a);
     bs_locator_destroy(L);
-    bs_surface_destroy(S);
 }
 
 static void copies(int rational)
@@ -77,7 +95,7 @@ static void copies(int rational)
     CHECK(ref.kind == BS_NORMAL_REGULAR && ref.ck == BS_CURV_REGULAR && ref.st == BS_OK && ref.id == 0);
     int worst_e = 0;
     double worst = 0.0;
-    for (int e = -1000; e <= 1020; e += e == 1000 ? 20 : bs_test_quick() ? 100 : 20) {
+    for (int e = -1000; e <= 1020; e += e >= 1000 ? 5 : bs_test_quick() ? 100 : 20) {
         double s = ldexp(1.0, e);
         for (int k = 0; k < 48; k++)
             sc[k] = ctrl[k] * s;
@@ -98,6 +116,13 @@ static void copies(int rational)
                ldexp(a.dl, -e), ref.d);
         CHECKF(a.id == 0 && fabs(ldexp(a.t, -e) - ref.t) <= 1e-12, "2^%d: ray patch %u t %g, %g expected", e,
                a.id, ldexp(a.t, -e), ref.t);
+        double rn = fabs(a.rn[0] - ref.rn[0]) + fabs(a.rn[1] - ref.rn[1]) + fabs(a.rn[2] - ref.rn[2]);
+        /* beyond 2^1000 from the scaled copy: the unit copy's bits */
+        int bits = rn == 0.0 && a.uv[0] == ref.uv[0] && a.uv[1] == ref.uv[1];
+        CHECKF(same_normal(&a) && a.rk == ref.rk && rn <= 1e-13 && (e <= 1000 || bits) &&
+                   fabs(a.uv[0] - ref.uv[0]) + fabs(a.uv[1] - ref.uv[1]) <= 1e-12,
+               "2^%d: ray hit normal kind %d (the patch's %d), off by %g, at (%.17g, %.17g), (%.17g, %.17g) "
+               "expected", e, a.rk, a.pk, rn, a.uv[0], a.uv[1], ref.uv[0], ref.uv[1]);
         double off = fabs(ldexp(a.d, -e) - ref.d);
         if (off > worst) {
             worst = off;
@@ -107,6 +132,57 @@ static void copies(int rational)
     }
     printf("%s: scaled copies 2^-1000 .. 2^1020 agree (closest distances within %.2g, at 2^%d)\n",
            rational ? "rational" : "polynomial", worst, worst_e);
+}
+
+/* Rays at a subnormal copy of the net (2^e, e from -1030 to -1060: 44 to 14 bits left) and at
+ * that copy scaled back to unit size (exactly): the same patch, the same (u, v) and normal bit
+ * for bit, t scaled to within the copy's last bits (rounded to them). A ray from 2^30 away hits
+ * the subnormal copy too. */
+static void subnormal(int rational)
+{
+    double ctrl[48], w[16], sc[48], unit[48];
+    net(ctrl, w);
+    for (int e = -1030; e >= -1060; e -= 15) {
+        for (int k = 0; k < 48; k++) {
+            sc[k] = ldexp(ctrl[k], e);
+            unit[k] = ldexp(sc[k], -e);
+        }
+        bs_patch *p = NULL, *q = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, sc, rational ? w : NULL, &p), BS_OK);
+        CHECK_STATUS(bs_patch_create(3, 3, 3, unit, rational ? w : NULL, &q), BS_OK);
+        if (p == NULL || q == NULL)
+            continue;
+        /* down the unit copy's normal at (0.3, 0.7) from 0.5 above, the origin in the copy's bits */
+        double u = 0.3, v = 0.7, x[3], n[3], o[3], ou[3], d[3];
+        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+        bs_view xv[3] = {{&x[0], 1, 0}, {&x[1], 1, 0}, {&x[2], 1, 0}};
+        bs_view nv[3] = {{&n[0], 1, 0}, {&n[1], 1, 0}, {&n[2], 1, 0}};
+        CHECK_STATUS(bs_patch_eval_normal(q, 1, &cu, &cv, xv, nv, NULL), BS_OK);
+        for (int c = 0; c < 3; c++) {
+            o[c] = ldexp(x[c] + 0.5 * n[c], e);
+            ou[c] = ldexp(o[c], -e);
+            d[c] = -n[c];
+        }
+        answers a, b;
+        bs_locator *L = shape_locator(p), *M = shape_locator(q);
+        ray(L, p, o, d, &a);
+        ray(M, q, ou, d, &b);
+        double quantum = ldexp(1.0, -1074 - e); /* the copy's last bit, at unit size */
+        double rn = fabs(a.rn[0] - b.rn[0]) + fabs(a.rn[1] - b.rn[1]) + fabs(a.rn[2] - b.rn[2]);
+        CHECKF(a.id == 0 && b.id == 0 && fabs(ldexp(a.t, -e) - b.t) <= 2 * quantum && same_normal(&a) &&
+                   a.rk == b.rk && rn == 0.0 && a.uv[0] == b.uv[0] && a.uv[1] == b.uv[1],
+               "2^%d: patch %u t %.17g (u,v) (%.17g, %.17g) normal off by %g; unit copy: patch %u t %.17g "
+               "(u,v) (%.17g, %.17g)", e, a.id, ldexp(a.t, -e), a.uv[0], a.uv[1], rn, b.id, b.t, b.uv[0], b.uv[1]);
+        for (int c = 0; c < 3; c++)
+            o[c] = 0x1p30 * n[c];
+        ray(L, p, o, d, &a);
+        bs_locator_destroy(L);
+        bs_locator_destroy(M);
+        CHECKF(a.id == 0 && fabs(a.t - 0x1p30) <= 0x1p-20 && same_normal(&a), "2^%d from 2^30: patch %u t %.17g",
+               e, a.id, a.t);
+        bs_patch_destroy(p);
+        bs_patch_destroy(q);
+    }
 }
 
 /* The hostile boxes: a relative tolerance gives the unit box's triangles and normals. */
@@ -151,6 +227,8 @@ int main(void)
 {
     copies(0);
     copies(1);
+    subnormal(0);
+    subnormal(1);
     boxes();
     return bs_test_exit("test_scale");
 }

@@ -1,7 +1,9 @@
-/* Exact rational surfaces (radius r about the z axis) and the scale D of a surface, shared by the
- * query tests. */
+/* Exact rational surfaces (radius r about the z axis), the scale D of a surface and the locator
+ * of one patch, shared by the query tests. */
 #ifndef BS_TEST_SHAPES_H
 #define BS_TEST_SHAPES_H
+
+#include "harness.h"
 
 #include <bezsurf.h>
 
@@ -68,6 +70,18 @@ static inline double shape_diagonal(const bs_surface *s)
     for (size_t c = 0; c < dim; c++)
         d = hypot(d, hi[c] - lo[c]);
     return d;
+}
+
+/* A locator of patch p alone (it keeps its own copy); each step checked. */
+static inline bs_locator *shape_locator(const bs_patch *p)
+{
+    bs_surface *s = NULL;
+    bs_locator *L = NULL;
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
+    CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
+    CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
+    bs_surface_destroy(s);
+    return L;
 }
 
 #endif
