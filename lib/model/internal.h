@@ -268,8 +268,9 @@ int bsi_trim_search_closest(const bsi_trim_search *ts, const double *q, double *
 int bsi_trim_is_seam(const bs_model *m, size_t f, size_t t);
 
 /* ---- Sewing (sew.c): trims without an edge whose 3-D images coincide within tol become one
- * edge; called by bsi_model_finish. BS_ERR_NO_MEMORY. ---- */
-bs_status bsi_model_sew(bs_model *m, double tol);
+ * edge, closed trims left over within loose_tol; called by bsi_model_finish.
+ * BS_ERR_NO_MEMORY. ---- */
+bs_status bsi_model_sew(bs_model *m, double tol, double loose_tol);
 
 /* ---- Computed parameter-space curves (pcurve.c) ---- */
 /* The trim on face f's surface of the 3-D curve edge over its whole range, from certified closest

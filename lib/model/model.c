@@ -221,8 +221,10 @@ static int trim_degenerate(const bs_model *m, size_t f, const bsi_trim *t, doubl
 
 bs_status bsi_model_finish(bs_model *m)
 {
-    double tol = 1e-7 * bsi_model_diagonal(m);
-    bs_status st = bsi_model_sew(m, tol);
+    /* trims within 1e-7 D are one edge; closed ones (holes) left over within 2e-3 D too, the
+     * gap the tessellator closes (tess_edges.c, LOOSE_GAP) */
+    double diag = bsi_model_diagonal(m), tol = 1e-7 * diag;
+    bs_status st = bsi_model_sew(m, tol, 2e-3 * diag);
     if (st != BS_OK)
         return st;
     unsigned char *closed = malloc(m->nshell ? m->nshell : 1);

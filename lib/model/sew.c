@@ -9,9 +9,11 @@
  * trim is joined at most once, first come first served in the order of the keys below; a trim
  * whose image is one point (a pole, a collapsed side) gets no edge. Closed trims (a hole's whole
  * loop in one trim) left over are matched again by their images alone, as the two sides may start
- * the loop at different points. Not joined: trims split differently on the two sides (one trim
- * along two of the neighbour's: their ends differ), and a third trim along an edge already joined
- * (non-manifold); their faces' shells are then open.
+ * the loop at different points; closed trims still left over, once more within loose_tol (a
+ * file may write a hole's two trims that far apart: block.igs, 6.3e-4 D; the tessellator moves
+ * such an edge's vertices to where its faces meet). Not joined: trims split differently on the
+ * two sides (one trim along two of the neighbour's: their ends differ), and a third trim along
+ * an edge already joined (non-manifold); their faces' shells are then open.
  *
  * Cost: each trim gets a key that does not depend on its direction (the sum of the coordinates of
  * both end points), trims are sorted by key, and only trims whose keys differ by at most 6 tol
@@ -46,7 +48,9 @@ static double dist3(const double *a, const double *b)
 /* The trim's 3-D point at fraction x of its parameter range: 1, or 0 outside its face. */
 static int trim_point(const bs_model *m, size_t f, const bsi_curve *c, double x, double *p)
 {
-    double t = c->axis.breaks[0] + x * (c->axis.breaks[c->axis.n] - c->axis.breaks[0]), s;
+    double t0 = c->axis.breaks[0], t1 = c->axis.breaks[c->axis.n], s;
+    /* the end itself at x = 1 (t0 + (t1 - t0) may round past t1, off the axis) */
+    double t = x >= 1.0 ? t1 : t0 + x * (t1 - t0);
     size_t k;
     if (c->dim != 2 || !bsi_axis_locate(&c->axis, t, &k, &s))
         return 0;
@@ -182,13 +186,15 @@ static int same_loop(const bs_model *m, const sew_trim *st, size_t i, size_t j, 
     return trim_point(m, b->face, &m->trims[j].uv, 0.5, p) && near_image(m, a, &m->trims[i], p, 0.5, tol);
 }
 
-/* Closed trims left unpaired (a hole's loop and the neighbour's, started at different points):
- * sorted by the low x of their sample boxes, compared while the boxes can overlap. */
-static size_t pair_loops(const bs_model *m, sew_trim *st, sew_key *keys, size_t *pair, double tol)
+/* Trims left unpaired that are closed within closed_tol (a hole's loop and the neighbour's,
+ * started at different points), matched within tol: sorted by the low x of their sample boxes,
+ * compared while the boxes can overlap. */
+static size_t pair_loops(const bs_model *m, sew_trim *st, sew_key *keys, size_t *pair, double closed_tol,
+                         double tol)
 {
     size_t T = m->ntrim, nk = 0, npair = 0;
     for (size_t t = 0; t < T; t++)
-        if (!st[t].skip && pair[t] == T && dist3(st[t].a, st[t].b) <= tol && sample_box(m, t, &st[t])) {
+        if (!st[t].skip && pair[t] == T && dist3(st[t].a, st[t].b) <= closed_tol && sample_box(m, t, &st[t])) {
             keys[nk].key = st[t].lo[0];
             keys[nk++].trim = t;
         }
@@ -224,7 +230,7 @@ static void describe(const bs_model *m, size_t f, size_t t, double tol, sew_trim
 }
 
 
-bs_status bsi_model_sew(bs_model *m, double tol)
+bs_status bsi_model_sew(bs_model *m, double tol, double loose_tol)
 {
     size_t T = m->ntrim;
     if (T < 2)
@@ -265,7 +271,8 @@ bs_status bsi_model_sew(bs_model *m, double tol)
             }
         }
     }
-    npair += pair_loops(m, st, keys, pair, tol);
+    npair += pair_loops(m, st, keys, pair, tol, tol);
+    npair += pair_loops(m, st, keys, pair, tol, loose_tol);
     /* the edges first, then the trims: on failure the model is as before */
     size_t before = m->nedge;
     bs_status status = BS_OK;

@@ -148,7 +148,7 @@ static void test_cube(void)
     bs_model *r = cube(0, 0);
     r->trims[1].uv.hom[0] = 1.0 + 1e-12;
     r->trims[3].uv.hom[3] = -1e-12;
-    CHECK(bsi_model_sew(r, 1e-7) == BS_OK);
+    CHECK(bsi_model_sew(r, 1e-7, 1e-7) == BS_OK);
     CHECKF(r->nedge == 12 && joined(r) == 24, "rounded ends: %zu edges", r->nedge);
     bs_model_destroy(r);
     /* one side split in two on one face only: those three trims are not joined */
@@ -157,7 +157,7 @@ static void test_cube(void)
     CHECKF(m->nedge == 11 && joined(m) == 22 && edges_paired(m), "split: %zu edges", m->nedge);
     CHECK(bs_model_shell_closed(m, 0) == 0);
     /* sewing again changes nothing: every trim left is unmatched */
-    CHECK(bsi_model_sew(m, 1e-7) == BS_OK && m->nedge == 11);
+    CHECK(bsi_model_sew(m, 1e-7, 1e-7) == BS_OK && m->nedge == 11);
     bs_model_destroy(m);
 }
 
@@ -232,10 +232,13 @@ static void test_bulge(void)
     CHECK(bs_patch_create(2, 2, 3, ctrl, NULL, &b) == BS_OK);
     add_square(m, b, 0, 0);
     bs_patch_destroy(b);
-    CHECK(bsi_model_sew(m, 1e-6) == BS_OK);
+    CHECK(bsi_model_sew(m, 1e-6, 1e-6) == BS_OK);
+    CHECK(m->nedge == 0 && joined(m) == 0);
+    /* the loose tolerance is for closed trims only */
+    CHECK(bsi_model_sew(m, 1e-6, 2e-3) == BS_OK);
     CHECK(m->nedge == 0 && joined(m) == 0);
     /* within a looser tolerance they are one */
-    CHECK(bsi_model_sew(m, 2e-3) == BS_OK);
+    CHECK(bsi_model_sew(m, 2e-3, 2e-3) == BS_OK);
     CHECK(m->nedge == 1 && m->trims[1].edge == 0 && m->trims[7].edge == 0);
     bs_model_destroy(m);
 }
@@ -261,7 +264,7 @@ static void test_speed(void)
     t[3].uv.degree = 2;
     add_face(m, b, t, 4, 0);
     bs_patch_destroy(b);
-    CHECK(bsi_model_sew(m, 1e-7) == BS_OK);
+    CHECK(bsi_model_sew(m, 1e-7, 1e-7) == BS_OK);
     CHECK(m->nedge == 1 && m->trims[1].edge == 0 && m->trims[7].edge == 0);
     bs_model_destroy(m);
 }
@@ -289,14 +292,9 @@ static bsi_trim circle_trim(double a0, int ccw)
     return t;
 }
 
-/* A plate with a round hole and the plug filling it, each side of the hole one closed trim
- * starting at a different point: joined by their images. */
-static void test_hole(void)
+/* A plate over the patch p (trims 0..4) with a round hole (its trim 4, starting at angle 0). */
+static void add_plate_with_hole(bs_model *m, const bs_patch *p)
 {
-    bs_model *m = NULL;
-    CHECK(bsi_model_create(&m) == BS_OK);
-    const double c11[3] = {2, 2, 0.5};
-    bs_patch *p = bilinear(V[0], V[1], V[2], c11);
     bsi_trim plate[5] = {seg(0, 0, 1, 0), seg(1, 0, 1, 1), seg(1, 1, 0, 1), seg(0, 1, 0, 0), circle_trim(0.0, 0)};
     bsi_face_spec spec;
     memset(&spec, 0, sizeof spec);
@@ -307,6 +305,17 @@ static void test_hole(void)
     spec.loop_len = lens;
     spec.nloop = 2;
     CHECK(bsi_model_add_face(m, &spec, NULL) == BS_OK);
+}
+
+/* A plate with a round hole and the plug filling it, each side of the hole one closed trim
+ * starting at a different point: joined by their images. */
+static void test_hole(void)
+{
+    bs_model *m = NULL;
+    CHECK(bsi_model_create(&m) == BS_OK);
+    const double c11[3] = {2, 2, 0.5};
+    bs_patch *p = bilinear(V[0], V[1], V[2], c11);
+    add_plate_with_hole(m, p);
     bsi_trim plug[1] = {circle_trim(2.0, 1)};
     add_face(m, p, plug, 1, 0);
     bs_patch_destroy(p);
@@ -316,9 +325,32 @@ static void test_hole(void)
     bsi_trim other[1] = {circle_trim(1.0, 1)};
     add_face(m, p, other, 1, 0);
     bs_patch_destroy(p);
-    CHECK(bsi_model_sew(m, 1e-7) == BS_OK);
+    CHECK(bsi_model_sew(m, 1e-7, 1e-7) == BS_OK);
     CHECKF(m->nedge == 1 && m->trims[4].edge == 0 && m->trims[5].edge == 0, "hole: %zu edges", m->nedge);
     CHECK(m->trims[6].edge == BSI_NO_EDGE);
+    bs_model_destroy(m);
+}
+
+/* The plate with a hole, and the plug of a plate 1e-3 higher (a file's trims of one hole written
+ * apart): joined only within the loose tolerance. */
+static void test_hole_apart(void)
+{
+    bs_model *m = NULL;
+    CHECK(bsi_model_create(&m) == BS_OK);
+    const double c11[3] = {2, 2, 0.5};
+    bs_patch *p = bilinear(V[0], V[1], V[2], c11);
+    add_plate_with_hole(m, p);
+    bs_patch_destroy(p);
+    const double l00[3] = {0, 0, 1e-3}, l10[3] = {2, 0, 1e-3}, l01[3] = {0, 2, 1e-3}, l11[3] = {2, 2, 0.5 + 1e-3};
+    p = bilinear(l00, l10, l01, l11);
+    bsi_trim plug[1] = {circle_trim(2.0, 1)};
+    add_face(m, p, plug, 1, 0);
+    bs_patch_destroy(p);
+    CHECK(bsi_model_sew(m, 1e-7, 5e-4) == BS_OK);
+    CHECKF(m->nedge == 0, "hole 1e-3 apart at 5e-4: %zu edges", m->nedge);
+    CHECK(bsi_model_sew(m, 1e-7, 2e-3) == BS_OK);
+    CHECKF(m->nedge == 1 && m->trims[4].edge == 0 && m->trims[5].edge == 0, "hole 1e-3 apart at 2e-3: %zu edges",
+           m->nedge);
     bs_model_destroy(m);
 }
 
@@ -348,7 +380,7 @@ static void test_grid(void)
     size_t N = bs_test_quick() ? 20 : 100;
     bs_model *m = grid(N);
     clock_t c0 = clock();
-    CHECK(bsi_model_sew(m, 1e-6) == BS_OK);
+    CHECK(bsi_model_sew(m, 1e-6, 1e-6) == BS_OK);
     double secs = (double)(clock() - c0) / CLOCKS_PER_SEC;
     printf("  grid of %zu faces, %zu trims: %zu edges sewn in %.3f s\n", N * N, m->ntrim, m->nedge, secs);
     CHECK(m->nedge == 2 * N * (N - 1) && edges_paired(m));
@@ -359,7 +391,7 @@ static void test_small(void)
 {
     bs_model *m = NULL;
     CHECK(bsi_model_create(&m) == BS_OK);
-    CHECK(bsi_model_sew(m, 1e-7) == BS_OK && m->nedge == 0); /* no trims */
+    CHECK(bsi_model_sew(m, 1e-7, 1e-7) == BS_OK && m->nedge == 0); /* no trims */
     CHECK(bsi_model_finish(m) == BS_OK);
     bs_model_destroy(m);
     /* a trim with an edge already is left alone; so is one off its face */
@@ -368,7 +400,7 @@ static void test_small(void)
     CHECK(bsi_model_add_edge(m, &(uint32_t){0}) == BS_OK);
     bsi_curve *c = &m->trims[5].uv;
     c->hom[0] = 7.0; /* starts at u = 7: outside the face */
-    CHECK(bsi_model_sew(m, 1e-7) == BS_OK);
+    CHECK(bsi_model_sew(m, 1e-7, 1e-7) == BS_OK);
     CHECK(m->trims[0].edge == 0 && m->trims[5].edge == BSI_NO_EDGE);
     CHECKF(m->nedge == 11, "%zu edges", m->nedge);
     bs_model_destroy(m);
@@ -381,7 +413,7 @@ static void test_no_memory(void)
     for (size_t n = 1; n < 20; n++) {
         bs_model *m = cube(0, 0);
         fail_in = n;
-        bs_status st = bsi_model_sew(m, 1e-7);
+        bs_status st = bsi_model_sew(m, 1e-7, 1e-7);
         fail_in = 0;
         if (st == BS_OK) {
             CHECK(m->nedge == 12);
@@ -404,6 +436,7 @@ int main(void)
     test_bulge();
     test_speed();
     test_hole();
+    test_hole_apart();
     test_grid();
     test_small();
     test_no_memory();
