@@ -187,12 +187,16 @@ int bsi_grow_array(void **p, size_t *cap, size_t need, size_t size);
 
 /* ---- Normals at single points for the layers above (lib/core/normal.c) ---- */
 
-/* 1 for a net whose largest coordinate lies within [2^-lim, 2^lim] (or is 0), else the power of
- * two (at most 2^1000) that brings it near 1. Beyond 2^1000 and below 2^-1000 the evaluators'
- * first differences overflow or lose their bits, so scale-invariant results (normals, kinds) come
- * from a copy scaled by it (lim = 1000); the curvature's limit rule multiplies partials, and
- * takes the copy beyond 2^256 (lim = 256). (lib/core/normal.c) */
-double bsi_extreme_scale(const bs_patch *p, int lim);
+/* 1 for a net whose largest coordinate lies within [2^-lo, 2^hi] (or is 0), else the power of
+ * two (at most 2^1000) that brings it near 1. Beyond 2^1000 the evaluators' first differences
+ * overflow; below 2^-SMALL_NET the partials at points next to a pole, still served by the
+ * general rule (down to 2^-30 of the net's scale, and the net's differences may be far smaller
+ * than its coordinates), fall into the subnormal range and lose their bits. So scale-invariant
+ * results (normals, kinds, ray hits) come from a copy scaled by it (lo = SMALL_NET, hi = 1000);
+ * the curvature's limit rule multiplies partials, and takes the copy beyond 2^256 (256, 256).
+ * (lib/core/normal.c) */
+#define SMALL_NET 900
+double bsi_extreme_scale(const bs_patch *p, int lo, int hi);
 /* p with its control points times sig (weights kept) into *out; BS_ERR_NO_MEMORY. */
 bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out);
 

@@ -355,12 +355,12 @@ void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, doub
     bsi_normal_block(p, sc, 1, &u, 1, &v, pu, pv, pn, kind);
 }
 
-double bsi_extreme_scale(const bs_patch *p, int lim)
+double bsi_extreme_scale(const bs_patch *p, int lo, int hi)
 {
     double big = 0.0;
     for (size_t k = 0; k < p->nctrl * p->dim; k++)
         big = fmax(big, fabs(p->ctrl[k]));
-    if (!(big > 0.0) || (big >= ldexp(1.0, -lim) && big <= ldexp(1.0, lim)))
+    if (!(big > 0.0) || (big >= ldexp(1.0, -lo) && big <= ldexp(1.0, hi)))
         return 1.0;
     int e = 0;
     (void)frexp(big, &e);
@@ -394,7 +394,7 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     if ((pos && (st = bsi_check_views(pos, 3, n)) != BS_OK) ||
         (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
         return st;
-    double sig = bsi_extreme_scale(p, 1000);
+    double sig = bsi_extreme_scale(p, SMALL_NET, 1000);
     if (sig != 1.0) { /* normals and kinds of the scaled copy, positions of p itself */
         bs_patch *q = NULL;
         if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)

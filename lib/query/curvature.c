@@ -208,7 +208,7 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         (dmin && (st = bsi_check_views(dmin, 3, n)) != BS_OK) ||
         (dmax && (st = bsi_check_views(dmax, 3, n)) != BS_OK))
         return st;
-    double sig = bsi_extreme_scale(p, 256);
+    double sig = bsi_extreme_scale(p, 256, 256);
     if (sig != 1.0) { /* the scaled copy's, with K times sig^2 and H, k_min, k_max times sig */
         bs_patch *q = NULL;
         if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)

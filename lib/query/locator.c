@@ -105,7 +105,7 @@ static bs_status scale_extremes(bs_locator *L)
 {
     bs_status st = BS_OK;
     for (size_t i = 0; i < L->npatch && st == BS_OK; i++) {
-        double sig = L->dim == 3 ? bsi_extreme_scale(L->patches[i], 1000) : 1.0;
+        double sig = L->dim == 3 ? bsi_extreme_scale(L->patches[i], SMALL_NET, 1000) : 1.0;
         if (sig == 1.0)
             continue;
         if (L->scaled == NULL && (L->scaled = calloc(L->npatch, sizeof *L->scaled)) == NULL)

@@ -237,9 +237,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 ctrl[3 * (first + k * step) + c] = ctrl[3 * first + c];
     }
     double s1 = ldexp(1.0, e1), s2 = ldexp(1.0, e2);
+    /* the two copies are one surface unless a coordinate lost bits in the subnormal range: then
+     * their normals and curvatures next to a collapsed side (ill-conditioned there, as eps over
+     * the squared distance) may rightly differ by far more than the comparisons below allow */
+    int exact = 1;
     for (size_t k = 0; k < 3 * np; k++) {
-        ctrl2[k] = ctrl[k] * s2;
-        ctrl[k] *= s1;
+        double unit = ctrl[k];
+        ctrl2[k] = unit * s2;
+        ctrl[k] = unit * s1;
+        exact &= ldexp(ctrl2[k], -e2) == unit && ldexp(ctrl[k], -e1) == unit;
     }
     bs_patch *p = NULL, *p2 = NULL;
     if (bs_patch_create(m, n, 3, ctrl, rational ? wt : NULL, &p) != BS_OK ||
@@ -288,19 +294,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         /* the same kind and normal on the scaled copy (next to a collapsed side the normal is
          * ill-conditioned: two correct evaluations differ by up to eps over the squared distance) */
         int inner = !(flags & 0x1e) || (u >= 1.0 / 32 && u <= 31.0 / 32 && v >= 1.0 / 32 && v <= 31.0 / 32);
-        if (kind != kind2 ||
-            !(fabs(nrm[0] - nrm2[0]) + fabs(nrm[1] - nrm2[1]) + fabs(nrm[2] - nrm2[2]) <= (inner ? 1e-9 : 1e-5)))
+        if (exact && (kind != kind2 || !(fabs(nrm[0] - nrm2[0]) + fabs(nrm[1] - nrm2[1]) + fabs(nrm[2] - nrm2[2]) <=
+                                         (inner ? 1e-9 : 1e-5))))
             fail();
         if (kind != BS_NORMAL_UNDEFINED && !(fabs(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2] - 1.0) <= 1e-12))
             fail();
         if (bs_patch_eval_curvature(p, 1, &cu, &cv, kv, NULL, NULL, &ck) != BS_OK ||
             bs_patch_eval_curvature(p2, 1, &cu, &cv, kv2, NULL, NULL, &ck2) != BS_OK)
             fail();
-        if (ck != ck2)
+        if (exact && ck != ck2)
             fail();
         /* the values where they are well conditioned: next to a collapsed side two correct
          * evaluations may differ by far more than their rounding */
-        if (ck == BS_CURV_REGULAR && !(flags & 0x1e)) {
+        if (exact && ck == BS_CURV_REGULAR && !(flags & 0x1e)) {
             /* k scales by 2^(e2 - e1): compare k_min, k_max with the larger of them as scale */
             double big = fmax(fabs(curv[2]), fabs(curv[3])) + 1.0 / D;
             for (int c = 2; c < 4; c++) { /* equal infinities where the curvature overflows */
@@ -317,7 +323,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             continue;
         double h = ldexp(D, -(int)(rd_byte(&r) % 12)), tau = 1e-9 * D + 0x1p-40 * h;
         double t = ray_down(L, x, nrm, h, tau);
-        double t2 = ray_down(L2, x2, nrm2, ldexp(h, e2 - e1), ldexp(tau, e2 - e1));
+        double t2 = kind2 != BS_NORMAL_REGULAR ? 0.0 : ray_down(L2, x2, nrm2, ldexp(h, e2 - e1), ldexp(tau, e2 - e1));
         (void)t;
         (void)t2;
     }
