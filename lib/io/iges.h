@@ -1,6 +1,6 @@
 /*
- * The IGES readers' records and parameter fields (iges_records.c), used by iges_read.c and the
- * model reader (iges_model.h). Private
+ * The IGES readers' records and parameter fields (iges_records.c) and 124 matrices (iges_matrix.c),
+ * used by iges_read.c and the model reader (iges_model.h). Private
  * to lib/io/; not installed. docs/formats.md describes the subset read.
  */
 #ifndef BEZSURF_IO_IGES_H
@@ -22,7 +22,14 @@ typedef struct iges {
     size_t count[IGES_SECTIONS];     /* its number of records */
     char pdelim, rdelim;             /* parameter and record delimiters of the global section */
     size_t points;                   /* patch control points made so far (BSI_READ_POINTS caps them) */
+    struct iges_124 *mat;            /* 124 matrices by directory entry (bsi_iges_124), or NULL */
 } iges;
+
+/* A 124's 3 x 4 matrix (rows R | T), once parsed. */
+typedef struct iges_124 {
+    double m[12];
+    int read;
+} iges_124;
 
 /* Parameters spread over consecutive records: columns 1..width of records first .. first+nrec-1. */
 typedef struct iges_stream {
@@ -60,18 +67,13 @@ bs_status bsi_iges_open(const iges *g, size_t de, iges_stream *s);
  * when it is not blank or an integer. */
 bs_status bsi_iges_de_field(const iges *g, size_t de, int f, long *x);
 
-/* 1 when the 3 x 3 part of a 124 matrix (rows of 4: R | T) maps space onto a plane or less: its
- * determinant is zero or negligible against its entries (an all-zero rotation was accepted once,
- * collapsing every point to T). */
-static inline int bsi_iges_singular(const double *m)
-{
-    double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-                 m[2] * (m[4] * m[9] - m[5] * m[8]);
-    double big = 0.0;
-    for (int r = 0; r < 3; r++)
-        for (int c = 0; c < 3; c++)
-            big = fabs(m[4 * r + c]) > big ? fabs(m[4 * r + c]) : big;
-    return !(fabs(det) > 1e-12 * big * big * big);
-}
+/* The fields up to the record delimiter (optional pointers): checked, not used. */
+bs_status bsi_iges_rest(const iges *g, iges_stream *s);
+/* The matrix of the 124 whose directory entry starts at D record de (its type checked by the
+ * caller), parsed on its first use and kept: however many entities point at it, a 124 is scanned
+ * once per read. BS_ERR_PARSE (singular: at its field 1) or BS_ERR_NO_MEMORY. */
+bs_status bsi_iges_124(iges *g, size_t de, const double **mat);
+/* Free what reading allocated in g. */
+void bsi_iges_free(iges *g);
 
 #endif

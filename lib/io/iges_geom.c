@@ -1,6 +1,7 @@
-/* IGES curves for models: 124 transformation chains, 100 circular arcs, 104 elliptic arcs, 110
- * lines, 126 B-spline curves and 102 composites, each built once into 3-D pieces (a composite's
- * pieces are its curves' pieces in order) with the transformations of its directory entry. */
+/* IGES curves for models: 124 transformation chains (each 124 parsed once, iges_matrix.c), 100
+ * circular arcs, 104 elliptic arcs, 110 lines, 126 B-spline curves and 102 composites, each built
+ * once into 3-D pieces (a composite's pieces are its curves' pieces in order) with the
+ * transformations of its directory entry. */
 #include "io/iges_model.h"
 
 #include <math.h>
@@ -9,28 +10,6 @@
 #include <string.h>
 
 #define TWO_PI 6.283185307179586
-
-static bs_status read_124(igm *m, size_t s)
-{
-    iges_stream st;
-    iges_field f;
-    double *mat = malloc(12 * sizeof *mat);
-    if (mat == NULL)
-        return BS_ERR_NO_MEMORY;
-    bs_status r = bsi_igm_open(m, s, &st);
-    for (size_t k = 0; k < 12 && r == BS_OK; k++)
-        r = bsi_iges_real(&m->g, &st, "a matrix entry", &mat[k], &f);
-    if (r == BS_OK)
-        r = bsi_igm_rest(m, &st);
-    if (r == BS_OK && bsi_iges_singular(mat))
-        r = bsi_igm_fail(m, s, 1, "transformation matrix (124) is singular");
-    if (r != BS_OK) {
-        free(mat);
-        return bsi_igm_name(m, s, r);
-    }
-    m->slot[s].mat = mat;
-    return BS_OK;
-}
 
 bs_status bsi_igm_matrix(igm *m, size_t s, double *mat)
 {
@@ -47,9 +26,9 @@ bs_status bsi_igm_matrix(igm *m, size_t s, double *mat)
         size_t ts = (size_t)(t - 1) / 2;
         if (m->slot[ts].type != 124)
             return bsi_igm_fail(m, cur, 7, "transformation pointer to entity %ld, not 124", m->slot[ts].type);
-        if (m->slot[ts].mat == NULL && (r = read_124(m, ts)) != BS_OK)
-            return r;
-        const double *a = m->slot[ts].mat;
+        const double *a;
+        if ((r = bsi_iges_124(&m->g, 2 * ts, &a)) != BS_OK)
+            return bsi_igm_name(m, ts, r);
         double out[12];
         for (size_t i = 0; i < 3; i++)
             for (size_t j = 0; j < 4; j++)

@@ -91,11 +91,7 @@ bs_status bsi_igm_typed(igm *m, size_t s, size_t t, long type)
 
 bs_status bsi_igm_rest(igm *m, iges_stream *st)
 {
-    iges_field f;
-    bs_status r = BS_OK;
-    while (r == BS_OK && !st->ended)
-        r = bsi_iges_field(&m->g, st, &f);
-    return r;
+    return bsi_iges_rest(&m->g, st);
 }
 
 static void free_slots(igm *m)
@@ -196,7 +192,7 @@ bs_status bs_model_read_iges(const char *text, size_t len, bs_parse_error *err, 
         st = read_faces(&m);
     free_slots(&m);
     free(m.vals.data);
-    free(m.g.rec);
+    bsi_iges_free(&m.g);
     if (st != BS_OK) {
         bs_model_destroy(m.model);
         return st;

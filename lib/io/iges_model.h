@@ -33,7 +33,7 @@ typedef struct igm_slot {
     bsi_curve *pieces;     /* curves: consecutive 3-D pieces */
     size_t npieces;
     igm_surface *surf;     /* surfaces */
-    double *mat;           /* 124: 3x4 matrix, row-major */
+    double *mat;           /* 116, 123: the point or direction, transformed (124s: iges_matrix.c) */
     long *edge_curve;      /* 504: each edge's curve pointer */
     uint32_t *edge_id;     /* 504: each edge's model edge, BSI_NO_EDGE until used */
     size_t nedge;

@@ -1,5 +1,6 @@
 /* Reading the rational B-spline surfaces (entity 128) of an IGES file, with the transformations
- * (entity 124) their directory entries point to, into Bezier patches (docs/formats.md). */
+ * (entity 124, each parsed once: iges_matrix.c) their directory entries point to, into Bezier
+ * patches (docs/formats.md). */
 #include "io/iges.h"
 
 #include <bezsurf/bspline.h>
@@ -25,18 +26,8 @@ static bs_status entity_stream(const iges *g, size_t de, long type, iges_stream 
     return st != BS_OK ? st : bsi_iges_int(g, s, "the entity type of the directory entry", type, type, &t);
 }
 
-/* The fields after those read, up to the record delimiter (optional pointers): checked, not used. */
-static bs_status rest(const iges *g, iges_stream *s)
-{
-    iges_field f;
-    bs_status st = BS_OK;
-    while (st == BS_OK && !s->ended)
-        st = bsi_iges_field(g, s, &f);
-    return st;
-}
-
 /* Apply the chain of 124 matrices starting at the transformation pointer of entity de. */
-static bs_status transform(const iges *g, size_t de, double *ctrl, size_t n)
+static bs_status transform(iges *g, size_t de, double *ctrl, size_t n)
 {
     long t;
     bs_status st = bsi_iges_de_field(g, de, 7, &t);
@@ -51,24 +42,15 @@ static bs_status transform(const iges *g, size_t de, double *ctrl, size_t n)
         if (type != 124)
             return fail_de(g, de, 7, "transformation pointer to an entity other than 124");
         de = (size_t)t - 1;
-        iges_stream s;
-        iges_field f;
-        double m[12];
-        if ((st = entity_stream(g, de, 124, &s)) != BS_OK)
+        const double *m;
+        if ((st = bsi_iges_124(g, de, &m)) != BS_OK)
             return st;
-        for (size_t k = 0; k < 12 && st == BS_OK; k++)
-            st = bsi_iges_real(g, &s, "a matrix entry", &m[k], &f);
-        if (st == BS_OK)
-            st = rest(g, &s);
-        if (st == BS_OK && bsi_iges_singular(m))
-            return fail_de(g, de, 1, "transformation matrix (124) is singular");
-        for (size_t i = 0; i < n && st == BS_OK; i++) {
-            double x[3] = {ctrl[3 * i], ctrl[3 * i + 1], ctrl[3 * i + 2]};
+        for (size_t i = 0; i < n; i++) {
+            const double x[3] = {ctrl[3 * i], ctrl[3 * i + 1], ctrl[3 * i + 2]};
             for (size_t r = 0; r < 3; r++)
                 ctrl[3 * i + r] = m[4 * r] * x[0] + m[4 * r + 1] * x[1] + m[4 * r + 2] * x[2] + m[4 * r + 3];
         }
-        if (st == BS_OK)
-            st = bsi_iges_de_field(g, de, 7, &t);
+        st = bsi_iges_de_field(g, de, 7, &t);
     }
     return st;
 }
@@ -129,7 +111,7 @@ static bs_status read_128(iges *g, size_t de, bsi_growing *vals, bs_surface *out
         (st = read_reals(g, &s, vals, 3 * n, 0, "a control point coordinate")) != BS_OK)
         return st;
     size_t range_at = s.pos;
-    if ((st = read_reals(g, &s, vals, 4, 0, "the parameter range")) != BS_OK || (st = rest(g, &s)) != BS_OK)
+    if ((st = read_reals(g, &s, vals, 4, 0, "the parameter range")) != BS_OK || (st = bsi_iges_rest(g, &s)) != BS_OK)
         return st;
     const double *val = vals->data, *w = val + nku + nkv, *pts = w + n, *range = pts + 3 * n;
     double *ctrl = malloc(4 * n * sizeof(double));
@@ -219,7 +201,7 @@ bs_status bs_surface_read_iges(const char *text, size_t len, bs_parse_error *err
     if (st == BS_OK && bs_surface_count(s) == 0)
         st = no_bspline(&g);
     free(vals.data);
-    free(g.rec);
+    bsi_iges_free(&g);
     if (st != BS_OK) {
         bs_surface_destroy(s);
         return st;

@@ -245,6 +245,15 @@ bs_status bsi_iges_de_field(const iges *g, size_t de, int f, long *x)
     return BS_OK;
 }
 
+bs_status bsi_iges_rest(const iges *g, iges_stream *s)
+{
+    iges_field f;
+    bs_status st = BS_OK;
+    while (st == BS_OK && !s->ended)
+        st = bsi_iges_field(g, s, &f);
+    return st;
+}
+
 bs_status bsi_iges_open(const iges *g, size_t de, iges_stream *s)
 {
     long ptr, lines;

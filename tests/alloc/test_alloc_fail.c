@@ -275,18 +275,24 @@ static bs_status op_read_obj(void)
 
 static bs_status op_write_obj_file(void) { return bs_surface_write_obj_file(TEAPOT, tmp_path); }
 
-/* An OpenCASCADE file of a B-spline over a sub-range of its knots: spans cut by sub-patches. */
-static bs_status op_read_iges_file(void)
+/* An IGES file whose reading makes `patches` patches. */
+static bs_status read_iges(const char *path, size_t patches)
 {
     bs_surface *s = (bs_surface *)(void *)HSENT;
-    bs_status st = bs_surface_read_iges_file(BS_IGES_FIXTURE, NULL, &s);
+    bs_status st = bs_surface_read_iges_file(path, NULL, &s);
     if (st != BS_OK)
         CHECK(s == NULL);
     else
-        CHECK(bs_surface_count(s) == 6);
+        CHECK(bs_surface_count(s) == patches);
     bs_surface_destroy(s == (bs_surface *)(void *)HSENT ? NULL : s);
     return st;
 }
+
+/* An OpenCASCADE file of a B-spline over a sub-range of its knots: spans cut by sub-patches. */
+static bs_status op_read_iges_file(void) { return read_iges(BS_IGES_FIXTURE, 6); }
+
+/* One whose 128 points at a 124: the cache of parsed 124s allocates too. */
+static bs_status op_read_iges_124(void) { return read_iges(BS_IGES_124_FIXTURE, 1); }
 
 static bs_status op_continuity(void)
 {
@@ -479,6 +485,7 @@ static const op ops[] = {
     {"bs_surface_read_obj", op_read_obj, 0},
     {"bs_surface_write_obj_file", op_write_obj_file, 0},
     {"bs_surface_read_iges_file", op_read_iges_file, 0},
+    {"bs_surface_read_iges_file (124)", op_read_iges_124, 0},
     {"bs_surface_continuity", op_continuity, 0},
     {"bs_surface_tessellate_uniform+write", op_tessellate, 0},
     {"bs_surface_tessellate_adaptive", op_tessellate_adaptive, 0},
