@@ -128,9 +128,8 @@ static int interval_fine(const edge_run *r, const edge_sample *a, const edge_sam
     for (int k = 0; k < 3; k++)
         mid[k] = 0.5 * (a->P[k] + b->P[k]);
     for (size_t i = 0; i < r->n; i++) {
-        double p[3];
-        if (!bsi_face_point(r->j->m, r->c[i].face, 0.5 * (a->uv[i][0] + b->uv[i][0]), 0.5 * (a->uv[i][1] + b->uv[i][1]), p) ||
-            bsi_tm_dist3(p, mid) > half)
+        double p[3], u = 0.5 * (a->uv[i][0] + b->uv[i][0]), v = 0.5 * (a->uv[i][1] + b->uv[i][1]);
+        if (!bsi_face_point(r->j->m, r->c[i].face, u, v, p) || bsi_tm_dist3(p, mid) > half)
             return 0;
     }
     return 1;
@@ -247,7 +246,8 @@ static double master_excess(const edge_run *r)
         if (!bsi_tm_curve_at(&r->c[0], t, ua, P))
             return 0.0;
         double s = bsi_tm_project(&r->c[1], P, r->c[1].t0, r->c[1].t1, 0.5 * (r->c[1].t0 + r->c[1].t1));
-        if (!bsi_tm_curve_at(&r->c[1], s, ub, Q) || !bsi_tm_meet(r->j->m, r->c[0].face, ua, r->c[1].face, ub, 1e-6 * r->j->tol, X))
+        if (!bsi_tm_curve_at(&r->c[1], s, ub, Q) ||
+            !bsi_tm_meet(r->j->m, r->c[0].face, ua, r->c[1].face, ub, 1e-6 * r->j->tol, X))
             return 0.0;
         excess += bsi_tm_dist3(X, P) - bsi_tm_dist3(X, Q);
     }

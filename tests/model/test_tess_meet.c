@@ -45,7 +45,8 @@ int main(void)
         return bs_test_exit("test_tess_meet");
     const double ex[3] = {1, 0, 0}, ey[3] = {0, 1, 0}, ez[3] = {0, 0, 1};
     const double origin[3] = {0, 0, 0}, lifted[3] = {0, 0, 0.5}, up[3] = {0, 0, 1};
-    const double plane_box[4] = {-4, 4, -4, 4}, cyl_box[4] = {0, 2 * PI, -4, 4}, sph_box[4] = {0, 2 * PI, -PI / 2, PI / 2};
+    const double plane_box[4] = {-4, 4, -4, 4}, cyl_box[4] = {0, 2 * PI, -4, 4};
+    const double sph_box[4] = {0, 2 * PI, -PI / 2, PI / 2};
     /* the cylinder's axis is x: its frame (y, z, x), so u = 0 points along y */
     size_t plane = add_face(m, BS_FACE_PLANE, origin, ex, ey, ez, 0.0, plane_box);
     size_t cyl = add_face(m, BS_FACE_CYLINDER, lifted, ey, ez, ex, 1.0, cyl_box);
