@@ -148,6 +148,10 @@ int bsi_surface_def_inverse(const bsi_surface_def *def, const double *p, const d
 
 /* ---- The model (model.c, face_map.c) ---- */
 #define BSI_NO_EDGE UINT32_MAX
+/* How far apart, in units of the model's diagonal, a file may write the two trims of one edge
+ * (a kernel's edge tolerance: block.igs, 6.3e-4): sewing joins closed trims that far apart
+ * (sew.c) and the tessellator gives such an edge one set of vertices (tess_edges.c). */
+#define BSI_LOOSE_GAP 2e-3
 
 typedef struct bsi_trim {
     bsi_curve uv;     /* dim 2, in the face's native parameters */

@@ -221,10 +221,9 @@ static int trim_degenerate(const bs_model *m, size_t f, const bsi_trim *t, doubl
 
 bs_status bsi_model_finish(bs_model *m)
 {
-    /* trims within 1e-7 D are one edge; closed ones (holes) left over within 2e-3 D too, the
-     * gap the tessellator closes (tess_edges.c, LOOSE_GAP) */
+    /* trims within 1e-7 D are one edge; closed ones (holes) left over within BSI_LOOSE_GAP too */
     double diag = bsi_model_diagonal(m), tol = 1e-7 * diag;
-    bs_status st = bsi_model_sew(m, tol, 2e-3 * diag);
+    bs_status st = bsi_model_sew(m, tol, BSI_LOOSE_GAP * diag);
     if (st != BS_OK)
         return st;
     unsigned char *closed = malloc(m->nshell ? m->nshell : 1);

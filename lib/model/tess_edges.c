@@ -25,9 +25,8 @@
 
 /* ---- One edge: its trims, the samples' parameters on each ---- */
 #define MAX_USES 8
-/* Trims of one edge whose ends a file wrote up to this much of the model's diagonal apart (the
- * tolerance of the kernel that wrote them) share its vertices, moved to where the faces meet. */
-#define LOOSE_GAP 2e-3
+/* Trims of one edge whose ends a file wrote up to BSI_LOOSE_GAP apart share its vertices, moved
+ * to where the faces meet. */
 
 /* One sample of an edge: its parameter and (u, v) on each trim, its point and vertex. */
 typedef struct edge_sample {
@@ -42,7 +41,7 @@ typedef struct edge_run {
     size_t n;                   /* trims of the edge (master first) */
     size_t trim[MAX_USES];
     curve3 c[MAX_USES];
-    int loose;                  /* the second trim is apart from the master (LOOSE_GAP) */
+    int loose;                  /* the second trim is apart from the master (BSI_LOOSE_GAP) */
     double end[2][3];           /* the edge's ends */
     double grade[2];            /* the grading at its ends (INFINITY: none) */
     edge_sample *s;             /* samples so far, in the master's order */
@@ -64,7 +63,7 @@ static void meet(const edge_run *r, edge_sample *s)
     double ua[2] = {s->uv[0][0], s->uv[0][1]}, ub[2] = {s->uv[1][0], s->uv[1][1]}, X[3];
     const tm_job *j = r->j;
     if (bsi_tm_meet(j->m, r->c[0].face, ua, r->c[1].face, ub, 1e-6 * j->tol, X) &&
-        bsi_tm_dist3(X, s->P) <= LOOSE_GAP * j->diag) {
+        bsi_tm_dist3(X, s->P) <= BSI_LOOSE_GAP * j->diag) {
         memcpy(s->P, X, sizeof s->P);
         memcpy(s->uv[0], ua, sizeof ua);
         memcpy(s->uv[1], ub, sizeof ub);
@@ -206,7 +205,7 @@ static bs_status store(tm_job *j, edge_run *r)
 }
 
 /* The trims of the edge after the master that share its samples: those whose ends are the
- * master's, or failing any, one within LOOSE_GAP of them; the rest into alone[]. */
+ * master's, or failing any, one within BSI_LOOSE_GAP of them; the rest into alone[]. */
 static void gather_trims(edge_run *r, const size_t *trims, size_t n, edge_sample *first, edge_sample *last,
                          int closed, size_t *alone, size_t *nalone, size_t alone_cap)
 {
@@ -227,7 +226,7 @@ static void gather_trims(edge_run *r, const size_t *trims, size_t n, edge_sample
      * where the faces meet */
     if (r->n == 1 && n == 2 && *nalone == 1) {
         bsi_tm_curve_init(&r->c[1], j, trims[1]);
-        if (match_ends(r, 1, first->P, last->P, closed, LOOSE_GAP * j->diag, &first->par[1],
+        if (match_ends(r, 1, first->P, last->P, closed, BSI_LOOSE_GAP * j->diag, &first->par[1],
                        &last->par[1])) {
             r->trim[r->n++] = trims[1];
             r->loose = 1;
