@@ -8,7 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${TIDY_BUILD:-build-tidy}
 echo "== cppcheck"
-cppcheck --enable=warning,portability,performance --inline-suppr --error-exitcode=1 --std=c99 \
+cppcheck -j 2 --enable=warning,portability,performance --inline-suppr --error-exitcode=1 --std=c99 \
   -Iinclude -Ilib -q --suppress=missingIncludeSystem lib/
 # Configured with clang so that the compile commands hold only flags clang-tidy understands.
 rm -rf "$build"

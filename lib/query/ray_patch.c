@@ -21,6 +21,7 @@
  * its hull shrinks onto the pole until the ray leaves it.
  */
 #include "query/ray_piece.h"
+#include "query/ray_split.h"
 
 #include <float.h>
 #include <math.h>
@@ -266,66 +267,6 @@ SPECIALISE double project(const double *net, size_t np, int rat, const bsi_ray *
     rbox[4] = hi1;
     rbox[5] = hi2;
     return big;
-}
-
-/* The largest distance (max norm of X1, X2, T over W) between the points of the line of the net
- * from index a, count points step apart, and its first point. */
-SPECIALISE double line_span(const double *net, size_t a, size_t count, size_t step, int rat)
-{
-    const double *p0 = net + a * NC;
-    double x0 = WDIV(rat, p0[0], p0[3]), y0 = WDIV(rat, p0[1], p0[3]), z0 = WDIV(rat, p0[2], p0[3]);
-    double span = 0.0;
-    for (size_t k = 1; k < count; k++) {
-        const double *p = net + (a + k * step) * NC;
-        span = greater(span, greater(fabs(WDIV(rat, p[0], p[3]) - x0),
-                                     greater(fabs(WDIV(rat, p[1], p[3]) - y0),
-                                             fabs(WDIV(rat, p[2], p[3]) - z0))));
-    }
-    return span;
-}
-
-/* The largest distance (max norm of X1, X2, T over W) between the points of two lines of the net,
- * from indices a and b, count points step apart. */
-SPECIALISE double lines_apart(const double *net, size_t a, size_t b, size_t count, size_t step, int rat)
-{
-    double gap = 0.0;
-    for (size_t k = 0; k < count; k++) {
-        const double *p = net + (a + k * step) * NC, *q = net + (b + k * step) * NC;
-        for (int c = 0; c < 3; c++)
-            gap = greater(gap, fabs(WDIV(rat, p[c], p[3]) - WDIV(rat, q[c], q[3])));
-    }
-    return gap;
-}
-
-/* 1 if a side of the net along dir (BS_DIR_U: a row, s = 0 or 1) is singular: collapsed to a point,
- * or equal to the next line of the net, where the partial across it vanishes along the whole side
- * (a cusp edge, such as a side whose last two rows of points coincide). Within ext. */
-SPECIALISE int singular_side(const double *net, size_t m, size_t n, int rat, int dir, double ext)
-{
-    size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
-    size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
-    size_t last = deg * next; /* the first point of the side s = 1 (or r = 1) */
-    return line_span(net, 0, count, step, rat) <= ext || line_span(net, last, count, step, rat) <= ext ||
-           lines_apart(net, 0, next, count, step, rat) <= ext ||
-           lines_apart(net, last, last - next, count, step, rat) <= ext;
-}
-
-/* The direction to halve a piece in: BS_DIR_U when a side s = const (a row of the net) is
- * singular (singular_side, within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V
- * for the converse; -2 (both directions, down to POLE_DEPTH) when sides of both kinds are (a
- * corner between two poles), -1 (both, down to MAX_DEPTH) when none is. Next to a cusp edge the
- * map is quadratic across it and Newton's steps are poor until a piece no longer holds the edge:
- * halved across it, a piece a level holds the edge and the one beside it, with a zero near the
- * edge, is regular enough for Newton. */
-SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const double lo[3],
-                          const double hi[3])
-{
-    if (m == 0 || n == 0)
-        return -1;
-    double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
-    int rows = singular_side(net, m, n, rat, BS_DIR_U, ext);
-    int cols = singular_side(net, m, n, rat, BS_DIR_V, ext);
-    return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
 }
 
 /* 1 when the largest |P - o| of a leaf is within [2^-64, 2^64], else the power of two that

@@ -6,7 +6,11 @@
  * with one side collapsed, and the patch of tests/hostile/fuzz_locator_ray_pole_miss.bin: a
  * rational (5,3) patch at 2^-239 whose v = 0 side is a pole and whose last two rows coincide
  * (points and weights), so that S_u vanishes along all of u = 1 (a cusp edge); its rays next to
- * that side were missed. */
+ * that side were missed. Then singular corners, where the first differences of the net along u
+ * and v are parallel (S_u and S_v parallel there, the normal from second derivatives): the patch of
+ * tests/hostile/fuzz_locator_ray_miss_tiny.bin (a polynomial (5,2) net at 2^-1000, most of it two
+ * repeated points, whose ray down the normal at (2^-19, 2^-19) was missed) at that scale and at
+ * 1, and random patches with such a corner, rays from 2^-j D above points 2^-4 .. 2^-27 from it. */
 #include "harness.h"
 #include "shapes.h"
 
@@ -67,6 +71,15 @@ static const double raw3[24][4] = {
 {-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
 {-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125},
 {-1.131959884853339e-72, -1.131959884853339e-72, -1.131959884853339e-72, 0.001953125}};
+
+/* fuzz_locator_ray_miss_tiny.bin: the net times 2^1000 (exact), rows of three points */
+static const double raw4[18][3] = {
+    {-1, -0.6953125, 0.9921875}, {0.9921875, 0.9921875, 0.9921875}, {0.9921875, 0.9921875, 0.9921875},
+    {0.9921875, 0.9921875, 0.9921875}, {0.9921875, 0.9921875, 0.9921875}, {0.9921875, 0.9921875, 0.9921875},
+    {0.9921875, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375},
+    {0.0234375, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375},
+    {0.0234375, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375},
+    {0.0234375, 0.0234375, 0.0234375}, {0.0234375, 0.0234375, 0.0234375}, {0.9921875, 0.9921875, 0.9921875}};
 
 static int rays, misses;
 
@@ -148,6 +161,54 @@ static void reproducers(void)
     bs_patch_destroy(p3);
 }
 
+/* Points 2^-a, 2^-b from the corner (0, 0), a and b in 4 .. 27, rays from size 2^-j above. */
+static void corner_sweep(const bs_patch *p, double size, const char *what)
+{
+    bs_locator *L = shape_locator(p);
+    if (L == NULL)
+        return;
+    int step = bs_test_quick() ? 8 : 3;
+    for (int a = 4; a <= 27; a += step)
+        for (int b = 4; b <= 27; b += step)
+            for (int j = 0; j < 12; j += 3)
+                shoot(L, p, ldexp(1.0, -a), ldexp(1.0, -b), ldexp(size, -j), size, what);
+    bs_locator_destroy(L);
+}
+
+static void singular_corners(int count)
+{
+    double c4[54];
+    for (int e = -1000; e <= 0; e += 1000) {
+        for (int k = 0; k < 18; k++)
+            for (int c = 0; c < 3; c++)
+                c4[3 * k + c] = ldexp(raw4[k][c], e);
+        bs_patch *p4 = NULL;
+        CHECK_STATUS(bs_patch_create(5, 2, 3, c4, NULL, &p4), BS_OK);
+        if (p4 != NULL)
+            corner_sweep(p4, ldexp(2.8, e), e ? "fuzz_locator_ray_miss_tiny at 2^-1000" : "fuzz_locator_ray_miss_tiny");
+        bs_patch_destroy(p4);
+    }
+    for (int t = 0; t < count; t++) { /* S_v parallel to S_u at (0, 0) */
+        size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 1 + (size_t)(bs_test_rand_u64(&rng) % 5);
+        double ctrl[3 * 36], wt[36], lam = bs_test_rand(&rng, -2, 2);
+        int rational = t % 2;
+        for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
+            for (size_t c = 0; c < 3; c++)
+                ctrl[3 * k + c] = bs_test_rand(&rng, -1, 1);
+            wt[k] = rational ? ldexp(1.0, (int)(bs_test_rand_u64(&rng) % 9) - 4) : 1.0;
+        }
+        for (size_t c = 0; c < 3; c++) /* P(0,1) on the line through P(0,0) and P(1,0) */
+            ctrl[3 + c] = ctrl[c] + lam * (ctrl[3 * (n + 1) + c] - ctrl[c]);
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? wt : NULL, &p), BS_OK);
+        char what[64];
+        (void)snprintf(what, sizeof what, "singular corner %d (%zu,%zu)%s", t, m, n, rational ? " rational" : "");
+        if (p != NULL)
+            corner_sweep(p, 2.0, what);
+        bs_patch_destroy(p);
+    }
+}
+
 /* Random patches with the u = 1 side collapsed to one point. */
 static void random_poles(int count)
 {
@@ -180,6 +241,7 @@ int main(void)
 {
     reproducers();
     random_poles(bs_test_quick() ? 6 : 40);
-    printf("%d rays down normals next to poles, %d missed or hit later\n", rays, misses);
+    singular_corners(bs_test_quick() ? 4 : 24);
+    printf("%d rays down normals next to poles and singular corners, %d missed or hit later\n", rays, misses);
     return bs_test_exit("test_ray_poles");
 }

@@ -1,0 +1,105 @@
+/*
+ * Which way to halve a piece of a ray's search (lib/query/ray_patch.c): across a side that is
+ * singular (collapsed to a pole, or a cusp edge where the partial across it vanishes), or both
+ * ways, deeper than regular pieces go, at a corner between two poles or a singular corner. Private
+ * to lib/query/; included by ray_patch.c alone, after ray_piece.h (inlined into each of that
+ * file's two cases, rational or not).
+ */
+#ifndef BEZSURF_QUERY_RAY_SPLIT_H
+#define BEZSURF_QUERY_RAY_SPLIT_H
+
+#include "query/ray_piece.h"
+
+/* The largest distance (max norm of X1, X2, T over W) between the points of the line of the net
+ * from index a, count points step apart, and its first point. */
+SPECIALISE double line_span(const double *net, size_t a, size_t count, size_t step, int rat)
+{
+    const double *p0 = net + a * NC;
+    double x0 = WDIV(rat, p0[0], p0[3]), y0 = WDIV(rat, p0[1], p0[3]), z0 = WDIV(rat, p0[2], p0[3]);
+    double span = 0.0;
+    for (size_t k = 1; k < count; k++) {
+        const double *p = net + (a + k * step) * NC;
+        span = greater(span, greater(fabs(WDIV(rat, p[0], p[3]) - x0),
+                                     greater(fabs(WDIV(rat, p[1], p[3]) - y0),
+                                             fabs(WDIV(rat, p[2], p[3]) - z0))));
+    }
+    return span;
+}
+
+/* The largest distance (max norm of X1, X2, T over W) between the points of two lines of the net,
+ * from indices a and b, count points step apart. */
+SPECIALISE double lines_apart(const double *net, size_t a, size_t b, size_t count, size_t step, int rat)
+{
+    double gap = 0.0;
+    for (size_t k = 0; k < count; k++) {
+        const double *p = net + (a + k * step) * NC, *q = net + (b + k * step) * NC;
+        for (int c = 0; c < 3; c++)
+            gap = greater(gap, fabs(WDIV(rat, p[c], p[3]) - WDIV(rat, q[c], q[3])));
+    }
+    return gap;
+}
+
+/* 1 if a side of the net along dir (BS_DIR_U: a row, s = 0 or 1) is singular: collapsed to a point,
+ * or equal to the next line of the net, where the partial across it vanishes along the whole side
+ * (a cusp edge, such as a side whose last two rows of points coincide). Within ext. */
+SPECIALISE int singular_side(const double *net, size_t m, size_t n, int rat, int dir, double ext)
+{
+    size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
+    size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
+    size_t last = deg * next; /* the first point of the side s = 1 (or r = 1) */
+    return line_span(net, 0, count, step, rat) <= ext || line_span(net, last, count, step, rat) <= ext ||
+           lines_apart(net, 0, next, count, step, rat) <= ext ||
+           lines_apart(net, last, last - next, count, step, rat) <= ext;
+}
+
+/* 1 if at a corner of the net the first differences along s and along r are parallel (or one
+ * vanishes): both partials are then parallel there, the normal comes from second derivatives,
+ * and the map (X1, X2) folds, so that no piece holding that corner is one to one. Parallel within
+ * 1e-9 and the rounding err of the points, which decides once the pieces holding the corner are
+ * small. */
+SPECIALISE int singular_corner(const double *net, size_t m, size_t n, int rat, double err)
+{
+    const size_t row = n + 1;
+    for (int k = 0; k < 4; k++) {
+        size_t i = k & 1 ? m : 0, j = k & 2 ? n : 0;
+        size_t at = i * row + j, si = k & 1 ? at - row : at + row, rj = k & 2 ? at - 1 : at + 1;
+        const double *p = net + at * NC, *ps = net + si * NC, *pr = net + rj * NC;
+        double a[3], b[3], c[3];
+        for (int q = 0; q < 3; q++) {
+            double x = WDIV(rat, p[q], p[3]);
+            a[q] = WDIV(rat, ps[q], ps[3]) - x;
+            b[q] = WDIV(rat, pr[q], pr[3]) - x;
+        }
+        bsi_cross3(a, b, c);
+        double la = sqrt(bsi_dot3(a, a)), lb = sqrt(bsi_dot3(b, b));
+        if (!(sqrt(bsi_dot3(c, c)) > 1e-9 * la * lb + err * (la + lb)))
+            return 1;
+    }
+    return 0;
+}
+
+/* The direction to halve a piece in: BS_DIR_U when a side s = const (a row of the net) is
+ * singular (singular_side, within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V
+ * for the converse; -2 (both directions, down to POLE_DEPTH) when sides of both kinds are (a
+ * corner between two poles) or a corner is singular (singular_corner), -1 (both, down to
+ * MAX_DEPTH) when none is. Next to a cusp edge the map is quadratic across it and Newton's steps
+ * are poor until a piece no longer holds the edge: halved across it, a piece a level holds the
+ * edge and the one beside it, with a zero near the edge, is regular enough for Newton. Next to a
+ * singular corner one piece a level holds the corner, and the hits 2^-k from it lie in pieces
+ * of level k, deeper than MAX_DEPTH. */
+SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const double lo[3],
+                          const double hi[3])
+{
+    if (m == 0 || n == 0)
+        return -1;
+    double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
+    int rows = singular_side(net, m, n, rat, BS_DIR_U, ext);
+    int cols = singular_side(net, m, n, rat, BS_DIR_V, ext);
+    double big = greater(greater(fabs(lo[0]), fabs(hi[0])), greater(greater(fabs(lo[1]), fabs(hi[1])),
+                                                                  greater(fabs(lo[2]), fabs(hi[2]))));
+    if (!rows && !cols && singular_corner(net, m, n, rat, 64 * DBL_EPSILON * big))
+        return -2;
+    return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
+}
+
+#endif
