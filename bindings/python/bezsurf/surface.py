@@ -385,7 +385,8 @@ class Surface(Handle):
         ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
         Results and keyword arguments as :meth:`Patch.eval` (positions of shape (n, dim), or an
         :class:`Evaluation`); sorting points by id is fastest. ``threads`` threads evaluate the
-        positions and partials (0: one per CPU; since 1.1), with the same results.
+        positions and partials (0: one per CPU; since 1.1) and the normals (since 1.2:
+        bs_surface_eval_normal_mt), with the same results bit for bit.
         """
         threads = A.integer(threads, "threads")
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
@@ -408,9 +409,13 @@ class Surface(Handle):
         try:
             if normals:  # first, so that a failure leaves every output untouched
                 assert nrm is not None and kinds is not None
-                LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
-                                           None if derivatives else pos.views, nrm.views,
-                                           kinds.address)
+                # one thread: the 1.0 function, so that a 1.0 or 1.1 library serves too
+                normal_args = (self._ptr, call.n, id_addr, call.u, call.v,
+                               None if derivatives else pos.views, nrm.views, kinds.address)
+                if threads == 1:
+                    LIB.bs_surface_eval_normal(*normal_args)
+                else:
+                    LIB.bs_surface_eval_normal_mt(*normal_args, threads)
             if derivatives or not normals:
                 LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
                                        dus.views if dus else None, dvs.views if dvs else None,
@@ -435,11 +440,13 @@ class Surface(Handle):
         return exc
 
     def eval_normal(self, ids: Ids, u: Params, v: Params, *, out: OutArray = None,
-                    normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
+                    normal_out: OutArray = None, kind_out: OutArray = None,
+                    threads: int = 1) -> Evaluation:
         """Positions, unit normals and kinds at scattered points of a 3-D surface
-        (``eval(ids, u, v, normals=True)``)."""
+        (``eval(ids, u, v, normals=True)``), on ``threads`` threads (0: one per CPU; since 1.2,
+        bs_surface_eval_normal_mt) with the same results bit for bit as one thread."""
         return self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
-                         kind_out=kind_out)
+                         kind_out=kind_out, threads=threads)
 
     def eval_grid(self, u: Params, v: Params, *, normals: bool = False,
                   threads: int = 1) -> Any:
