@@ -17,7 +17,8 @@ from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
 from .mesh import Mesh, explain_tessellation, tess_options
 from .query import Locator
-from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
+from .patch import (Evaluation, Nested, OutArray, Params, ParamSeq, Patch, _Call,
+                    _check_requested)
 
 #: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
 SIDE_V0 = Side.V0
@@ -26,7 +27,7 @@ SIDE_V1 = Side.V1
 SIDE_U0 = Side.U0
 
 #: Patch ids of a scattered evaluation: one id for all points, a sequence or a numpy array.
-Ids = Union[int, Iterable[int], "B.UInt32Array"]
+Ids = B.IdsIn
 
 
 class EdgeContinuity(NamedTuple):
@@ -236,9 +237,9 @@ class Surface(Handle):
     @classmethod
     def read_obj(cls, text: Union[str, bytes]) -> "Surface":
         """Parse the free-form surfaces of Wavefront OBJ text (Bezier and B-spline, rational or
-        not; a B-spline over its ``surf`` range) into Bezier patches (docs/formats.md). Raises ParseError with ``line`` and
-        ``column`` when the text is malformed, UnsupportedError (its ``detail`` naming the line)
-        for bmatrix, cardinal and taylor surfaces."""
+        not; a B-spline over its ``surf`` range) into Bezier patches (docs/formats.md). Raises
+        ParseError with ``line`` and ``column`` when the text is malformed, UnsupportedError (its
+        ``detail`` naming the line) for bmatrix, cardinal and taylor surfaces."""
         return cls._read_text(LIB.bs_surface_read_obj, text)
 
     @classmethod
@@ -286,8 +287,8 @@ class Surface(Handle):
         return bspline._add_to(self._ptr)
 
     @classmethod
-    def from_bspline(cls, ctrl: Any, knots_u: Any, knots_v: Any,
-                     weights: Any = None) -> "Surface":
+    def from_bspline(cls, ctrl: Nested, knots_u: ParamSeq, knots_v: ParamSeq,
+                     weights: Optional[Nested] = None) -> "Surface":
         """A new surface of the Bezier patches of a B-spline or NURBS surface; the arguments are
         those of :class:`BSpline`."""
         s = cls()
@@ -448,8 +449,20 @@ class Surface(Handle):
         return self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
                          kind_out=kind_out, threads=threads)
 
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, normals: Literal[False] = ...,
+                  threads: int = ...) -> Points: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, normals: Literal[True],
+                  threads: int = ...) -> Evaluation: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, normals: bool = ...,
+                  threads: int = ...) -> Union[Points, Evaluation]: ...
+
     def eval_grid(self, u: Params, v: Params, *, normals: bool = False,
-                  threads: int = 1) -> Any:
+                  threads: int = 1) -> Union[Points, Evaluation]:
         """Positions (or with ``normals`` an :class:`Evaluation` of positions, normals and
         kinds) on the tensor grid u x v of every patch, through bs_surface_eval_grid (1.1) on
         ``threads`` threads (0: one per CPU; the same bits for every count). Point (u[a], v[b])
@@ -464,10 +477,11 @@ class Surface(Handle):
         LIB.bs_surface_eval_grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views, None,
                                  None, nrm.views if nrm else None,
                                  kinds.address if kinds else None, threads)
+        positions: Points = pos.result()
         if not normals:
-            return pos.result()
+            return positions
         assert nrm is not None and kinds is not None
-        return Evaluation(pos.result(), None, None, nrm.result(), kinds.result())
+        return Evaluation(positions, None, None, nrm.result(), kinds.result())
 
     def continuity(self, tol: float = 1e-9, samples: int = 32) -> Continuity:
         """Shared and open edges of a 3-D surface and the continuity across each shared edge.
