@@ -159,6 +159,31 @@ BS_API bs_status bs_surface_eval_mt(const bs_surface *s, size_t n, const uint32_
                                     const bs_view *dv, size_t threads);
 
 /**
+ * @brief bs_surface_eval_normal() on up to `threads` threads: the points are cut into pieces of 4096,
+ * each evaluated by one thread, so the results (positions, normals and kinds) are bit-identical to
+ * bs_surface_eval_normal() whatever the thread count. Every thread started is joined before the call
+ * returns; a thread that cannot be created leaves its share to the calling thread. Arguments and
+ * statuses as bs_surface_eval_normal() (checked before any thread starts).
+ * @param[in]  s        the surface (dim 3).
+ * @param[in]  n        number of points.
+ * @param[in]  ids      n patch ids, each below bs_surface_count(s).
+ * @param[in]  u        view of n u-parameters.
+ * @param[in]  v        view of n v-parameters.
+ * @param[out] pos      NULL or 3 views receiving S(u,v).
+ * @param[out] nrm      NULL or 3 views receiving the unit normal.
+ * @param[out] kind     NULL or n bytes receiving BS_NORMAL_REGULAR, _LIMIT or _UNDEFINED.
+ * @param[in]  threads  threads to use, the calling one included: 1 stays on the calling thread,
+ *                      0 = one per online CPU.
+ * @return BS_OK; BS_ERR_INVALID_ARG (s, ids, u or v NULL, NULL or misaligned view data, an id out of
+ *         range); BS_ERR_DIMENSION (n > 0 and the surface's dim is not 3, including an empty surface);
+ *         BS_ERR_SIZE (a view shorter than n).
+ * @since 1.2
+ */
+BS_API bs_status bs_surface_eval_normal_mt(const bs_surface *s, size_t n, const uint32_t *ids,
+                                           const bs_cview *u, const bs_cview *v, const bs_view *pos,
+                                           const bs_view *nrm, unsigned char *kind, size_t threads);
+
+/**
  * @brief Evaluate the same tensor grid on every patch of a surface, on up to `threads` threads:
  * point (u[a], v[b]) of patch p is written at output index (p*nu + a)*nv + b. Each output is
  * bit-identical to bs_patch_eval_grid() on that patch (and so to bs_patch_eval()), whatever the

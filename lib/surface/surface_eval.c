@@ -37,17 +37,46 @@ static size_t run_length(const uint32_t *ids, size_t n, size_t first)
     return end - first;
 }
 
-/* Points first..end-1 of a checked call, one patch call per run of equal ids. */
-static bs_status eval_range(const bs_surface *s, const uint32_t *ids, const bs_cview *u, const bs_cview *v,
-                            const bs_view *pos, const bs_view *du, const bs_view *dv, size_t first, size_t end)
+bs_status bs_surface_eval(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
+                          const bs_cview *v, const bs_view *pos, const bs_view *du, const bs_view *dv)
 {
-    size_t dim = bs_surface_dim(s);
-    bs_view spos[BS_MAX_DIM], sdu[BS_MAX_DIM], sdv[BS_MAX_DIM];
+    return bs_surface_eval_mt(s, n, ids, u, v, pos, du, dv, 1);
+}
+
+bs_status bs_surface_eval_normal(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
+                                 const bs_cview *v, const bs_view *pos, const bs_view *nrm, unsigned char *kind)
+{
+    return bs_surface_eval_normal_mt(s, n, ids, u, v, pos, nrm, kind, 1);
+}
+
+/* Points per piece of a multi-threaded call: enough to hide the hand-out, small enough to balance. */
+#define POINT_PIECE ((size_t)4096)
+
+/* A checked scattered call: positions and partials, or (normals set) positions, normals and kinds. */
+typedef struct points_job {
+    const bs_surface *s;
+    size_t n;
+    const uint32_t *ids;
+    const bs_cview *u, *v;
+    const bs_view *pos, *du, *dv, *nrm;
+    unsigned char *kind;
+    int normals;
+} points_job;
+
+/* Points first..end-1 of a checked call, one patch call per run of equal ids. */
+static bs_status eval_range(const points_job *j, size_t first, size_t end)
+{
+    size_t dim = bs_surface_dim(j->s);
+    bs_view spos[BS_MAX_DIM], sa[BS_MAX_DIM], sb[BS_MAX_DIM];
     while (first < end) {
-        size_t len = run_length(ids, end, first);
-        bs_cview su = bsi_sub_cview(u, first), sv = bsi_sub_cview(v, first);
-        bs_status st = bs_patch_eval(bs_surface_get(s, ids[first]), len, &su, &sv, bsi_sub_views(pos, dim, first, spos),
-                                     bsi_sub_views(du, dim, first, sdu), bsi_sub_views(dv, dim, first, sdv));
+        size_t len = run_length(j->ids, end, first);
+        const bs_patch *p = bs_surface_get(j->s, j->ids[first]);
+        bs_cview su = bsi_sub_cview(j->u, first), sv = bsi_sub_cview(j->v, first);
+        const bs_view *pos = bsi_sub_views(j->pos, dim, first, spos);
+        bs_status st = j->normals ? bs_patch_eval_normal(p, len, &su, &sv, pos, bsi_sub_views(j->nrm, 3, first, sa),
+                                                         j->kind ? j->kind + first : NULL)
+                                  : bs_patch_eval(p, len, &su, &sv, pos, bsi_sub_views(j->du, dim, first, sa),
+                                                  bsi_sub_views(j->dv, dim, first, sb));
         if (st != BS_OK) /* not expected: every argument was checked above */
             return st;
         first += len;
@@ -55,29 +84,19 @@ static bs_status eval_range(const bs_surface *s, const uint32_t *ids, const bs_c
     return BS_OK;
 }
 
-bs_status bs_surface_eval(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
-                          const bs_cview *v, const bs_view *pos, const bs_view *du, const bs_view *dv)
-{
-    return bs_surface_eval_mt(s, n, ids, u, v, pos, du, dv, 1);
-}
-
-/* Points per piece of a multi-threaded call: enough to hide the hand-out, small enough to balance. */
-#define POINT_PIECE ((size_t)4096)
-
-typedef struct points_job {
-    const bs_surface *s;
-    size_t n;
-    const uint32_t *ids;
-    const bs_cview *u, *v;
-    const bs_view *pos, *du, *dv;
-} points_job;
-
 static bs_status points_task(void *ctx, size_t item, size_t worker)
 {
     (void)worker;
     const points_job *j = ctx;
     size_t first = item * POINT_PIECE, end = j->n - first < POINT_PIECE ? j->n : first + POINT_PIECE;
-    return eval_range(j->s, j->ids, j->u, j->v, j->pos, j->du, j->dv, first, end);
+    return eval_range(j, first, end);
+}
+
+/* The pieces of a checked call with n > 0, each evaluated by one thread. */
+static bs_status run_points(points_job *job, size_t threads)
+{
+    size_t pieces = job->n / POINT_PIECE + (job->n % POINT_PIECE != 0);
+    return bsi_parallel(bsi_thread_count(threads, pieces), pieces, points_task, job);
 }
 
 bs_status bs_surface_eval_mt(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
@@ -90,30 +109,21 @@ bs_status bs_surface_eval_mt(const bs_surface *s, size_t n, const uint32_t *ids,
     bs_status st = check_args(s, n, ids, u, v, 0, pos, dim, du, dim, dv, dim);
     if (st != BS_OK)
         return st;
-    points_job job = {s, n, ids, u, v, pos, du, dv};
-    size_t pieces = n / POINT_PIECE + (n % POINT_PIECE != 0);
-    return bsi_parallel(bsi_thread_count(threads, pieces), pieces, points_task, &job);
+    points_job job = {s, n, ids, u, v, pos, du, dv, NULL, NULL, 0};
+    return run_points(&job, threads);
 }
 
-bs_status bs_surface_eval_normal(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
-                                 const bs_cview *v, const bs_view *pos, const bs_view *nrm, unsigned char *kind)
+bs_status bs_surface_eval_normal_mt(const bs_surface *s, size_t n, const uint32_t *ids, const bs_cview *u,
+                                    const bs_cview *v, const bs_view *pos, const bs_view *nrm, unsigned char *kind,
+                                    size_t threads)
 {
     if (n == 0)
         return s == NULL ? BS_ERR_INVALID_ARG : BS_OK;
     bs_status st = check_args(s, n, ids, u, v, 1, pos, 3, nrm, 3, NULL, 0);
     if (st != BS_OK)
         return st;
-    bs_view spos[3], snrm[3];
-    for (size_t first = 0; first < n;) {
-        size_t len = run_length(ids, n, first);
-        bs_cview su = bsi_sub_cview(u, first), sv = bsi_sub_cview(v, first);
-        st = bs_patch_eval_normal(bs_surface_get(s, ids[first]), len, &su, &sv, bsi_sub_views(pos, 3, first, spos),
-                                  bsi_sub_views(nrm, 3, first, snrm), kind ? kind + first : NULL);
-        if (st != BS_OK)
-            return st;
-        first += len;
-    }
-    return BS_OK;
+    points_job job = {s, n, ids, u, v, pos, NULL, NULL, nrm, kind, 1};
+    return run_points(&job, threads);
 }
 
 /* Grid rows per piece of bs_surface_eval_grid: about POINT_PIECE points. */

@@ -236,12 +236,20 @@ static void test_evaluators(void)
         bs_surface_eval(S3, N, bad_ids, &u, &v, ov[0], ov[1], ov[2]));
     BAD("bs_surface_eval_normal", "NULL handle", BS_ERR_INVALID_ARG,
         bs_surface_eval_normal(NULL, N, ids, &u, &v, ov[0], ov[3], kbuf + 1));
+    BAD("bs_surface_eval_normal_mt", "NULL handle", BS_ERR_INVALID_ARG,
+        bs_surface_eval_normal_mt(NULL, N, ids, &u, &v, ov[0], ov[3], kbuf + 1, 2));
     BAD("bs_surface_eval_normal", "NULL views", BS_ERR_INVALID_ARG,
         bs_surface_eval_normal(S3, N, ids, NULL, &v, ov[0], ov[3], kbuf + 1));
+    BAD("bs_surface_eval_normal_mt", "NULL views", BS_ERR_INVALID_ARG,
+        bs_surface_eval_normal_mt(S3, N, ids, NULL, &v, ov[0], ov[3], kbuf + 1, 2));
     BAD("bs_surface_eval_normal", "dim out of range", BS_ERR_DIMENSION,
         bs_surface_eval_normal(S2, N, ids, &u, &v, ov[0], ov[3], kbuf + 1));
+    BAD("bs_surface_eval_normal_mt", "dim out of range", BS_ERR_DIMENSION,
+        bs_surface_eval_normal_mt(S2, N, ids, &u, &v, ov[0], ov[3], kbuf + 1, 2));
     BAD("bs_surface_eval_normal", "id out of range", BS_ERR_INVALID_ARG,
         bs_surface_eval_normal(S3, N, bad_ids, &u, &v, ov[0], ov[3], kbuf + 1));
+    BAD("bs_surface_eval_normal_mt", "id out of range", BS_ERR_INVALID_ARG,
+        bs_surface_eval_normal_mt(S3, N, bad_ids, &u, &v, ov[0], ov[3], kbuf + 1, 2));
 
     /* every bad input view, as u and as v */
     for (int k = 0; k < N_BAD_IN; k++) {
@@ -256,6 +264,8 @@ static void test_evaluators(void)
             BAD("bs_surface_eval", b->cls, b->st, bs_surface_eval(S3, N, ids, bu, bv, ov[0], ov[1], ov[2]));
             BAD("bs_surface_eval_normal", b->cls, b->st,
                 bs_surface_eval_normal(S3, N, ids, bu, bv, ov[0], ov[3], kbuf + 1));
+            BAD("bs_surface_eval_normal_mt", b->cls, b->st,
+                bs_surface_eval_normal_mt(S3, N, ids, bu, bv, ov[0], ov[3], kbuf + 1, 2));
         }
     }
     /* two elements whose byte distance fits in ptrdiff_t, but whose second address does not exist */
@@ -286,6 +296,9 @@ static void test_evaluators(void)
                 BAD_SPOILED("bs_surface_eval_normal", how, spoil_st[how],
                             (o = sp(d == 0 ? 0 : 3, c, how),
                              bs_surface_eval_normal(S3, N, ids, &u, &v, ov[0], ov[3], kbuf + 1)));
+                BAD_SPOILED("bs_surface_eval_normal_mt", how, spoil_st[how],
+                            (o = sp(d == 0 ? 0 : 3, c, how),
+                             bs_surface_eval_normal_mt(S3, N, ids, &u, &v, ov[0], ov[3], kbuf + 1, 2)));
                 (void)o;
             }
 }
@@ -302,12 +315,15 @@ static void test_nonfinite_parameters(void)
             (which ? vv : uu)[2] = bad[k];
             bs_cview u = {uu, N, 0}, v = {vv, N, 0};
             uint32_t ids[N] = {1, 0, 1, 0};
-            for (int f = 0; f < 3; f++) {
+            for (int f = 0; f < 4; f++) {
                 reset();
                 bs_status st = f == 0   ? bs_patch_eval(R3, N, &u, &v, ov[0], ov[1], ov[2])
                                : f == 1 ? bs_patch_eval_normal(P3, N, &u, &v, ov[0], ov[3], kbuf + SLACK)
-                                        : bs_surface_eval(S3, N, ids, &u, &v, ov[0], ov[1], ov[2]);
-                note(fn_seen, &n_fn, f == 0 ? "bs_patch_eval" : f == 1 ? "bs_patch_eval_normal" : "bs_surface_eval");
+                               : f == 2 ? bs_surface_eval(S3, N, ids, &u, &v, ov[0], ov[1], ov[2])
+                                        : bs_surface_eval_normal_mt(S3, N, ids, &u, &v, ov[0], ov[3], kbuf + SLACK, 2);
+                static const char *const names[4] = {"bs_patch_eval", "bs_patch_eval_normal", "bs_surface_eval",
+                                                      "bs_surface_eval_normal_mt"};
+                note(fn_seen, &n_fn, names[f]);
                 note(cls_seen, &n_cls, "NaN/Inf parameters");
                 n_cases++;
                 CHECK_STATUS(st, BS_OK);
@@ -316,7 +332,7 @@ static void test_nonfinite_parameters(void)
                     for (int e = 0; e < N; e++)
                         ok &= (e == 2) == (isnan(obuf[0][c][SLACK + e]) != 0);
                 ok &= obuf[0][0][0] == SENT && obuf[0][0][SLACK + N] == SENT;
-                if (f == 1)
+                if (f == 1 || f == 3)
                     ok &= kbuf[SLACK + 2] == BS_NORMAL_UNDEFINED && isnan(obuf[3][0][SLACK + 2]);
                 CHECKF(ok, "NaN/Inf parameter %d in %s of call %d: NaN not confined to its point", k,
                        which ? "v" : "u", f);

@@ -1,5 +1,5 @@
-/* Exact rational surfaces (radius r about the z axis), the scale D of a surface and the locator
- * of one patch, shared by the query tests. */
+/* Exact rational surfaces (radius r about the z axis), the scale D of a surface, the locator
+ * of one patch and a plane surface of dim 2, shared by the query and surface tests. */
 #ifndef BS_TEST_SHAPES_H
 #define BS_TEST_SHAPES_H
 
@@ -82,6 +82,20 @@ static inline bs_locator *shape_locator(const bs_patch *p)
     CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
     bs_surface_destroy(s);
     return L;
+}
+
+/* A surface of one bilinear patch of dim 2 (the unit square of the plane): it has no normals.
+ * Each step checked; release with bs_surface_destroy(). */
+static inline bs_surface *shape_flat_surface(void)
+{
+    static const double net2[8] = {0, 0, 0, 1, 1, 0, 1, 1};
+    bs_patch *p = NULL;
+    bs_surface *s = NULL;
+    CHECK_STATUS(bs_patch_create(1, 1, 2, net2, NULL, &p), BS_OK);
+    CHECK_STATUS(bs_surface_create(&s), BS_OK);
+    CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
+    bs_patch_destroy(p);
+    return s;
 }
 
 #endif

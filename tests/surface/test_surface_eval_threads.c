@@ -3,6 +3,7 @@
  * (one per CPU) threads, for grids cut into several pieces per patch or one row per piece; errors
  * come before anything is written. */
 #include "harness.h"
+#include "shapes.h"
 
 #include <bezsurf.h>
 
@@ -127,14 +128,9 @@ static void grid_errors(const bs_surface *s)
     for (size_t k = 0; k < 3 * 32 * 16; k++)
         CHECK(buf[k] == 0.0);
 
-    /* normals need dim 3: a plane curve patch, and an empty surface */
-    double net2[4 * 2] = {0, 0, 0, 1, 1, 0, 1, 1};
-    bs_patch *p2 = NULL;
-    bs_surface *flat = NULL, *empty = NULL;
-    CHECK_STATUS(bs_patch_create(1, 1, 2, net2, NULL, &p2), BS_OK);
-    CHECK_STATUS(bs_surface_create(&flat), BS_OK);
+    /* normals need dim 3: a plane patch of dim 2, and an empty surface */
+    bs_surface *flat = shape_flat_surface(), *empty = NULL;
     CHECK_STATUS(bs_surface_create(&empty), BS_OK);
-    CHECK_STATUS(bs_surface_add(flat, p2, NULL), BS_OK);
     unsigned char kind[16];
     CHECK_STATUS(bs_surface_eval_grid(flat, 4, &cu, 4, &cu, NULL, NULL, NULL, NULL, kind, 2), BS_ERR_DIMENSION);
     CHECK_STATUS(bs_surface_eval_grid(empty, 4, &cu, 4, &cu, NULL, NULL, NULL, pos, NULL, 2), BS_ERR_DIMENSION);
@@ -142,7 +138,6 @@ static void grid_errors(const bs_surface *s)
     CHECK_STATUS(bs_surface_eval_grid(flat, 0, &cu, 4, &cu, NULL, NULL, NULL, NULL, NULL, 2), BS_OK);
     bs_surface_destroy(flat);
     bs_surface_destroy(empty);
-    bs_patch_destroy(p2);
 }
 
 int main(void)

@@ -31,6 +31,9 @@ if TYPE_CHECKING:
     FloatArray = npt.NDArray[np.float64]
     UInt8Array = npt.NDArray[np.uint8]
     UInt32Array = npt.NDArray[np.uint32]
+    BoolArray = npt.NDArray[np.bool_]
+    #: An input array of any real dtype (converted to float64 once when it is not).
+    RealArray = npt.NDArray[Any]
 
 #: Results of n points: a float64 array of shape (n, k) with numpy, else a list of n tuples.
 Points = Union["FloatArray", List[Tuple[float, ...]]]
@@ -45,6 +48,26 @@ KindOrKinds = Union["UInt8Array", List[NormalKind], NormalKind, "np.uint8"]
 #: uint32 results (ids, indices): an array with numpy, else a list of ints or of int tuples.
 Ids = Union["UInt32Array", List[int]]
 IdRows = Union["UInt32Array", List[Tuple[int, ...]]]
+#: Real results of n points (a distance, a parameter t): a float64 array of shape (n,) with
+#: numpy, else a list; for one point one float.
+RealOrReals = Union["FloatArray", List[float], float]
+#: uint32 ids of n points, or one id for one point.
+IdOrIds = Union["UInt32Array", List[int], int, "np.uint32"]
+#: uint8 codes of n points (TRIM_* values), or one code for one point.
+CodeOrCodes = Union["UInt8Array", List[int], int]
+#: Booleans of n points, or one bool for one point.
+BoolOrBools = Union["BoolArray", List[bool], bool]
+
+#: Input real numbers: a sequence, ``array.array('d')``, a memoryview of doubles or a numpy array
+#: (any real dtype, any stride).
+RealsIn = Union[Sequence[float], "array.array[float]", memoryview, "RealArray"]
+#: One real number for every point, or one per point.
+RealOrRealsIn = Union[float, RealsIn]
+#: Input points: one point of shape (k,) or n points of shape (n, k), as nested sequences of real
+#: numbers or a numpy array.
+PointsArg = Union[Sequence[float], Sequence[Sequence[float]], "RealArray"]
+#: Input ids (patches, faces): one id for every point, a sequence or a numpy array.
+IdsIn = Union[int, Iterable[int], "UInt32Array"]
 
 # numpy >= 1.25 keeps its exceptions in numpy.exceptions
 _TOO_HARD: Any = getattr(getattr(np, "exceptions", np), "TooHardError", Exception)

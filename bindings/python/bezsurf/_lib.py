@@ -181,6 +181,8 @@ FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
     ("bs_surface_eval_mt", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, VIEWS, c_size_t), STATUS),
     ("bs_surface_eval_grid", (HANDLE, c_size_t, CVIEW, c_size_t, CVIEW, VIEWS, VIEWS, VIEWS, VIEWS, BYTES,
                               c_size_t), STATUS),
+    ("bs_surface_eval_normal_mt", (HANDLE, c_size_t, IDS, CVIEW, CVIEW, VIEWS, VIEWS, BYTES,
+                                   c_size_t), STATUS),  # since 1.2
     ("bs_locator_intersect", (HANDLE, c_size_t, CVIEW, CVIEW, CVIEW, IDS, VIEWS, VIEWS, VIEWS),
      STATUS),
     ("bs_locator_closest_point_mt", (HANDLE, c_size_t, CVIEW, IDS, VIEWS, VIEWS, VIEWS, c_size_t),

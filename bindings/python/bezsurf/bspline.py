@@ -37,7 +37,7 @@ class BSpline:
 
     __slots__ = ("_raw", "_keep", "_args")
 
-    def __init__(self, ctrl: Nested, knots_u: Any, knots_v: Any,
+    def __init__(self, ctrl: Nested, knots_u: B.RealsIn, knots_v: B.RealsIn,
                  weights: Optional[Nested] = None) -> None:
         count_u, count_v, dim, keep, ctrl_addr, w_addr = B.flat_net(ctrl, weights, "ctrl")
         (nku,), ku = B.nested_doubles(knots_u, 1, "knots_u")

@@ -7,12 +7,13 @@ from typing import Any, Dict, List, NamedTuple, Optional, Tuple, Union
 
 from . import _args as A
 from . import _buffers as B
+from ._buffers import CodeOrCodes, IdOrIds, IdsIn, KindOrKinds, PointOrPoints
 from ._errors import BezsurfError, BezsurfIOError, io_error
 from ._handle import Handle
 from ._lib import BS_ERR_IO, LIB, CFaceInfo, CParseError
 from ._enums import TessMethod
 from .mesh import Mesh, tess_options
-from .patch import _Call
+from .patch import Params, _Call
 from .query import Locator
 from .surface import Surface, _located, _with_file
 
@@ -63,9 +64,9 @@ class FaceEvaluation(NamedTuple):
     """Positions (n, 3) (``position``, as :class:`Evaluation`), outward unit normals (n, 3) and normal kinds (n,) of
     :meth:`Model.face_eval`; for one point the leading n axis is dropped."""
 
-    position: Any
-    normal: Any
-    kind: Any
+    position: PointOrPoints
+    normal: PointOrPoints
+    kind: KindOrKinds
 
 
 def _text_bytes(text: Union[str, bytes]) -> bytes:
@@ -200,7 +201,7 @@ class Model(Handle):
         s._adopt(handle, self)
         return s
 
-    def _face_ids(self, faces: Any, call: _Call) -> Tuple[Any, int]:
+    def _face_ids(self, faces: IdsIn, call: _Call) -> Tuple[Any, int]:
         if isinstance(faces, int) and not isinstance(faces, bool) and not call.scalar:
             faces = [faces] * call.n
         keep, addr, n = B.uint32s(faces, "faces")
@@ -212,7 +213,7 @@ class Model(Handle):
             raise IndexError(f"a face id is out of range: the model has {count} faces")
         return keep, addr
 
-    def face_eval(self, faces: Any, u: Any, v: Any) -> FaceEvaluation:
+    def face_eval(self, faces: IdsIn, u: Params, v: Params) -> FaceEvaluation:
         """Positions and outward unit normals of faces at native parameters (u, v): point k on
         face ``faces[k]`` (one id for all points). Points outside a face's patches give NaN."""
         call = _Call(u, v, inputs=[("faces", faces)])
@@ -227,7 +228,7 @@ class Model(Handle):
         return FaceEvaluation(call.finish(pos.result()), call.finish(nrm.result()),
                               kind[0] if call.scalar else kind)
 
-    def face_to_patch(self, faces: Any, u: Any, v: Any) -> Tuple[Any, Any]:
+    def face_to_patch(self, faces: IdsIn, u: Params, v: Params) -> Tuple[IdOrIds, PointOrPoints]:
         """The patch of :attr:`surface` holding each native (u, v) and the local (s, t) there:
         (patch ids, st of shape (n, 2)); outside a face: patch 4294967295 and NaN."""
         call = _Call(u, v, inputs=[("faces", faces)])
@@ -240,7 +241,7 @@ class Model(Handle):
         patch = ids.result()
         return (patch[0] if call.scalar else patch), call.finish(st.result())
 
-    def patch_to_face(self, patches: Any, s: Any, t: Any) -> Tuple[Any, Any]:
+    def patch_to_face(self, patches: IdsIn, s: Params, t: Params) -> Tuple[IdOrIds, PointOrPoints]:
         """The inverse of :meth:`face_to_patch`: the face holding each patch of :attr:`surface`
         (one id for all points, or one per point) and the native (u, v) of local (s, t) there:
         (face ids, uv of shape (n, 2)); (s, t) outside [0, 1]: face 4294967295 and NaN."""
@@ -262,7 +263,7 @@ class Model(Handle):
         face = faces.result()
         return (face[0] if call.scalar else face), call.finish(uv.result())
 
-    def classify(self, faces: Any, u: Any, v: Any, tol: float = 0.0) -> Any:
+    def classify(self, faces: IdsIn, u: Params, v: Params, tol: float = 0.0) -> CodeOrCodes:
         """Where native (u, v) lies on each face: TRIM_INSIDE, TRIM_OUTSIDE, or TRIM_ON within
         ``tol`` (a 3-D distance >= 0) of the face's boundary. A uint8 array (a list without
         numpy), or one int for one point."""
@@ -279,7 +280,8 @@ class Model(Handle):
             return values[0]
         if B.have_numpy():
             np = B.need_numpy()
-            return np.array(values, dtype=np.uint8)
+            codes: CodeOrCodes = np.array(values, dtype=np.uint8)
+            return codes
         return values
 
     def properties(self, rel_tol: float = 1e-10) -> Properties:

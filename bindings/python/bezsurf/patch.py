@@ -15,6 +15,7 @@ from ._lib import LIB, CCurve
 
 if TYPE_CHECKING:
     from .query import ClosestPoints
+    import numpy as np
     import numpy.typing as npt
 
 #: Directions for split(), isocurve() and reverse(); 'u' and 'v' are accepted as well.
@@ -30,7 +31,7 @@ NORMAL_UNDEFINED = NormalKind.UNDEFINED
 DirectionArg = Union[Direction, int, str]
 #: Evaluation parameters: a real number, a sequence of them, array.array('d'), memoryview or
 #: numpy array (any real dtype, any stride).
-ParamSeq = Union[Sequence[float], "array.array[float]", memoryview, "npt.NDArray[Any]"]
+ParamSeq = B.RealsIn
 Params = Union[float, ParamSeq]
 #: A control net (deg_u+1, deg_v+1, dim), a weight grid, a curve's points or a matrix: nested
 #: sequences of real numbers or a numpy array.
@@ -87,13 +88,13 @@ class Curvature(NamedTuple):
     :class:`CurvatureKind`). For scalar u and v the leading n axis is dropped.
     """
 
-    gaussian: Any
-    mean: Any
-    k_min: Any
-    k_max: Any
-    d_min: Any
-    d_max: Any
-    kind: Any
+    gaussian: B.RealOrReals
+    mean: B.RealOrReals
+    k_min: B.RealOrReals
+    k_max: B.RealOrReals
+    d_min: PointOrPoints
+    d_max: PointOrPoints
+    kind: Union["B.UInt8Array", List[CurvatureKind], CurvatureKind, "np.uint8"]
 
 
 def _squeeze(value: Any) -> Any:
@@ -383,7 +384,7 @@ class Patch(Handle):
         return Curvature(gauss, mean, k_min, k_max, call.finish(dmin.result()),
                          call.finish(dmax.result()), call.finish(kind))
 
-    def closest_point(self, points: Any) -> "ClosestPoints":
+    def closest_point(self, points: B.PointsArg) -> "ClosestPoints":
         """The globally closest point of the patch to each query point (bs_patch_closest_point,
         since 1.1): certified within 1e-9 (D + d) of the exact distance d, boundary included.
 

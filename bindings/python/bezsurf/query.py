@@ -3,10 +3,12 @@ and ray intersection over a whole surface)."""
 
 import ctypes
 import math
-from typing import TYPE_CHECKING, Any, Dict, NamedTuple, Optional, Tuple
+from typing import TYPE_CHECKING, Any, Dict, NamedTuple, Optional, Tuple, Union
 
 from . import _args as A
 from . import _buffers as B
+from ._buffers import (BoolOrBools, IdOrIds, KindOrKinds, PointOrPoints, PointsArg,
+                       RealOrReals, RealOrRealsIn)
 from ._handle import Handle
 from ._lib import LIB, CView
 
@@ -26,10 +28,10 @@ class ClosestPoints(NamedTuple):
     single query point the leading n axis is dropped.
     """
 
-    patch: Any
-    uv: Any
-    dist: Any
-    pos: Any
+    patch: Optional[IdOrIds]
+    uv: PointOrPoints
+    dist: RealOrReals
+    pos: PointOrPoints
 
 
 class RayHits(NamedTuple):
@@ -37,21 +39,23 @@ class RayHits(NamedTuple):
     ``uv`` (n, 2), ``t`` (n,) (+inf on a miss, NaN for an invalid ray) and unit ``normal`` (n, 3).
     For a single ray the leading n axis is dropped."""
 
-    patch: Any
-    uv: Any
-    t: Any
-    normal: Any
+    patch: IdOrIds
+    uv: PointOrPoints
+    t: RealOrReals
+    normal: PointOrPoints
 
     @property
-    def hit(self) -> Any:
+    def hit(self) -> BoolOrBools:
         """Where a ray hit, so that a miss need not be spelled NO_PATCH (4294967295): a bool
         numpy array of shape (n,) with numpy, else a list of bools (one bool for one ray;
         since 1.2). ``hits.patch[hits.hit]`` are the patches hit."""
-        if isinstance(self.patch, (list, tuple)):
-            return [p != NO_PATCH for p in self.patch]
-        if B.is_ndarray(self.patch) and self.patch.ndim > 0:
-            return self.patch != NO_PATCH
-        return bool(self.patch != NO_PATCH)  # one ray: int or numpy scalar
+        patch: Any = self.patch
+        if isinstance(patch, (list, tuple)):
+            return [p != NO_PATCH for p in patch]
+        if B.is_ndarray(patch) and patch.ndim > 0:
+            hit: BoolOrBools = patch != NO_PATCH
+            return hit
+        return bool(patch != NO_PATCH)  # one ray: int or numpy scalar
 
 
 def _column(points: Any) -> Any:
@@ -65,7 +69,7 @@ def _finish(scalar: bool, value: Any) -> Any:
     return value[0] if scalar and value is not None else value
 
 
-def patch_closest_point(patch: "Patch", points: Any) -> ClosestPoints:
+def patch_closest_point(patch: "Patch", points: PointsArg) -> ClosestPoints:
     """The body of :meth:`Patch.closest_point`."""
     q = B.PointsIn(points, patch.dim, "points")
     uv = B.Output(q.n, 2)
@@ -112,7 +116,7 @@ class Locator(Handle):
         """Dimension of the surface (0 for an empty one)."""
         return int(LIB.bs_locator_dim(self._ptr))
 
-    def closest_point(self, points: Any, *, threads: int = 1) -> ClosestPoints:
+    def closest_point(self, points: PointsArg, *, threads: int = 1) -> ClosestPoints:
         """The globally closest point of the whole surface to each query point, within
         1e-9 (D + d) of the exact distance d (D the diagonal of the control points' box).
         ``threads`` threads answer the queries (0: one per CPU; since 1.1), with the same
@@ -134,8 +138,9 @@ class Locator(Handle):
                              _finish(q.scalar, _column(dist.result())),
                              _finish(q.scalar, pos.result()))
 
-    def intersect(self, origins: Any, directions: Any, t_min: Optional[Any] = None,
-                  t_max: Optional[Any] = None, *, threads: int = 1) -> RayHits:
+    def intersect(self, origins: PointsArg, directions: PointsArg,
+                  t_min: Optional[RealOrRealsIn] = None, t_max: Optional[RealOrRealsIn] = None,
+                  *, threads: int = 1) -> RayHits:
         """The first hit of each ray o + t d with t in [t_min, t_max] (default (0, inf); either
         bound may be one number or n numbers; t_min finite, t_max finite or ``inf`` for no
         limit (since 1.2); a NaN or another infinite bound makes the ray invalid, t NaN). 3-D
@@ -144,15 +149,19 @@ class Locator(Handle):
         hits, _ = self._trace(origins, directions, t_min, t_max, threads, False)
         return hits
 
-    def intersect_kinds(self, origins: Any, directions: Any, t_min: Optional[Any] = None,
-                        t_max: Optional[Any] = None) -> Tuple[RayHits, Any]:
+    def intersect_kinds(self, origins: PointsArg, directions: PointsArg,
+                        t_min: Optional[RealOrRealsIn] = None,
+                        t_max: Optional[RealOrRealsIn] = None) -> Tuple[RayHits, KindOrKinds]:
         """:meth:`intersect` on one thread, with the kind of each hit's normal (NormalKind
         values as for :meth:`Patch.eval_normal`; UNDEFINED for a miss): ``(hits, kinds)``.
         Since 1.2."""
-        return self._trace(origins, directions, t_min, t_max, 1, True)
+        hits, kinds = self._trace(origins, directions, t_min, t_max, 1, True)
+        assert kinds is not None
+        return hits, kinds
 
-    def _trace(self, origins: Any, directions: Any, t_min: Optional[Any], t_max: Optional[Any],
-               threads: Any, with_kinds: bool) -> Tuple[RayHits, Any]:
+    def _trace(self, origins: PointsArg, directions: PointsArg, t_min: Optional[RealOrRealsIn],
+               t_max: Optional[RealOrRealsIn], threads: int,
+               with_kinds: bool) -> Tuple[RayHits, Optional[KindOrKinds]]:
         threads = A.integer(threads, "threads")
         org = B.PointsIn(origins, 3, "origins")
         dirs = B.PointsIn(directions, 3, "directions")

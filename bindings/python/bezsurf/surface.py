@@ -17,7 +17,8 @@ from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
 from .mesh import Mesh, explain_tessellation, tess_options
 from .query import Locator
-from .patch import (Evaluation, OutArray, Params, ParamSeq, Patch, _Call, _check_requested)
+from .patch import (Evaluation, Nested, OutArray, Params, ParamSeq, Patch, _Call,
+                    _check_requested)
 
 #: Sides of a patch's unit square (BS_SIDE_*), counter-clockwise.
 SIDE_V0 = Side.V0
@@ -26,7 +27,7 @@ SIDE_V1 = Side.V1
 SIDE_U0 = Side.U0
 
 #: Patch ids of a scattered evaluation: one id for all points, a sequence or a numpy array.
-Ids = Union[int, Iterable[int], "B.UInt32Array"]
+Ids = B.IdsIn
 
 
 class EdgeContinuity(NamedTuple):
@@ -236,9 +237,9 @@ class Surface(Handle):
     @classmethod
     def read_obj(cls, text: Union[str, bytes]) -> "Surface":
         """Parse the free-form surfaces of Wavefront OBJ text (Bezier and B-spline, rational or
-        not; a B-spline over its ``surf`` range) into Bezier patches (docs/formats.md). Raises ParseError with ``line`` and
-        ``column`` when the text is malformed, UnsupportedError (its ``detail`` naming the line)
-        for bmatrix, cardinal and taylor surfaces."""
+        not; a B-spline over its ``surf`` range) into Bezier patches (docs/formats.md). Raises
+        ParseError with ``line`` and ``column`` when the text is malformed, UnsupportedError (its
+        ``detail`` naming the line) for bmatrix, cardinal and taylor surfaces."""
         return cls._read_text(LIB.bs_surface_read_obj, text)
 
     @classmethod
@@ -286,8 +287,8 @@ class Surface(Handle):
         return bspline._add_to(self._ptr)
 
     @classmethod
-    def from_bspline(cls, ctrl: Any, knots_u: Any, knots_v: Any,
-                     weights: Any = None) -> "Surface":
+    def from_bspline(cls, ctrl: Nested, knots_u: ParamSeq, knots_v: ParamSeq,
+                     weights: Optional[Nested] = None) -> "Surface":
         """A new surface of the Bezier patches of a B-spline or NURBS surface; the arguments are
         those of :class:`BSpline`."""
         s = cls()
@@ -385,7 +386,8 @@ class Surface(Handle):
         ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
         Results and keyword arguments as :meth:`Patch.eval` (positions of shape (n, dim), or an
         :class:`Evaluation`); sorting points by id is fastest. ``threads`` threads evaluate the
-        positions and partials (0: one per CPU; since 1.1), with the same results.
+        positions and partials (0: one per CPU; since 1.1) and the normals (since 1.2:
+        bs_surface_eval_normal_mt), with the same results bit for bit.
         """
         threads = A.integer(threads, "threads")
         _check_requested(derivatives, normals, du_out, dv_out, normal_out, kind_out)
@@ -408,9 +410,13 @@ class Surface(Handle):
         try:
             if normals:  # first, so that a failure leaves every output untouched
                 assert nrm is not None and kinds is not None
-                LIB.bs_surface_eval_normal(self._ptr, call.n, id_addr, call.u, call.v,
-                                           None if derivatives else pos.views, nrm.views,
-                                           kinds.address)
+                # one thread: the 1.0 function, so that a 1.0 or 1.1 library serves too
+                normal_args = (self._ptr, call.n, id_addr, call.u, call.v,
+                               None if derivatives else pos.views, nrm.views, kinds.address)
+                if threads == 1:
+                    LIB.bs_surface_eval_normal(*normal_args)
+                else:
+                    LIB.bs_surface_eval_normal_mt(*normal_args, threads)
             if derivatives or not normals:
                 LIB.bs_surface_eval_mt(self._ptr, call.n, id_addr, call.u, call.v, pos.views,
                                        dus.views if dus else None, dvs.views if dvs else None,
@@ -435,14 +441,28 @@ class Surface(Handle):
         return exc
 
     def eval_normal(self, ids: Ids, u: Params, v: Params, *, out: OutArray = None,
-                    normal_out: OutArray = None, kind_out: OutArray = None) -> Evaluation:
+                    normal_out: OutArray = None, kind_out: OutArray = None,
+                    threads: int = 1) -> Evaluation:
         """Positions, unit normals and kinds at scattered points of a 3-D surface
-        (``eval(ids, u, v, normals=True)``)."""
+        (``eval(ids, u, v, normals=True)``), on ``threads`` threads (0: one per CPU; since 1.2,
+        bs_surface_eval_normal_mt) with the same results bit for bit as one thread."""
         return self.eval(ids, u, v, normals=True, out=out, normal_out=normal_out,
-                         kind_out=kind_out)
+                         kind_out=kind_out, threads=threads)
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, normals: Literal[False] = ...,
+                  threads: int = ...) -> Points: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, normals: Literal[True],
+                  threads: int = ...) -> Evaluation: ...
+
+    @overload
+    def eval_grid(self, u: Params, v: Params, *, normals: bool = ...,
+                  threads: int = ...) -> Union[Points, Evaluation]: ...
 
     def eval_grid(self, u: Params, v: Params, *, normals: bool = False,
-                  threads: int = 1) -> Any:
+                  threads: int = 1) -> Union[Points, Evaluation]:
         """Positions (or with ``normals`` an :class:`Evaluation` of positions, normals and
         kinds) on the tensor grid u x v of every patch, through bs_surface_eval_grid (1.1) on
         ``threads`` threads (0: one per CPU; the same bits for every count). Point (u[a], v[b])
@@ -457,10 +477,11 @@ class Surface(Handle):
         LIB.bs_surface_eval_grid(self._ptr, call.nu, call.u, call.nv, call.v, pos.views, None,
                                  None, nrm.views if nrm else None,
                                  kinds.address if kinds else None, threads)
+        positions: Points = pos.result()
         if not normals:
-            return pos.result()
+            return positions
         assert nrm is not None and kinds is not None
-        return Evaluation(pos.result(), None, None, nrm.result(), kinds.result())
+        return Evaluation(positions, None, None, nrm.result(), kinds.result())
 
     def continuity(self, tol: float = 1e-9, samples: int = 32) -> Continuity:
         """Shared and open edges of a 3-D surface and the continuity across each shared edge.

@@ -1,6 +1,7 @@
 """Closest points, the locator and rays through the binding, checked against geometry known in
 closed form (planes, a sphere octant, the teapot's own points)."""
 
+import array
 import copy
 import math
 import pickle
@@ -241,6 +242,41 @@ class ThreadsTest(PlainTestCase):
         two = s.eval(ids, u, v, derivatives=True, threads=2)
         self.assertEqual(plain(one.position), plain(two.position))
         self.assertEqual(plain(one.du), plain(two.du))
+
+    @requires("bs_surface_eval_normal_mt")
+    def test_eval_normal(self):
+        # positions, normals and kinds on 2, 3, 7 and one per CPU thread: the bits of one thread
+        # (NaN included), with lists, with array.array and (numpy) with strided arrays
+        s = bezsurf.Surface.builtin("teapot")
+        n = 9000
+        ids = [(k // 3) % 32 for k in range(n)]
+        u = [(k % 97) / 96 for k in range(n)]
+        v = [(k % 89) / 88 for k in range(n)]
+        u[7] = float("nan")
+        one = s.eval_normal(ids, u, v)
+        self.assertEqual(plain(one.kind)[7], bezsurf.NormalKind.UNDEFINED)
+        ref = [repr(plain(x)) for x in one]
+        for threads in (2, 3, 7, 0):
+            many = s.eval_normal(ids, array.array("d", u), v, threads=threads)
+            self.assertEqual([repr(plain(x)) for x in many], ref)
+            both = s.eval(ids, u, v, normals=True, derivatives=True, threads=threads)
+            self.assertEqual(repr(plain(both.normal)), ref[3])
+        with self.assertRaises(bezsurf.InvalidArgumentError):
+            s.eval_normal([0, 32], [0.5, 0.5], [0.5, 0.5], threads=2)
+        with self.assertRaises((TypeError, ValueError)):
+            s.eval_normal(ids, u, v, threads=-1)
+        if np is not None:
+            uu = np.repeat(np.asarray(u), 2)[::-2]   # strided, reversed
+            vv = np.asarray(v)[::-1]
+            rid = np.asarray(ids, dtype=np.uint32)[::-1]
+            a = s.eval_normal(rid, uu, vv)
+            b = s.eval_normal(rid, uu, vv, threads=3)
+            for x, y in zip((a.position, a.normal, a.kind), (b.position, b.normal, b.kind)):
+                self.assertEqual(x.tobytes(), y.tobytes())
+            out = np.empty((n, 3), order="F")
+            c = s.eval_normal(rid, uu, vv, normal_out=out, threads=2)
+            self.assertIs(c.normal, out)
+            self.assertEqual(out.tobytes(), a.normal.tobytes())
 
 
 if __name__ == "__main__":

@@ -8,7 +8,8 @@ from typing import List, Optional, Tuple
 from typing_extensions import assert_type
 
 import bezsurf
-from bezsurf._buffers import Ids, IdRows, Point, PointOrPoints, Points
+from bezsurf._buffers import (BoolOrBools, CodeOrCodes, Ids, IdOrIds, IdRows, KindOrKinds, Point,
+                              PointOrPoints, Points, RealOrReals)
 
 
 def uses(path: str) -> None:
@@ -36,6 +37,22 @@ def uses(path: str) -> None:
     assert_type(s.eval([0, 1], [0.5, 0.5], [0.5, 0.5]), Points)
     assert_type(s.eval(0, 0.5, 0.5), Point)
     assert_type(s.continuity().edges[0].side_a, bezsurf.Side)
+    assert_type(s.eval_normal([0, 1], [0.5, 0.5], [0.5, 0.5], threads=2), bezsurf.Evaluation)
+    assert_type(s.eval([0, 1], [0.5, 0.5], [0.5, 0.5], normals=True, threads=0), bezsurf.Evaluation)
+    assert_type(s.eval_grid([0.0, 1.0], [0.5]), Points)
+    assert_type(s.eval_grid([0.0, 1.0], [0.5], normals=True, threads=2), bezsurf.Evaluation)
+    assert_type(p.eval_curvature(0.5, 0.5).mean, RealOrReals)
+    with s.locator() as loc:
+        near = loc.closest_point([(0.0, 0.0, 1.0)], threads=2)
+        assert_type(near.dist, RealOrReals)
+        assert_type(near.patch, Optional[IdOrIds])
+        hits = loc.intersect([(0.0, 0.0, 5.0)], [(0.0, 0.0, -1.0)], t_max=10.0)
+        assert_type(hits.hit, BoolOrBools)
+        assert_type(loc.intersect_kinds((0.0, 0.0, 5.0), (0.0, 0.0, -1.0))[1], KindOrKinds)
+    model = bezsurf.Model(s)
+    assert_type(model.face_eval(0, [0.5], [0.5]).normal, PointOrPoints)
+    assert_type(model.classify([0], [0.5], [0.5]), CodeOrCodes)
+    assert_type(model.face_to_patch(0, 0.5, 0.5)[0], IdOrIds)
     with s.tessellate(8, strips=True) as m:
         assert_type(m.positions(), Points)
         assert_type(m.triangles(), IdRows)

@@ -80,7 +80,34 @@ impl Surface {
         ids: &[u32],
         u: impl Into<Strided<'u>>,
         v: impl Into<Strided<'v>>,
+        out: Outputs<'_>,
+    ) -> Result<()> {
+        self.eval_normal_threads(ids, u, v, out, 1)
+    }
+
+    /// [`Surface::eval_normal`] on up to `threads` threads, the calling one included
+    /// (`bs_surface_eval_normal_mt`, since 1.2; 0: one per online CPU). The positions, normals
+    /// and kinds are the same bit for bit whatever the number of threads.
+    ///
+    /// ```
+    /// use bezsurf::{Outputs, Surface};
+    ///
+    /// let pot = Surface::builtin("teapot")?;
+    /// let ids: Vec<u32> = (0..64).map(|k| k % 32).collect();
+    /// let t: Vec<f64> = (0..64).map(|k| k as f64 / 63.0).collect();
+    /// let (mut one, mut two) = (vec![0.0; 3 * 64], vec![0.0; 3 * 64]);
+    /// pot.eval_normal(&ids, &t, &t, Outputs::new().normal(&mut one))?;
+    /// pot.eval_normal_threads(&ids, &t, &t, Outputs::new().normal(&mut two), 2)?;
+    /// assert_eq!(one, two);
+    /// # Ok::<(), bezsurf::Error>(())
+    /// ```
+    pub fn eval_normal_threads<'u, 'v>(
+        &self,
+        ids: &[u32],
+        u: impl Into<Strided<'u>>,
+        v: impl Into<Strided<'v>>,
         mut out: Outputs<'_>,
+        threads: usize,
     ) -> Result<()> {
         if out.du.is_some() {
             return Err(not_computed("du", "Surface::eval_normal", "Surface::eval"));
@@ -95,7 +122,7 @@ impl Surface {
         let kind = kind_ptr(out.kind.take(), n)?;
         // SAFETY: as in eval; kind holds at least n bytes.
         check(unsafe {
-            crate::sys::bs_surface_eval_normal(
+            crate::sys::bs_surface_eval_normal_mt(
                 self.as_ptr(),
                 n,
                 ids.as_ptr(),
@@ -104,6 +131,7 @@ impl Surface {
                 pos.as_ptr(),
                 nrm.as_ptr(),
                 kind,
+                threads,
             )
         })
         .map_err(|e| name_bad_id(name_short_output(e, n, &[&pos, &nrm]), ids, self.len()))

@@ -519,6 +519,18 @@ extern "C" {
         dv: *const bs_view,
         threads: usize,
     ) -> bs_status;
+    /// `bs_surface_eval_normal` on up to `threads` threads (0 = one per online CPU), same results (since 1.2).
+    pub fn bs_surface_eval_normal_mt(
+        s: *const bs_surface,
+        n: usize,
+        ids: *const u32,
+        u: *const bs_cview,
+        v: *const bs_cview,
+        pos: *const bs_view,
+        nrm: *const bs_view,
+        kind: *mut c_uchar,
+        threads: usize,
+    ) -> bs_status;
     /// The same nu x nv grid on every patch, point (a, b) of patch p at (p*nu + a)*nv + b, on up to
     /// `threads` threads (since 1.1).
     pub fn bs_surface_eval_grid(

@@ -119,3 +119,38 @@ fn thread_counts_give_the_mesh_and_points_of_one_thread() {
     teapot.eval_threads(&ids, &u[..], &v[..], Outputs::new().pos(&mut b), 2).unwrap();
     assert!(a.iter().map(|x| x.to_bits()).eq(b.iter().map(|x| x.to_bits())));
 }
+
+#[test]
+fn thread_counts_give_the_normals_of_one_thread() {
+    let teapot = Surface::builtin("teapot").unwrap();
+    let n = 3 * 4096 + 29;
+    let ids: Vec<u32> = (0..n).map(|k| ((k / 7) % 32) as u32).collect();
+    let mut u: Vec<f64> = (0..n).map(|k| (k % 97) as f64 / 96.0).collect();
+    let v: Vec<f64> = (0..n).map(|k| (k % 89) as f64 / 88.0).collect();
+    u[4100] = f64::NAN;
+    let bits = |x: &[f64]| x.iter().map(|y| y.to_bits()).collect::<Vec<u64>>();
+    let (mut pos, mut nrm, mut kind) = (vec![0.0; 3 * n], vec![0.0; 3 * n], vec![9u8; n]);
+    let out = Outputs::new().pos(&mut pos).normal(&mut nrm).kind(&mut kind);
+    teapot.eval_normal(&ids, &u[..], &v[..], out).unwrap();
+    assert_eq!(kind[4100], u8::from(bezsurf::NormalKind::Undefined));
+    assert!(kind.iter().any(|&k| k == u8::from(bezsurf::NormalKind::Limit)));
+    for threads in [1, 2, 3, 7, 0] {
+        let (mut p2, mut n2, mut k2) = (vec![0.0; 3 * n], vec![0.0; 3 * n], vec![9u8; n]);
+        let out = Outputs::new().pos(&mut p2).normal(&mut n2).kind(&mut k2);
+        teapot.eval_normal_threads(&ids, &u[..], &v[..], out, threads).unwrap();
+        assert!(bits(&p2) == bits(&pos) && bits(&n2) == bits(&nrm) && k2 == kind, "{threads} threads");
+    }
+    // The checks of one thread, nothing written: an id out of range, a short output, du asked.
+    let mut bad = ids.clone();
+    bad[n - 1] = 32;
+    let mut n2 = vec![7.0; 3 * n];
+    let e = teapot.eval_normal_threads(&bad, &u[..], &v[..], Outputs::new().normal(&mut n2), 3).unwrap_err();
+    assert_eq!(e.kind(), bezsurf::ErrorKind::InvalidArg);
+    let e =
+        teapot.eval_normal_threads(&ids, &u[..], &v[..], Outputs::new().normal(&mut n2[1..]), 3).unwrap_err();
+    assert_eq!(e.kind(), bezsurf::ErrorKind::Size);
+    let mut du = vec![7.0; 3 * n];
+    let e = teapot.eval_normal_threads(&ids, &u[..], &v[..], Outputs::new().du(&mut du), 2).unwrap_err();
+    assert_eq!(e.kind(), bezsurf::ErrorKind::InvalidArg);
+    assert!(n2.iter().chain(&du).all(|&x| x == 7.0));
+}
