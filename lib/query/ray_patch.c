@@ -375,7 +375,9 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
             within <= accept || e.level >= POLE_DEPTH)
             continue;
         int dir = pole_split(net, m, n, rat, lo, hi);
-        if (dir == -1 && e.depth >= MAX_DEPTH)
+        /* past MAX_DEPTH only next to a singular corner (partials within 2^-8 of parallel at a
+         * corner), where a hit may lie on the boundary of pieces Newton cannot settle */
+        if (dir == -1 && e.depth >= MAX_DEPTH && !singular_corner(net, m, n, rat, 0x1p-8, 0.0))
             continue;
         /* the four halves (two across a pole), nearest t first */
         pending kids[4];

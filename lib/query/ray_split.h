@@ -55,9 +55,9 @@ SPECIALISE int singular_side(const double *net, size_t m, size_t n, int rat, int
 /* 1 if at a corner of the net the first differences along s and along r are parallel (or one
  * vanishes): both partials are then parallel there, the normal comes from second derivatives,
  * and the map (X1, X2) folds, so that no piece holding that corner is one to one. Parallel within
- * 1e-9 and the rounding err of the points, which decides once the pieces holding the corner are
- * small. */
-SPECIALISE int singular_corner(const double *net, size_t m, size_t n, int rat, double err)
+ * rel (1e-9 for the corner itself) and the rounding err of the points, which decides once the
+ * pieces holding the corner are small. */
+SPECIALISE int singular_corner(const double *net, size_t m, size_t n, int rat, double rel, double err)
 {
     const size_t row = n + 1;
     for (int k = 0; k < 4; k++) {
@@ -72,7 +72,7 @@ SPECIALISE int singular_corner(const double *net, size_t m, size_t n, int rat, d
         }
         bsi_cross3(a, b, c);
         double la = sqrt(bsi_dot3(a, a)), lb = sqrt(bsi_dot3(b, b));
-        if (!(sqrt(bsi_dot3(c, c)) > 1e-9 * la * lb + err * (la + lb)))
+        if (!(sqrt(bsi_dot3(c, c)) > rel * la * lb + err * (la + lb)))
             return 1;
     }
     return 0;
@@ -97,7 +97,7 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     int cols = singular_side(net, m, n, rat, BS_DIR_V, ext);
     double big = greater(greater(fabs(lo[0]), fabs(hi[0])), greater(greater(fabs(lo[1]), fabs(hi[1])),
                                                                   greater(fabs(lo[2]), fabs(hi[2]))));
-    if (!rows && !cols && singular_corner(net, m, n, rat, 64 * DBL_EPSILON * big))
+    if (!rows && !cols && singular_corner(net, m, n, rat, 1e-9, 64 * DBL_EPSILON * big))
         return -2;
     return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
 }
