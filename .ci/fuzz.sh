@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Build the libFuzzer targets with clang in their own build tree, replay the committed seed corpora,
-# then fuzz each target for N seconds (default 90; the readers' targets for at most 30 seconds
-# each) and print its execution count. fuzz_locator's corpus is replayed but not extended here:
-# its ray oracle still finds misses next to cusp edges (docs/reliability.md), so a run would fail
-# on a known, open defect; run it by hand with FUZZ_LOCATOR=1.
+# then fuzz each target for N seconds (default 90; the readers' targets for at most
+# READER_SECONDS, default 30, each) and print its execution count. fuzz_locator's corpus is
+# replayed but not extended here: its ray oracle still finds misses next to cusp edges and at wild
+# weights (docs/reliability.md), so a run would fail on a known, open defect; run it by hand with
+# FUZZ_LOCATOR=1.
 #   .ci/fuzz.sh [seconds]        FUZZ_BUILD=dir to choose the build tree (default build-fuzz)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,7 +19,8 @@ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DBS_BUILD_EXAMPLES=OFF
 cmake --build "$build" -j2 --target $targets
 for target in $targets; do
   budget=$seconds
-  case " $readers " in *" $target "*) if [ "$budget" -gt 30 ]; then budget=30; fi ;; esac
+  cap=${READER_SECONDS:-30}
+  case " $readers " in *" $target "*) if [ "$budget" -gt "$cap" ]; then budget=$cap; fi ;; esac
   max_len=4096
   case $target in fuzz_iges_model | fuzz_step) max_len=8192 ;; esac # the seeds are whole CAD parts
   # a locator input runs several certified searches on rational patches with wide weights: up to
