@@ -22,14 +22,16 @@ typedef struct ray_out {
     unsigned char kind;
 } ray_out;
 
-static bs_status shoot(const bs_locator *L, const double o[3], const double d[3], ray_out *r)
+static bs_status shoot(const bs_locator *L, const double o[3], const double d[3], const double *range,
+                       ray_out *r)
 {
     bs_cview ov[3] = {{&o[0], 1, 0}, {&o[1], 1, 0}, {&o[2], 1, 0}};
     bs_cview dv[3] = {{&d[0], 1, 0}, {&d[1], 1, 0}, {&d[2], 1, 0}};
+    bs_cview rv[2] = {{range, 1, 0}, {range ? range + 1 : NULL, 1, 0}};
     bs_view uv[2] = {{&r->u, 1, 0}, {&r->v, 1, 0}}, tv = {&r->t, 1, 0};
     bs_view nv[3] = {{&r->n[0], 1, 0}, {&r->n[1], 1, 0}, {&r->n[2], 1, 0}};
     r->kind = 9;
-    return bs_locator_intersect_kind(L, 1, ov, dv, NULL, &r->id, uv, &tv, nv, &r->kind);
+    return bs_locator_intersect_kind(L, 1, ov, dv, range ? rv : NULL, &r->id, uv, &tv, nv, &r->kind);
 }
 
 /* The unit square z = 0 seen from z = 1 with directions (0, 0, -len). */
@@ -48,7 +50,7 @@ static void lengths(void)
     for (size_t k = 0; k < sizeof lens / sizeof lens[0]; k++) {
         double d[3] = {0, 0, -lens[k]}, t = 1.0 / lens[k];
         ray_out r;
-        CHECK_STATUS(shoot(L, o, d, &r), BS_OK);
+        CHECK_STATUS(shoot(L, o, d, NULL, &r), BS_OK);
         if (isfinite(t) && t > 0.0) /* a hit at t = 1 / len */
             CHECKF(r.id == 0 && fabs(r.t - t) <= 1e-12 * t && r.kind == BS_NORMAL_REGULAR,
                    "length %g: patch %u t %.17g (%.17g)", lens[k], r.id, r.t, t);
@@ -105,7 +107,7 @@ static void far_origins(void)
             for (int c = 0; c < 3; c++)
                 o[c] = P[c] - ldexp(D, k) * d[c] / len;
             ray_out r;
-            CHECK_STATUS(shoot(L, o, d, &r), BS_OK);
+            CHECK_STATUS(shoot(L, o, d, NULL, &r), BS_OK);
             rays++;
             if (r.id >= bs_surface_count(s)) {
                 missed++;
@@ -165,7 +167,7 @@ static void kinds(void)
                 d[c] = bs_test_rand(&rng, -1, 1) - o[c];
             }
         ray_out r;
-        CHECK_STATUS(shoot(L, o, d, &r), BS_OK);
+        CHECK_STATUS(shoot(L, o, d, NULL, &r), BS_OK);
         if (r.id == UINT32_MAX) {
             CHECK(r.kind == BS_NORMAL_UNDEFINED);
             continue;
@@ -193,7 +195,7 @@ static void kinds(void)
     if (L != NULL) {
         double o[3] = {1, 2, 5}, d[3] = {0, 0, -1};
         ray_out r;
-        CHECK_STATUS(shoot(L, o, d, &r), BS_OK);
+        CHECK_STATUS(shoot(L, o, d, NULL, &r), BS_OK);
         if (r.id == 0) /* a degenerate hit may be reported or not; reported, it says so */
             CHECKF(r.kind == BS_NORMAL_UNDEFINED && r.n[0] == 0 && r.n[1] == 0 && r.n[2] == 0,
                    "point patch: kind %d normal (%g %g %g)", r.kind, r.n[0], r.n[1], r.n[2]);
@@ -203,9 +205,34 @@ static void kinds(void)
     bs_patch_destroy(p);
 }
 
+/* The range [t_min, t_max] is closed: the unit square z = 0 seen from z = 1 along (0, 0, -1), a
+ * hit at t = 1 with every coordinate exact, is found when t_max, t_min or both are 1. */
+static void closed_range(void)
+{
+    double ctrl[12] = {0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0};
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(1, 1, 3, ctrl, NULL, &p), BS_OK);
+    bs_locator *L = p ? shape_locator(p) : NULL;
+    double o[3] = {0.25, 0.5, 1.0}, d[3] = {0, 0, -1};
+    const double ranges[4][2] = {{0.5, 1.0}, {1.0, 1.0}, {1.0, 2.0}, {0.5, 0x1.fffffffffffffp-1}};
+    for (int k = 0; L != NULL && k < 4; k++) {
+        ray_out r;
+        CHECK_STATUS(shoot(L, o, d, ranges[k], &r), BS_OK);
+        if (k < 3)
+            CHECKF(r.id == 0 && r.t == 1.0 && fabs(r.u - 0.25) < 1e-9 && fabs(r.v - 0.5) < 1e-9,
+                   "range [%g, %g]: patch %u t %.17g", ranges[k][0], ranges[k][1], r.id, r.t);
+        else
+            CHECKF(r.id == UINT32_MAX && r.t == INFINITY, "range ending before the hit: patch %u t %.17g", r.id,
+                   r.t);
+    }
+    bs_locator_destroy(L);
+    bs_patch_destroy(p);
+}
+
 int main(void)
 {
     lengths();
+    closed_range();
     far_origins();
     kinds();
     return bs_test_exit("test_ray_cases");
