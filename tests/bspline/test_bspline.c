@@ -313,6 +313,17 @@ static void errors(void)
     EXPECT(w[3] = 0.0, BS_ERR_NONFINITE);
     EXPECT(w[3] = -1.0, BS_ERR_NONFINITE);
     EXPECT(w[3] = NAN, BS_ERR_NONFINITE);
+    { /* a zero weight that no Bezier point keeps: in u the third of five points of a cubic with
+       * one interior knot enters the Bezier nets only blended with its neighbours */
+        double cu[] = {0, 0, 0, 0, 1, 2, 2, 2, 2}, c5[5 * 2 * 3], w5[10];
+        for (int k = 0; k < 30; k++)
+            c5[k] = k % 7;
+        for (int k = 0; k < 10; k++)
+            w5[k] = k == 4 ? 0.0 : 1.0;
+        const bs_bspline cubic = {3, 1, 5, 2, 3, cu, kv, c5, w5};
+        CHECK_STATUS(bs_surface_add_bspline(s, &cubic, NULL, 0, NULL), BS_ERR_NONFINITE);
+        CHECK(bs_surface_count(s) == 2);
+    }
     EXPECT((w[3] = 1e300, ctrl[9] = 1e10), BS_ERR_NONFINITE); /* w P overflows */
     w[3] = 1.0;
     ctrl[9] = 9;

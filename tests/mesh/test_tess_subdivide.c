@@ -405,6 +405,16 @@ static void repeat_strips_budgets(void)
     o.tolerance = 1e-2;
     o.max_vertices = 10;
     CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_SIZE);
+    { /* the vertex budget is inclusive as well: exactly the mesh's count is made, one less not */
+        size_t nv_at = 0, nt_at = 0;
+        o.max_vertices = 0;
+        CHECK_STATUS(bs_surface_tessellate_count(s, &o, &nv_at, &nt_at), BS_OK);
+        o.max_vertices = nv_at;
+        CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_OK);
+        bs_mesh_destroy(m);
+        o.max_vertices = nv_at - 1;
+        CHECK_STATUS(bs_surface_tessellate(s, &o, &m), BS_ERR_SIZE);
+    }
     /* far beyond the budget: refused while the trees are small (each leaf away from the poles
      * gives two triangles or more) */
     o.max_vertices = 0;
