@@ -198,7 +198,7 @@ static void test_against_direct(void)
     }
 }
 
-/* Other delimiters, a Hollerith string holding them, D exponents, blanks, defaulted fields, a
+/* Other delimiters, a Hollerith string holding them, D and d exponents, blanks, defaulted fields, a
  * number split over two records, and two chained transformations. */
 static void test_syntax_and_transforms(void)
 {
@@ -209,9 +209,11 @@ static void test_syntax_and_transforms(void)
     p[strlen(p) - 1] = '\0';
     char p2[512];
     snprintf(p2, sizeof p2, "%s/ /  !", p); /* trailing optional pointer fields, one blank */
-    char *d = strstr(p2, "/0/0/0/0/0/0/1/1/1");     /* the knots: D exponents and blanks */
+    /* the knots 0 0 1 1, 0 0 1 1 and the first weight: blanks and exponents D and d */
+    char *d = strstr(p2, "/0/0/1/1/0/0/1/1/1");
+    CHECK(d != NULL);
     if (d != NULL)
-        memcpy(d, "/0/ 0D0/  /1/.0/0./1.D0/1", 25), memmove(d + 25, d + 18, strlen(d + 18) + 1);
+        memmove(d + 29, d + 18, strlen(d + 18) + 1), memcpy(d, "/ /0d0/1.D0/1/.0/0./0.1d1/1/1", 29);
     ent e[3] = {{128, p2, 3, 0},
                 {124, "124/2.0D0/0/0/1/0/2/0/0/0/0/2/0!", 5, 0},
                 {124, "124/0/-1/0/0/1/0/0/0/0/0/1/10!", 0, 0}};
