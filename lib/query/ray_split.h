@@ -95,11 +95,11 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
     int rows = singular_side(net, m, n, rat, BS_DIR_U, ext);
     int cols = singular_side(net, m, n, rat, BS_DIR_V, ext);
+    if (rows || cols)
+        return rows && cols ? -2 : rows ? BS_DIR_U : BS_DIR_V;
     double big = greater(greater(fabs(lo[0]), fabs(hi[0])), greater(greater(fabs(lo[1]), fabs(hi[1])),
                                                                   greater(fabs(lo[2]), fabs(hi[2]))));
-    if (!rows && !cols && singular_corner(net, m, n, rat, 1e-9, 64 * DBL_EPSILON * big))
-        return -2;
-    return rows && cols ? -2 : rows ? BS_DIR_U : cols ? BS_DIR_V : -1;
+    return singular_corner(net, m, n, rat, 1e-9, 64 * DBL_EPSILON * big) ? -2 : -1;
 }
 
 #endif
