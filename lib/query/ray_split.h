@@ -39,9 +39,39 @@ SPECIALISE double lines_apart(const double *net, size_t a, size_t b, size_t coun
     return gap;
 }
 
+/* 1 if the points of two lines of the net (from indices a and b, count points step apart) lie on
+ * one straight line within ext: on the line through the first point and the point farthest from
+ * it. A side and the next line on one line make the partial across the side parallel to the side
+ * all along it (the map folds there: a cone over a curve tangent to its generator, say). */
+SPECIALISE int lines_collinear(const double *net, size_t a, size_t b, size_t count, size_t step, int rat,
+                               double ext)
+{
+    const double *p0 = net + a * NC;
+    double o[3] = {WDIV(rat, p0[0], p0[3]), WDIV(rat, p0[1], p0[3]), WDIV(rat, p0[2], p0[3])};
+    double dir[3] = {0.0, 0.0, 0.0}, far = 0.0;
+    for (int pass = 0; pass < 2; pass++)
+        for (size_t k = 0; k < 2 * count; k++) {
+            const double *p = net + ((k < count ? a : b) + (k % count) * step) * NC;
+            double x[3] = {WDIV(rat, p[0], p[3]) - o[0], WDIV(rat, p[1], p[3]) - o[1], WDIV(rat, p[2], p[3]) - o[2]};
+            double len = sqrt(bsi_dot3(x, x));
+            if (pass == 0 && len > far) {
+                far = len;
+                for (int c = 0; c < 3; c++)
+                    dir[c] = x[c] / len;
+            } else if (pass == 1) {
+                double along = bsi_dot3(x, dir), off[3] = {x[0] - along * dir[0], x[1] - along * dir[1],
+                                                             x[2] - along * dir[2]};
+                if (!(sqrt(bsi_dot3(off, off)) <= ext))
+                    return 0;
+            }
+        }
+    return 1;
+}
+
 /* 1 if a side of the net along dir (BS_DIR_U: a row, s = 0 or 1) is singular: collapsed to a point,
  * or equal to the next line of the net, where the partial across it vanishes along the whole side
- * (a cusp edge, such as a side whose last two rows of points coincide). Within ext. */
+ * (a cusp edge, such as a side whose last two rows of points coincide), or on one straight line
+ * with the next line (a fold, lines_collinear). Within ext. */
 SPECIALISE int singular_side(const double *net, size_t m, size_t n, int rat, int dir, double ext)
 {
     size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
@@ -49,7 +79,9 @@ SPECIALISE int singular_side(const double *net, size_t m, size_t n, int rat, int
     size_t last = deg * next; /* the first point of the side s = 1 (or r = 1) */
     return line_span(net, 0, count, step, rat) <= ext || line_span(net, last, count, step, rat) <= ext ||
            lines_apart(net, 0, next, count, step, rat) <= ext ||
-           lines_apart(net, last, last - next, count, step, rat) <= ext;
+           lines_apart(net, last, last - next, count, step, rat) <= ext ||
+           lines_collinear(net, 0, next, count, step, rat, ext) ||
+           lines_collinear(net, last, last - next, count, step, rat, ext);
 }
 
 /* 1 if at a corner of the net the first differences along s and along r are parallel (or one

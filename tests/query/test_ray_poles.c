@@ -209,6 +209,70 @@ static void singular_corners(int count)
     }
 }
 
+/* fuzz_locator_ray_miss_weights.bin: a rational (1,2) net in units of 2^-7 (its u = 0 side a pole,
+ * P(1,1) that pole too) and its weights */
+static const double raw5[6][4] = {{-78, 45, 44, 0x1p-2},   {-78, 45, 44, 0x1p19},  {-78, 45, 44, 0x1p-21},
+                                  {27, -115, -70, 0x1p6}, {-78, 45, 44, 0x1p-2}, {-128, 0, 127, 0x1p19}};
+
+/* Points (u, 2^-k) next to the v = 0 side, k = 4 .. 30, rays from size 2^-j above. */
+static void fold_sweep(const bs_patch *p, double size, const double *us, int nus, const char *what)
+{
+    bs_locator *L = shape_locator(p);
+    if (L == NULL)
+        return;
+    for (int k = 4; k <= 30; k += bs_test_quick() ? 5 : 1)
+        for (int i = 0; i < nus; i++)
+            for (int j = 0; j < 12; j += 3)
+                shoot(L, p, us[i], ldexp(1.0, -k), ldexp(size, -j), size, what);
+    bs_locator_destroy(L);
+}
+
+/* Folds: sides v = 0 on one straight line with the next column of the net, so that S_v is parallel
+ * to S_u all along the side (the map folds there). The fuzz input's net at 2^711 and at 1 (its side
+ * v = 0 and the next column lie on the line through the pole and P(1,0); the rays at (0.166, 2^-19)
+ * and (0.633, 2^-17) were missed), then random nets, half of them rational with weights 2^-8 .. 2^8. */
+static void fold_sides(int count)
+{
+    for (int e = 711; e >= 0; e -= 711) {
+        double c5[18], w5[6], us[3] = {0x1.539e3b2d066eap-3, 0x1.442e4fc240525p-1, 0.5};
+        for (int k = 0; k < 6; k++) {
+            for (int c = 0; c < 3; c++)
+                c5[3 * k + c] = ldexp(raw5[k][c], e - 7);
+            w5[k] = raw5[k][3];
+        }
+        bs_patch *p5 = NULL;
+        CHECK_STATUS(bs_patch_create(1, 2, 3, c5, w5, &p5), BS_OK);
+        if (p5 != NULL)
+            fold_sweep(p5, ldexp(4.0, e), us, 3, e ? "fuzz_locator_ray_miss_weights at 2^711" : "fuzz_locator_ray_miss_weights");
+        bs_patch_destroy(p5);
+    }
+    for (int t = 0; t < count; t++) {
+        size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 2 + (size_t)(bs_test_rand_u64(&rng) % 4);
+        double ctrl[3 * 36], wt[36], base[3], dir[3];
+        int rational = t % 2;
+        for (size_t c = 0; c < 3; c++) {
+            base[c] = bs_test_rand(&rng, -1, 1);
+            dir[c] = bs_test_rand(&rng, -1, 1);
+        }
+        for (size_t i = 0; i <= m; i++)
+            for (size_t j = 0; j <= n; j++) {
+                size_t k = i * (n + 1) + j;
+                double lam = bs_test_rand(&rng, -1, 1);
+                for (size_t c = 0; c < 3; c++)
+                    ctrl[3 * k + c] = j <= 1 ? base[c] + lam * dir[c] : bs_test_rand(&rng, -1, 1);
+                wt[k] = rational ? ldexp(1.0, (int)(bs_test_rand_u64(&rng) % 17) - 8) : 1.0;
+            }
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? wt : NULL, &p), BS_OK);
+        double us[3] = {bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), 0.5};
+        char what[64];
+        (void)snprintf(what, sizeof what, "fold %d (%zu,%zu)%s", t, m, n, rational ? " rational" : "");
+        if (p != NULL)
+            fold_sweep(p, 2.0, us, 3, what);
+        bs_patch_destroy(p);
+    }
+}
+
 /* Random patches with the u = 1 side collapsed to one point. */
 static void random_poles(int count)
 {
@@ -242,6 +306,7 @@ int main(void)
     reproducers();
     random_poles(bs_test_quick() ? 6 : 40);
     singular_corners(bs_test_quick() ? 4 : 24);
-    printf("%d rays down normals next to poles and singular corners, %d missed or hit later\n", rays, misses);
+    fold_sides(bs_test_quick() ? 4 : 24);
+    printf("%d rays down normals next to poles, singular corners and folds, %d missed or hit later\n", rays, misses);
     return bs_test_exit("test_ray_poles");
 }
