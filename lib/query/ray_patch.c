@@ -28,7 +28,7 @@
 #include <string.h>
 
 #define MAX_DEPTH 12   /* levels below a leaf at most (a sub-patch 2^-14 of its patch) */
-#define POLE_DEPTH 40  /* the same for pieces halved across a pole (2^-42 of the patch) */
+#define POLE_DEPTH 48  /* the same for pieces halved across a pole or a cusp edge (2^-50 of the patch) */
 #define BUDGET 4096    /* pieces looked at per sub-patch at most: a bound on the time of any ray */
 #define SLOTS (3 * POLE_DEPTH + 4)
 

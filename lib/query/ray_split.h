@@ -110,7 +110,21 @@ SPECIALISE int singular_corner(const double *net, size_t m, size_t n, int rat, d
     return 0;
 }
 
-/* The direction to halve a piece in: BS_DIR_U when a side s = const (a row of the net) is
+/* 1 if every line of the net along dir (BS_DIR_U: the rows) lies within ext of the first: the
+ * piece is then a curve across those lines, and halving it along s (for rows) only makes copies. */
+SPECIALISE int lines_all_near(const double *net, size_t m, size_t n, int rat, int dir, double ext)
+{
+    size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
+    size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
+    for (size_t k = 1; k <= deg; k++)
+        if (!(lines_apart(net, 0, k * next, count, step, rat) <= ext))
+            return 0;
+    return 1;
+}
+
+/* The direction to halve a piece in: first, a sliver (every line one way within 2^-12 of the
+ * piece's extent of the first) along its length only (BS_DIR_V when its rows lie together);
+ * else BS_DIR_U when a side s = const (a row of the net) is
  * singular (singular_side, within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V
  * for the converse; -2 (both directions, down to POLE_DEPTH) when sides of both kinds are (a
  * corner between two poles) or a corner is singular (singular_corner), -1 (both, down to
@@ -118,15 +132,25 @@ SPECIALISE int singular_corner(const double *net, size_t m, size_t n, int rat, d
  * are poor until a piece no longer holds the edge: halved across it, a piece a level holds the
  * edge and the one beside it, with a zero near the edge, is regular enough for Newton. Next to a
  * singular corner one piece a level holds the corner, and the hits 2^-k from it lie in pieces
- * of level k, deeper than MAX_DEPTH. */
+ * of level k, deeper than MAX_DEPTH. Pieces beside a cusp edge become slivers: the ray passes
+ * within a hair of the edge, so that every piece along it holds points near the ray; halved
+ * across, the two halves keep the same box at every level and their number doubles until the
+ * budget runs out, while halved along, all but the pieces where the ray passes are discarded. */
 SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const double lo[3],
                           const double hi[3])
 {
     if (m == 0 || n == 0)
         return -1;
-    double ext = 1e-9 * greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
-    int rows = singular_side(net, m, n, rat, BS_DIR_U, ext);
-    int cols = singular_side(net, m, n, rat, BS_DIR_V, ext);
+    double size = greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
+    int rows = singular_side(net, m, n, rat, BS_DIR_U, 1e-9 * size);
+    int cols = singular_side(net, m, n, rat, BS_DIR_V, 1e-9 * size);
+    /* a sliver (a piece holding or beside a cusp edge, where the map is quadratic across it) is
+     * halved along its length only: halved across, it would make two pieces no box can tell apart
+     * at every level */
+    int flat_s = lines_all_near(net, m, n, rat, BS_DIR_U, 0x1p-12 * size);
+    int flat_r = lines_all_near(net, m, n, rat, BS_DIR_V, 0x1p-12 * size);
+    if (flat_s != flat_r)
+        return flat_s ? BS_DIR_V : BS_DIR_U;
     if (rows || cols)
         return rows && cols ? -2 : rows ? BS_DIR_U : BS_DIR_V;
     double big = greater(greater(fabs(lo[0]), fabs(hi[0])), greater(greater(fabs(lo[1]), fabs(hi[1])),

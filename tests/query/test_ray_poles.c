@@ -273,8 +273,9 @@ static void fold_sides(int count)
     }
 }
 
-/* Random patches with the u = 1 side collapsed to one point. */
-static void random_poles(int count)
+/* Random patches with the u = 1 side collapsed to one point (cusp 0), or equal to the row before it,
+ * points and weights (cusp 1: S_u vanishes all along u = 1, a cusp edge). */
+static void random_poles(int count, int cusp)
 {
     for (int t = 0; t < count; t++) {
         size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 5), n = 1 + (size_t)(bs_test_rand_u64(&rng) % 5);
@@ -286,8 +287,10 @@ static void random_poles(int count)
             for (size_t j = 0; j <= n; j++) {
                 size_t k = i * (n + 1) + j;
                 for (size_t c = 0; c < 3; c++)
-                    ctrl[3 * k + c] = i == m ? pole[c] : bs_test_rand(&rng, -1, 1);
+                    ctrl[3 * k + c] = i == m ? (cusp ? ctrl[3 * (k - n - 1) + c] : pole[c]) : bs_test_rand(&rng, -1, 1);
                 wt[k] = rational ? ldexp(1.0, (int)(bs_test_rand_u64(&rng) % 9) - 4) : 1.0;
+                if (cusp && i == m)
+                    wt[k] = wt[k - n - 1];
             }
         bs_patch *p = NULL;
         CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? wt : NULL, &p), BS_OK);
@@ -295,7 +298,8 @@ static void random_poles(int count)
             continue;
         double vs[3] = {bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1), 1.0 - 0x1p-16};
         char what[64];
-        (void)snprintf(what, sizeof what, "random patch %d (%zu,%zu)%s", t, m, n, rational ? " rational" : "");
+        (void)snprintf(what, sizeof what, "random %s %d (%zu,%zu)%s", cusp ? "cusp edge" : "pole", t, m, n,
+                       rational ? " rational" : "");
         sweep(p, 0.5, vs, 3, what);
         bs_patch_destroy(p);
     }
@@ -304,9 +308,10 @@ static void random_poles(int count)
 int main(void)
 {
     reproducers();
-    random_poles(bs_test_quick() ? 6 : 40);
+    random_poles(bs_test_quick() ? 6 : 40, 0);
+    random_poles(bs_test_quick() ? 6 : 40, 1);
     singular_corners(bs_test_quick() ? 4 : 24);
     fold_sides(bs_test_quick() ? 4 : 24);
-    printf("%d rays down normals next to poles, singular corners and folds, %d missed or hit later\n", rays, misses);
+    printf("%d rays down normals next to poles, cusp edges, singular corners and folds, %d missed or hit later\n", rays, misses);
     return bs_test_exit("test_ray_poles");
 }
