@@ -6,12 +6,12 @@
  * of a patch's triangles inside an edge of another triangle of that patch, exactly in (u,v); the
  * checker is shown to catch one); no two vertices at the same place; the counts of the documented
  * rule on a parabolic patch (halves and thirds, one direction only); counts equal to the mesh; the
- * same mesh twice; strips; budgets; a rational patch; every error. */
+ * same mesh twice; strips; budgets; rational patches (weights in a ratio up to 1000); every error. */
 #include "harness.h"
 #include "bpt_reader.h"
+#include "chordal.h"
 #include "mesh_data.h"
 #include "mesh_sides.h"
-#include "reference.h"
 
 #include <math.h>
 #include <string.h>
@@ -25,42 +25,6 @@ static bs_status subdivide(const bs_surface *s, double tol, int flags, size_t ma
     o.flags = flags;
     o.max_triangles = max_tri;
     return bs_surface_tessellate(s, &o, m);
-}
-
-/* The documented error: the largest distance between a point of a triangle and the surface at the
- * point's (u,v) (interpolated from the corners' (u,v) on the triangle's patch), over the 21 points
- * (i, j, k) / 5 of every triangle. */
-static double chordal_error(const bs_surface *s, const mesh_data *d)
-{
-    static double store[65 * 65 * 3], wstore[65 * 65];
-    long double worst = 0.0L;
-    uint32_t last = UINT32_MAX;
-    ref_net net = {0, 0, 3, store, NULL};
-    for (size_t t = 0; t < d->nt; t++) {
-        if (d->tpatch[t] != last) {
-            const bs_patch *p = bs_surface_get(s, last = d->tpatch[t]);
-            net.m = bs_patch_degree_u(p);
-            net.n = bs_patch_degree_v(p);
-            bs_patch_get_ctrl(p, store, 65 * 65 * 3, wstore, 65 * 65);
-            net.w = bs_patch_is_rational(p) ? wstore : NULL;
-        }
-        const double *cu = d->cuv + 6 * t;
-        for (int i = 0; i <= 5; i++)
-            for (int j = 0; i + j <= 5; j++) {
-                long double l[3] = {i / 5.0L, j / 5.0L, (5 - i - j) / 5.0L}, u = 0, v = 0, P[3] = {0, 0, 0}, S[3];
-                for (int k = 0; k < 3; k++) {
-                    u += l[k] * cu[2 * k];
-                    v += l[k] * cu[2 * k + 1];
-                    for (int c = 0; c < 3; c++)
-                        P[c] += l[k] * d->pos[3 * (size_t)d->tri[3 * t + (size_t)k] + (size_t)c];
-                }
-                ref_eval(&net, u, v, S);
-                long double e = sqrtl((S[0] - P[0]) * (S[0] - P[0]) + (S[1] - P[1]) * (S[1] - P[1]) +
-                                      (S[2] - P[2]) * (S[2] - P[2]));
-                worst = e > worst ? e : worst;
-            }
-    }
-    return (double)worst;
 }
 
 typedef struct corner_pt { uint32_t patch; double a, b; uint32_t id; } corner_pt;
@@ -305,9 +269,9 @@ static void parabola(void)
     }
 }
 
-/* A rational quarter cylinder (exact circle arcs along u, straight along v): its bound is an
- * estimate; measured within the tolerance here. A grid of patches with reversed and swapped
- * neighbours. The relative tolerance on the teapot. */
+/* A rational quarter cylinder (exact circle arcs along u, straight along v) and a paraboloid of
+ * strongly varying weights: their bound is an estimate; measured within the tolerance here. A grid
+ * of patches with reversed and swapped neighbours. The relative tolerance on the teapot. */
 static void rational_and_relative(void)
 {
     static const double ring[3][2] = {{1, 0}, {1, 1}, {0, 1}}, w3[3] = {1, 0.70710678118654752, 1};
@@ -324,6 +288,22 @@ static void rational_and_relative(void)
     bs_surface_create(&s);
     add_patch(s, 2, 1, net, w);
     check_surface(s, 1e-3, 0.0, "quarter cylinder");
+    bs_surface_destroy(s);
+    /* A bicubic paraboloid whose middle rows weigh 1/1000 of its outer ones: the estimate must
+     * grow with the weight ratio (not shrink by it) to keep this within the tolerance. */
+    double para[16 * 3], wp[16];
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double *p = para + (i * 4 + j) * 3;
+            p[0] = i;
+            p[1] = j;
+            p[2] = 0.3 * (i - 1.5) * (i - 1.5) + 0.2 * (j - 1.5) * (j - 1.5);
+            wp[i * 4 + j] = i == 1 || i == 2 ? 1e-3 : 1.0;
+        }
+    s = NULL;
+    bs_surface_create(&s);
+    add_patch(s, 3, 3, para, wp);
+    check_surface(s, 1e-2, 0.0, "weights 1e-3 to 1");
     bs_surface_destroy(s);
     /* A spindle: poles at v = 0 and v = 1, and its sides u = 0 and u = 1 one curve (the ring of
      * the net closes on itself), so a side is shared with the same patch. */
