@@ -4,7 +4,8 @@
  * scaled point at the scaled t, at the same (u, v), with the same normals (bs_patch_eval_normal's
  * bits); rays hit subnormal copies (2^-1030 .. 2^-1060) as they hit the same net scaled back to
  * unit size; the hostile boxes (tests/hostile/huge_box, tiny_box, subnormal_box) tessellate with
- * a relative tolerance into the unit box's mesh and normals. Before 1.2: normals (0,0,0) beyond
+ * a relative tolerance into the unit box's mesh and normals; a limit curvature on a collapsed
+ * side, the same at every scale. Before 1.2: normals (0,0,0) beyond
  * 1e154 and below 1e-162, no closest point through a locator beyond 1e154, rays missing at
  * 1e-170 and 1e200, 2 triangles for huge_box; ray hit normals beyond 2^1000 a few ulps off
  * bs_patch_eval_normal's and subnormal copies missed. */
@@ -134,6 +135,46 @@ static void copies(int rational)
            rational ? "rational" : "polynomial", worst, worst_e);
 }
 
+/* An input of fuzz_locator: a polynomial (2,4) net, in units of 2^-7, whose four sides are one
+ * point. At (0.644, 0), on a collapsed side, the curvature is a limit; copies scaled by 2^-202 ..
+ * 2^-200 gave BS_CURV_UNDEFINED: their limit samples next to the side fell on both sides of the
+ * scale at which the formulas' products were rescaled, with different rounding, and did not
+ * settle. Every copy 2^-300 .. 2^300 must give the unit copy's kind and limit, scaled. */
+static const double collapsed[15][3] = {
+    {85, -81, -47},  {85, -81, -47},     {85, -81, -47},     {85, -81, -47},     {85, -81, -47},
+    {85, -81, -47},  {-12, -127, -32},   {63, -105, -12},    {-127, 117, -67},   {85, -81, -47},
+    {85, -81, -47},  {-128, -127, -125}, {-128, -127, -125}, {-128, -127, -125}, {85, -81, -47}};
+
+static void collapsed_limit(void)
+{
+    double u = 0x1.49539e3b2d067p-1, v = 0.0, ref[4] = {0, 0, 0, 0};
+    unsigned char ref_kind = 9;
+    for (int e = 0; e >= -300; e = e == 300 ? -1 : e >= 0 ? e + 1 : e - 1) {
+        double ctrl[45], k[4] = {0, 0, 0, 0};
+        for (int i = 0; i < 15; i++)
+            for (int c = 0; c < 3; c++)
+                ctrl[3 * i + c] = ldexp(collapsed[i][c], e - 7);
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(2, 4, 3, ctrl, NULL, &p), BS_OK);
+        unsigned char kind = 9;
+        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+        bs_view kv[4] = {{&k[0], 1, 0}, {&k[1], 1, 0}, {&k[2], 1, 0}, {&k[3], 1, 0}};
+        CHECK_STATUS(bs_patch_eval_curvature(p, 1, &cu, &cv, kv, NULL, NULL, &kind), BS_OK);
+        bs_patch_destroy(p);
+        if (e == 0) {
+            CHECKF(kind == BS_CURV_LIMIT, "unit copy: curvature kind %d", kind);
+            ref_kind = kind;
+            for (int c = 1; c < 4; c++)
+                ref[c] = k[c];
+            continue;
+        }
+        CHECKF(kind == ref_kind, "2^%d: curvature kind %d, %d at unit size", e, kind, ref_kind);
+        for (int c = 1; c < 4 && kind == ref_kind; c++)
+            CHECKF(fabs(ldexp(k[c], e) - ref[c]) <= 1e-6 * (fabs(ref[2]) + fabs(ref[3]) + 1.0),
+                   "2^%d: curvature %d is %g, %g expected", e, c, ldexp(k[c], e), ref[c]);
+    }
+}
+
 /* Rays at a subnormal copy of the net (2^e, e from -1030 to -1060: 44 to 14 bits left) and at
  * that copy scaled back to unit size (exactly): the same patch, the same (u, v) and normal bit
  * for bit, t scaled to within the copy's last bits (rounded to them). A ray from 2^30 away hits
@@ -227,6 +268,7 @@ int main(void)
 {
     copies(0);
     copies(1);
+    collapsed_limit();
     subnormal(0);
     subnormal(1);
     boxes();
