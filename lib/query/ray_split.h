@@ -40,31 +40,39 @@ SPECIALISE double lines_apart(const double *net, size_t a, size_t b, size_t coun
 }
 
 /* 1 if the points of two lines of the net (from indices a and b, count points step apart) lie on
- * one straight line within ext: on the line through the first point and the point farthest from
- * it. A side and the next line on one line make the partial across the side parallel to the side
- * all along it (the map folds there: a cone over a curve tangent to its generator, say). */
+ * one straight line within ext: on the line through the first point and the farthest of the
+ * other ends of the two lines (the lines' extent, so that the line's direction is accurate). A
+ * side and the next line on one line make the partial across the side parallel to the side all
+ * along it (the map folds there: a cone over a curve tangent to its generator, say). Most pieces
+ * fail at their first points. */
 SPECIALISE int lines_collinear(const double *net, size_t a, size_t b, size_t count, size_t step, int rat,
                                double ext)
 {
     const double *p0 = net + a * NC;
     double o[3] = {WDIV(rat, p0[0], p0[3]), WDIV(rat, p0[1], p0[3]), WDIV(rat, p0[2], p0[3])};
     double dir[3] = {0.0, 0.0, 0.0}, far = 0.0;
-    for (int pass = 0; pass < 2; pass++)
-        for (size_t k = 0; k < 2 * count; k++) {
-            const double *p = net + ((k < count ? a : b) + (k % count) * step) * NC;
-            double x[3] = {WDIV(rat, p[0], p[3]) - o[0], WDIV(rat, p[1], p[3]) - o[1], WDIV(rat, p[2], p[3]) - o[2]};
-            double len = sqrt(bsi_dot3(x, x));
-            if (pass == 0 && len > far) {
-                far = len;
-                for (int c = 0; c < 3; c++)
-                    dir[c] = x[c] / len;
-            } else if (pass == 1) {
-                double along = bsi_dot3(x, dir), off[3] = {x[0] - along * dir[0], x[1] - along * dir[1],
-                                                             x[2] - along * dir[2]};
-                if (!(sqrt(bsi_dot3(off, off)) <= ext))
-                    return 0;
-            }
+    const size_t ends[3] = {a + (count - 1) * step, b, b + (count - 1) * step};
+    for (int k = 0; k < 3; k++) {
+        const double *p = net + ends[k] * NC;
+        double x[3] = {WDIV(rat, p[0], p[3]) - o[0], WDIV(rat, p[1], p[3]) - o[1], WDIV(rat, p[2], p[3]) - o[2]};
+        double len2 = bsi_dot3(x, x);
+        if (len2 > far) {
+            far = len2;
+            for (int c = 0; c < 3; c++)
+                dir[c] = x[c];
         }
+    }
+    if (far > 0.0) /* unit: off below is then a point's offset from the line */
+        for (int c = 0; c < 3; c++)
+            dir[c] /= sqrt(far);
+    for (size_t k = 0; k < 2 * count; k++) {
+        const double *p = net + ((k < count ? a : b) + (k % count) * step) * NC;
+        double x[3] = {WDIV(rat, p[0], p[3]) - o[0], WDIV(rat, p[1], p[3]) - o[1], WDIV(rat, p[2], p[3]) - o[2]};
+        double along = bsi_dot3(x, dir);
+        double off[3] = {x[0] - along * dir[0], x[1] - along * dir[1], x[2] - along * dir[2]};
+        if (!(bsi_dot3(off, off) <= ext * ext))
+            return 0;
+    }
     return 1;
 }
 
@@ -116,9 +124,13 @@ SPECIALISE int lines_all_near(const double *net, size_t m, size_t n, int rat, in
 {
     size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
     size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
-    for (size_t k = 1; k <= deg; k++)
-        if (!(lines_apart(net, 0, k * next, count, step, rat) <= ext))
-            return 0;
+    for (size_t k = 1; k <= deg; k++) /* point by point: most pieces fail at their first points */
+        for (size_t j = 0; j < count; j++) {
+            const double *p = net + j * step * NC, *q = net + (k * next + j * step) * NC;
+            for (int c = 0; c < 3; c++)
+                if (!(fabs(WDIV(rat, p[c], p[3]) - WDIV(rat, q[c], q[3])) <= ext))
+                    return 0;
+        }
     return 1;
 }
 
