@@ -211,7 +211,11 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         (dmin && (st = bsi_check_views(dmin, 3, n)) != BS_OK) ||
         (dmax && (st = bsi_check_views(dmax, 3, n)) != BS_OK))
         return st;
-    double sig = bsi_extreme_scale(p, 256, 256);
+    /* A net beyond 2^64 or below 2^-64 is evaluated as its copy scaled near 1: next to collapsed
+     * sides and corners the partials of the limit samples differ by 2^40 and more, and their
+     * products underflowed from about 2^-200 (and overflowed from 2^236) though each point's
+     * formulas are scaled (a fuzz input gave UNDEFINED at 2^-255 .. 2^-199 and a limit elsewhere) */
+    double sig = bsi_extreme_scale(p, 64, 64);
     if (sig != 1.0) { /* the scaled copy's, with K times sig^2 and H, k_min, k_max times sig */
         bs_patch *q = NULL;
         if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)

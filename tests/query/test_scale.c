@@ -135,43 +135,56 @@ static void copies(int rational)
            rational ? "rational" : "polynomial", worst, worst_e);
 }
 
-/* An input of fuzz_locator: a polynomial (2,4) net, in units of 2^-7, whose four sides are one
- * point. At (0.644, 0), on a collapsed side, the curvature is a limit; copies scaled by 2^-202 ..
- * 2^-200 gave BS_CURV_UNDEFINED: their limit samples next to the side fell on both sides of the
- * scale at which the formulas' products were rescaled, with different rounding, and did not
- * settle. Every copy 2^-300 .. 2^300 must give the unit copy's kind and limit, scaled. */
-static const double collapsed[15][3] = {
+/* Two inputs of fuzz_locator, nets in units of 2^-7 with collapsed sides, and a point where the
+ * curvature is a limit: a polynomial (2,4) net whose four sides are one point, at (0.644, 0) on a
+ * side, and a (5,3) net (rational, weights 1) of two points A, B whose u = 0 and u = 1 sides are
+ * one point, at (2^-19, 2^-19) next to a corner. Copies scaled by 2^-202 .. 2^-200 (the first)
+ * and 2^-255 .. 2^-199 and 2^236 .. 2^256 (the second) gave BS_CURV_UNDEFINED: the partials of
+ * their limit samples differ by 2^40 and more, and their products underflowed or overflowed. Every
+ * copy 2^-1000 .. 2^1000 must give the unit copy's kind and limit, scaled. */
+#define A 127, 127, 127
+#define B 13, 13, 13
+static const double sides4[15][3] = {
     {85, -81, -47},  {85, -81, -47},     {85, -81, -47},     {85, -81, -47},     {85, -81, -47},
     {85, -81, -47},  {-12, -127, -32},   {63, -105, -12},    {-127, 117, -67},   {85, -81, -47},
     {85, -81, -47},  {-128, -127, -125}, {-128, -127, -125}, {-128, -127, -125}, {85, -81, -47}};
+static const double two_points[24][3] = {{A}, {A}, {A},           {A}, {A}, {A}, {127, 127, 13}, {B},
+                                         {B}, {B}, {B},           {B}, {B}, {B}, {B},            {B},
+                                         {B}, {13, 13, 127}, {A}, {A}, {127, 13, 13}, {127, 13, 13},
+                                         {127, 13, 13}, {127, 13, 13}};
+#undef A
+#undef B
 
-static void collapsed_limit(void)
+static void collapsed_limit(const double (*net)[3], size_t m, size_t n, int rational, double u, double v,
+                            const char *what)
 {
-    double u = 0x1.49539e3b2d067p-1, v = 0.0, ref[4] = {0, 0, 0, 0};
+    double ref[4] = {0, 0, 0, 0}, ones[24] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1,
+                                              1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
     unsigned char ref_kind = 9;
-    for (int e = 0; e >= -300; e = e == 300 ? -1 : e >= 0 ? e + 1 : e - 1) {
-        double ctrl[45], k[4] = {0, 0, 0, 0};
-        for (int i = 0; i < 15; i++)
-            for (int c = 0; c < 3; c++)
-                ctrl[3 * i + c] = ldexp(collapsed[i][c], e - 7);
+    size_t np = (m + 1) * (n + 1);
+    for (int e = 0; e >= -1000; e = e == 1000 ? -1 : e >= 0 ? e + 1 : e - 1) {
+        double ctrl[72], k[4] = {0, 0, 0, 0};
+        for (size_t i = 0; i < np; i++)
+            for (size_t c = 0; c < 3; c++)
+                ctrl[3 * i + c] = ldexp(net[i][c], e - 7);
         bs_patch *p = NULL;
-        CHECK_STATUS(bs_patch_create(2, 4, 3, ctrl, NULL, &p), BS_OK);
+        CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? ones : NULL, &p), BS_OK);
         unsigned char kind = 9;
         bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
         bs_view kv[4] = {{&k[0], 1, 0}, {&k[1], 1, 0}, {&k[2], 1, 0}, {&k[3], 1, 0}};
         CHECK_STATUS(bs_patch_eval_curvature(p, 1, &cu, &cv, kv, NULL, NULL, &kind), BS_OK);
         bs_patch_destroy(p);
         if (e == 0) {
-            CHECKF(kind == BS_CURV_LIMIT, "unit copy: curvature kind %d", kind);
+            CHECKF(kind == BS_CURV_LIMIT, "%s, unit copy: curvature kind %d", what, kind);
             ref_kind = kind;
             for (int c = 1; c < 4; c++)
                 ref[c] = k[c];
             continue;
         }
-        CHECKF(kind == ref_kind, "2^%d: curvature kind %d, %d at unit size", e, kind, ref_kind);
+        CHECKF(kind == ref_kind, "%s, 2^%d: curvature kind %d, %d at unit size", what, e, kind, ref_kind);
         for (int c = 1; c < 4 && kind == ref_kind; c++)
             CHECKF(fabs(ldexp(k[c], e) - ref[c]) <= 1e-6 * (fabs(ref[2]) + fabs(ref[3]) + 1.0),
-                   "2^%d: curvature %d is %g, %g expected", e, c, ldexp(k[c], e), ref[c]);
+                   "%s, 2^%d: curvature %d is %g, %g expected", what, e, c, ldexp(k[c], e), ref[c]);
     }
 }
 
@@ -268,7 +281,8 @@ int main(void)
 {
     copies(0);
     copies(1);
-    collapsed_limit();
+    collapsed_limit(sides4, 2, 4, 0, 0x1.49539e3b2d067p-1, 0.0, "four sides one point");
+    collapsed_limit(two_points, 5, 3, 1, 0x1p-19, 0x1p-19, "two points, two poles");
     subnormal(0);
     subnormal(1);
     boxes();
