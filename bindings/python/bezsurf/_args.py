@@ -9,7 +9,7 @@ import ctypes
 import numbers
 import operator
 import os
-from typing import Any, Union
+from typing import SupportsFloat, SupportsIndex, Union, cast
 
 from ._enums import Direction, Format
 
@@ -19,25 +19,25 @@ UINT_MAX = 2 ** 32 - 1
 PathArg = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
 
 
-def _name(x: Any) -> str:
+def _name(x: object) -> str:
     return type(x).__name__
 
 
-def real(x: Any, name: str) -> float:
+def real(x: object, name: str) -> float:
     """A real number (int, float, numpy scalar, 0-d array) as a float."""
     if isinstance(x, numbers.Real) and not isinstance(x, bool):
         return float(x)
     if getattr(x, "ndim", None) == 0 and getattr(getattr(x, "dtype", None), "kind", "") in "iuf":
-        return float(x)
+        return float(cast(SupportsFloat, x))  # a 0-d array of a real dtype
     raise TypeError(f"{name} must be a real number, not {_name(x)}")
 
 
-def integer(x: Any, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:
+def integer(x: object, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:
     """An integer in [lo, hi] (anything with __index__, not bool)."""
     if isinstance(x, bool):
         raise TypeError(f"{name} must be an integer, not bool")
     try:
-        i = operator.index(x)
+        i = operator.index(cast(SupportsIndex, x))  # operator.index checks it
     except TypeError:
         raise TypeError(f"{name} must be an integer, not {_name(x)}") from None
     if not lo <= i <= hi:
@@ -45,7 +45,7 @@ def integer(x: Any, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:
     return i
 
 
-def direction(d: Any, name: str = "direction") -> int:
+def direction(d: object, name: str = "direction") -> int:
     """'u', 'v' (any case), Direction.U/V, or 0/1."""
     if isinstance(d, str):
         try:
@@ -57,7 +57,7 @@ def direction(d: Any, name: str = "direction") -> int:
     return Direction(i) if i in Direction._value2member_map_ else i
 
 
-def mesh_format(f: Any, name: str = "format") -> int:
+def mesh_format(f: object, name: str = "format") -> int:
     """A Format member or value, or its name ("obj", "ply", "ply_ascii", "stl")."""
     if isinstance(f, str):
         try:
@@ -69,11 +69,11 @@ def mesh_format(f: Any, name: str = "format") -> int:
     return Format(i) if i in Format._value2member_map_ else i
 
 
-def path(p: Any, name: str = "path") -> bytes:
+def path(p: object, name: str = "path") -> bytes:
     """A file name for the C library (str, bytes or os.PathLike); a NUL byte in it is refused as
     open() refuses it (the C library would read the name only up to it)."""
     try:
-        b = os.fsencode(p)
+        b = os.fsencode(cast(PathArg, p))  # os.fsencode checks it
     except TypeError:
         raise TypeError(f"{name} must be a str, bytes or os.PathLike, not {_name(p)}") from None
     if b"\0" in b:
@@ -81,6 +81,6 @@ def path(p: Any, name: str = "path") -> bytes:
     return b
 
 
-def instance(x: Any, cls: type, name: str) -> None:
+def instance(x: object, cls: type, name: str) -> None:
     if not isinstance(x, cls):
         raise TypeError(f"{name} must be a bezsurf.{cls.__name__}, not {_name(x)}")

@@ -15,7 +15,7 @@ import array
 import ctypes
 import numbers
 import sys
-from typing import (TYPE_CHECKING, Any, Iterable, List, Optional, Sequence, Tuple, Union)
+from typing import TYPE_CHECKING, Iterable, List, Optional, Sequence, Tuple, Type, Union, cast, overload
 
 from ._enums import NORMAL_KINDS, NormalKind
 from ._lib import CView, FView, View
@@ -27,13 +27,19 @@ except ImportError:  # pragma: no cover - depends on the interpreter
 
 if TYPE_CHECKING:
     import numpy.typing as npt
+    from typing import TypeGuard  # Python 3.10+, for annotations only
+
+    from _typeshed import ReadableBuffer
 
     FloatArray = npt.NDArray[np.float64]
+    Float32Array = npt.NDArray[np.float32]
     UInt8Array = npt.NDArray[np.uint8]
     UInt32Array = npt.NDArray[np.uint32]
     BoolArray = npt.NDArray[np.bool_]
-    #: An input array of any real dtype (converted to float64 once when it is not).
-    RealArray = npt.NDArray[Any]
+    _FloatType = Union[Type[np.float64], Type[np.float32]]
+    #: An input array of any dtype (a real one is converted to float64 once, others are refused
+    #: at run time).
+    RealArray = npt.NDArray[np.generic]
 
 #: Results of n points: a float64 array of shape (n, k) with numpy, else a list of n tuples.
 Points = Union["FloatArray", List[Tuple[float, ...]]]
@@ -68,9 +74,19 @@ RealOrRealsIn = Union[float, RealsIn]
 PointsArg = Union[Sequence[float], Sequence[Sequence[float]], "RealArray"]
 #: Input ids (patches, faces): one id for every point, a sequence or a numpy array.
 IdsIn = Union[int, Iterable[int], "UInt32Array"]
+#: A rectangular nested input of real numbers, one to three levels deep (a control net, a weight
+#: grid, a curve's points, a matrix, knots): sequences, numpy arrays at any level, memoryviews.
+Reals = Union[Sequence[float], "RealArray", memoryview]
+Grid = Union[Sequence[Reals], "RealArray", memoryview]
+Net = Union[Sequence[Grid], "RealArray", memoryview]
+Nested = Union[Reals, Grid, Net]
+#: An array the library writes (``out=``); its dtype, shape and flags are checked at run time.
+OutArray = Optional["RealArray"]
+#: Nested lists of floats made by nested(): tuples at the innermost level.
+NestedLists = Union[Tuple[float, ...], List["NestedLists"]]
 
 # numpy >= 1.25 keeps its exceptions in numpy.exceptions
-_TOO_HARD: Any = getattr(getattr(np, "exceptions", np), "TooHardError", Exception)
+_TOO_HARD: Type[BaseException] = getattr(getattr(np, "exceptions", np), "TooHardError", Exception)
 _DOUBLE = ctypes.sizeof(ctypes.c_double)
 _DOUBLE_FORMATS = {"d", "@d", "=d", "<d" if sys.byteorder == "little" else ">d"}
 
@@ -80,24 +96,24 @@ def have_numpy() -> bool:
     return np is not None
 
 
-def is_ndarray(x: Any) -> bool:
+def is_ndarray(x: object) -> "TypeGuard[RealArray]":
     return np is not None and isinstance(x, np.ndarray)
 
 
-def is_scalar(x: Any) -> bool:
+def is_scalar(x: object) -> bool:
     """A single real number (Python or numpy scalar, or a 0-d array)."""
     if isinstance(x, numbers.Real):
         return True
     return is_ndarray(x) and bool(x.ndim == 0)
 
 
-def need_numpy() -> Any:
+def need_numpy() -> None:
+    """ImportError unless numpy is importable (callers then use ``np``)."""
     if np is None:
         raise ImportError("this call needs numpy, which is not installed")
-    return np
 
 
-def type_name(x: Any) -> str:
+def type_name(x: object) -> str:
     return type(x).__name__
 
 
@@ -109,7 +125,7 @@ class Doubles:
 
     __slots__ = ("address", "count", "stride", "keep")
 
-    def __init__(self, address: int, count: int, stride: int, keep: Any) -> None:
+    def __init__(self, address: int, count: int, stride: int, keep: object) -> None:
         self.address = address
         self.count = count
         self.stride = stride
@@ -119,7 +135,7 @@ class Doubles:
         return CView(self.address, self.count, self.stride)
 
 
-def _ndarray_1d(x: Any, what: str) -> Doubles:
+def _ndarray_1d(x: "RealArray", what: str) -> Doubles:
     try:
         a = np.asarray(x, dtype=np.float64)      # converts other dtypes once, never float64
     except (TypeError, ValueError) as exc:
@@ -135,12 +151,12 @@ def _ndarray_1d(x: Any, what: str) -> Doubles:
     return Doubles(int(a.ctypes.data), int(a.shape[0]), int(a.strides[0]), a)
 
 
-def _packed(values: Any, what: str) -> Doubles:
+def _packed(values: object, what: str) -> Doubles:
     if isinstance(values, (str, bytes)):
         raise TypeError(f"{what} must be a real number or a sequence of them, not "
                         f"{type_name(values)}")
     try:
-        arr = array.array("d", values)
+        arr = array.array("d", cast("Iterable[float]", values))  # array.array checks the items
     except TypeError as exc:
         raise TypeError(f"{what} must be a real number or a sequence of real numbers "
                         f"({exc})") from None
@@ -148,7 +164,7 @@ def _packed(values: Any, what: str) -> Doubles:
     return Doubles(address, count, _DOUBLE, arr)
 
 
-def doubles(x: Any, what: str) -> Doubles:
+def doubles(x: object, what: str) -> Doubles:
     """A 1-D double input from a numpy array, array.array, memoryview, sequence or scalar."""
     if is_ndarray(x):
         return _ndarray_1d(x, what)
@@ -158,7 +174,7 @@ def doubles(x: Any, what: str) -> Doubles:
         address, count = x.buffer_info()
         return Doubles(address, count, _DOUBLE, x)
     if isinstance(x, (memoryview, bytearray)) or hasattr(x, "__buffer__"):
-        mv = memoryview(x)
+        mv = memoryview(cast("ReadableBuffer", x))  # a memoryview, bytearray or __buffer__ object
         if mv.format in _DOUBLE_FORMATS and mv.ndim == 1:
             if mv.c_contiguous and not mv.readonly and mv.nbytes:
                 raw = (ctypes.c_double * len(mv)).from_buffer(mv)
@@ -179,7 +195,7 @@ class PointsIn:
 
     __slots__ = ("n", "views", "keep", "scalar")
 
-    def __init__(self, x: Any, k: int, what: str) -> None:
+    def __init__(self, x: object, k: int, what: str) -> None:
         views = (CView * k)()
         if is_ndarray(x):
             try:
@@ -199,7 +215,7 @@ class PointsIn:
             for c in range(k):
                 views[c] = CView(base + c * a.strides[1], a.shape[0], a.strides[0])
             self.n = int(a.shape[0])
-            self.keep: Any = a
+            self.keep: object = a
         else:
             if isinstance(x, (str, bytes)) or not isinstance(x, Iterable):
                 raise TypeError(f"{what} must be a sequence of points, not {type_name(x)}")
@@ -233,17 +249,18 @@ class Output:
 
     __slots__ = ("n", "k", "array", "columns", "views", "given")
 
-    def __init__(self, n: int, k: int, out: Any = None, what: str = "out",
+    def __init__(self, n: int, k: int, out: object = None, what: str = "out",
                  float32: bool = False) -> None:
         self.n = n
         self.k = k
-        self.array: Any = None
+        # float32 data when float32 is set: typed as the float64 arrays the public aliases name
+        self.array: Optional["FloatArray"] = None
         self.columns: List["array.array[float]"] = []
         self.given = out is not None
-        view: Any = FView if float32 else View
+        view: Union[Type[View], Type[FView]] = FView if float32 else View
         views = (view * k)()
         if out is not None or np is not None:
-            dtype = None if np is None else np.float32 if float32 else np.float64
+            dtype: Optional[_FloatType] = None if np is None else np.float32 if float32 else np.float64
             arr = _check_out(out, (n, k), what, dtype) if out is not None else \
                 np.empty((n, k), dtype=dtype, order="F")
             base = int(arr.ctypes.data)
@@ -267,7 +284,7 @@ class Output:
             for i in range(len(col)):
                 col[i] = x
 
-    def result(self) -> Any:
+    def result(self) -> "Points":
         if self.array is not None:
             return self.array
         if self.n == 0:
@@ -275,23 +292,24 @@ class Output:
         return list(zip(*(col[: self.n] for col in self.columns)))
 
 
-def _check_out(out: Any, shape: Tuple[int, ...], what: str, dtype: Any = None) -> Any:
+def _check_out(out: object, shape: Tuple[int, ...], what: str,
+               dtype: "Optional[_FloatType]" = None) -> "FloatArray":
     if not is_ndarray(out):
         raise TypeError(f"{what} must be a numpy array, not {type_name(out)}")
-    dtype = np.dtype(np.float64 if dtype is None else dtype)
-    if out.dtype != dtype:
-        raise TypeError(f"{what} must have dtype {dtype}, not {out.dtype}")
+    want = np.dtype(np.float64 if dtype is None else dtype)
+    if out.dtype != want:
+        raise TypeError(f"{what} must have dtype {want}, not {out.dtype}")
     if out.shape != shape:
         raise ValueError(f"{what} must have shape {shape}, not {out.shape}")
     if not out.flags.writeable:
         raise ValueError(f"{what} is read-only")
     if not out.flags.aligned:
-        raise ValueError(f"{what} is not aligned for {dtype}")
+        raise ValueError(f"{what} is not aligned for {want}")
     # Zero strides would alias elements (and 0 means "packed" to the library).
     for axis, size in enumerate(shape):
         if size > 1 and out.strides[axis] == 0:
             raise ValueError(f"{what} has a zero stride on axis {axis}")
-    return out
+    return cast("FloatArray", out)  # float64, or float32 for the float32 results
 
 
 class KindOutput:
@@ -299,10 +317,10 @@ class KindOutput:
 
     __slots__ = ("n", "array", "buffer", "address", "given")
 
-    def __init__(self, n: int, out: Any = None) -> None:
+    def __init__(self, n: int, out: object = None) -> None:
         self.n = n
-        self.array: Any = None
-        self.buffer: Any = None
+        self.array: Optional["UInt8Array"] = None
+        self.buffer: Optional["ctypes.Array[ctypes.c_ubyte]"] = None
         self.given = out is not None
         if out is not None:
             if not is_ndarray(out):
@@ -311,7 +329,7 @@ class KindOutput:
                     or not out.flags.writeable:
                 raise ValueError(f"kind_out must be a writable contiguous uint8 array of shape "
                                  f"({n},)")
-            self.array = out
+            self.array = cast("UInt8Array", out)  # the dtype was checked above
         elif np is not None:
             self.array = np.empty(n, dtype=np.uint8)
         if self.array is not None:
@@ -320,13 +338,14 @@ class KindOutput:
             self.buffer = (ctypes.c_ubyte * max(n, 1))()
             self.address = ctypes.addressof(self.buffer)
 
-    def result(self) -> Any:
+    def result(self) -> "Kinds":
         if self.array is not None:
             return self.array
+        assert self.buffer is not None
         return [NORMAL_KINDS[k] for k in self.buffer[: self.n]]
 
 
-def check_disjoint(outputs: Sequence[Tuple[str, Any]], inputs: Sequence[Tuple[str, Any]]) -> None:
+def check_disjoint(outputs: Sequence[Tuple[str, object]], inputs: Sequence[Tuple[str, object]]) -> None:
     """ValueError if two output arrays, or an output and an input, share memory.
 
     The library writes outputs while reading inputs; overlapping buffers would give results that
@@ -348,7 +367,7 @@ def check_disjoint(outputs: Sequence[Tuple[str, Any]], inputs: Sequence[Tuple[st
 _U32 = "I" if array.array("I").itemsize == 4 else "L"
 
 
-def uint32s(x: Any, what: str) -> Tuple[Any, int, int]:
+def uint32s(x: object, what: str) -> Tuple[Union["UInt32Array", "array.array[int]"], int, int]:
     """(keep, address, count) of a packed uint32 copy (or view) of ids."""
     if is_ndarray(x):
         a = np.asarray(x)
@@ -362,8 +381,8 @@ def uint32s(x: Any, what: str) -> Tuple[Any, int, int]:
             if a.size and (a.min() < 0 or a.max() > 0xFFFFFFFF):
                 raise ValueError(f"{what} must hold integers in 0..2**32-1")
             a = a.astype(np.uint32)
-        a = np.ascontiguousarray(a)
-        return a, int(a.ctypes.data), int(a.shape[0])
+        ids = cast("UInt32Array", np.ascontiguousarray(a))  # uint32 by the checks above
+        return ids, int(ids.ctypes.data), int(ids.shape[0])
     if isinstance(x, numbers.Integral):
         x = (x,)
     if isinstance(x, (str, bytes)) or not isinstance(x, Iterable):
@@ -387,8 +406,8 @@ class UInt32Output:
     def __init__(self, count: int, shape: Tuple[int, ...], lists: bool = False) -> None:
         self.count = count
         self.shape = shape
-        self.array: Any = None
-        self.buf: Any = None
+        self.array: Optional["UInt32Array"] = None
+        self.buf: Optional["array.array[int]"] = None
         if np is not None and not lists:
             self.array = np.empty(shape, dtype=np.uint32)
             self.address = int(self.array.ctypes.data)
@@ -396,17 +415,28 @@ class UInt32Output:
             self.buf = array.array(_U32, bytes(4 * max(count, 1)))
             self.address = self.buf.buffer_info()[0]
 
-    def result(self) -> Any:
+    def values(self) -> List[int]:
+        """The values as a flat list (made with ``lists``)."""
+        assert self.buf is not None
+        return list(self.buf[: self.count])
+
+    def ids(self) -> "Ids":
+        """A flat result: an array, or a list of ints."""
         if self.array is not None:
             return self.array
+        return self.values()
+
+    def rows(self) -> "IdRows":
+        """A result of shape (rows, k): an array, or a list of k-tuples."""
+        if self.array is not None:
+            return self.array
+        assert self.buf is not None
         values = self.buf[: self.count]
-        if len(self.shape) == 1:
-            return list(values)
         k = self.shape[1]
         return list(zip(*(values[c::k] for c in range(k))))
 
 
-def nested_doubles(x: Any, depth: int, what: str) -> Tuple[Tuple[int, ...], "array.array[float]"]:
+def nested_doubles(x: object, depth: int, what: str) -> Tuple[Tuple[int, ...], "array.array[float]"]:
     """(shape, packed doubles) of a rectangular nested sequence of real numbers, depth levels deep.
 
     Errors name the offending element: ``net[1][2] must be a sequence of real numbers, not int``,
@@ -417,7 +447,7 @@ def nested_doubles(x: Any, depth: int, what: str) -> Tuple[Tuple[int, ...], "arr
     flat: "array.array[float]" = array.array("d")
     lengths: List[Optional[Tuple[int, str]]] = [None] * depth
 
-    def walk(obj: Any, level: int, label: str) -> None:
+    def walk(obj: object, level: int, label: str) -> None:
         if is_ndarray(obj) and obj.ndim == depth - level:
             try:
                 a = np.ascontiguousarray(obj, dtype=np.float64)
@@ -458,8 +488,8 @@ def nested_doubles(x: Any, depth: int, what: str) -> Tuple[Tuple[int, ...], "arr
     return shape, flat
 
 
-def flat_net(net: Any, weights: Any, what: str = "net",
-             wname: str = "weights") -> Tuple[int, int, int, Any, int, Optional[int]]:
+def flat_net(net: object, weights: object, what: str = "net",
+             wname: str = "weights") -> Tuple[int, int, int, object, int, Optional[int]]:
     """(rows, cols, dim, keep, ctrl address, weights address) from a control net.
 
     The net is a numpy array or nested sequence of shape (deg_u+1, deg_v+1, dim); weights None or
@@ -473,7 +503,7 @@ def flat_net(net: Any, weights: Any, what: str = "net",
         except (TypeError, ValueError):
             raise TypeError(f"{what} must hold real numbers, not {net.dtype}") from None
         rows, cols, dim = (int(s) for s in a.shape)
-        ctrl_keep: Any = a
+        ctrl_keep: object = a
         ctrl_addr = int(a.ctypes.data)
     else:
         (rows, cols, dim), flat = nested_doubles(net, 3, what)
@@ -483,7 +513,7 @@ def flat_net(net: Any, weights: Any, what: str = "net",
         ctrl_addr = flat.buffer_info()[0]
     if rows == 0 or cols == 0:
         raise ValueError(f"{what} needs at least one row and one column")
-    w_keep: Any = None
+    w_keep: object = None
     w_addr = None
     if weights is not None:
         wshape, w = nested_doubles(weights, 2, wname)
@@ -493,7 +523,7 @@ def flat_net(net: Any, weights: Any, what: str = "net",
     return rows, cols, dim, (ctrl_keep, w_keep), ctrl_addr, w_addr
 
 
-def packed_doubles(values: Any, shape: Tuple[int, ...], what: str) -> Tuple[Any, int]:
+def packed_doubles(values: object, shape: Tuple[int, ...], what: str) -> Tuple["array.array[float]", int]:
     """A packed C copy of a small nested sequence or array of the given shape."""
     got, flat = nested_doubles(values, len(shape), what)
     if got != shape:
@@ -501,11 +531,25 @@ def packed_doubles(values: Any, shape: Tuple[int, ...], what: str) -> Tuple[Any,
     return flat, flat.buffer_info()[0]
 
 
-def nested(flat: Sequence[float], shape: Sequence[int]) -> Any:
+@overload
+def nested(flat: Sequence[float], shape: Tuple[int, int]) -> List[Tuple[float, ...]]: ...
+
+
+@overload
+def nested(flat: Sequence[float], shape: Tuple[int, int, int]) -> List[List[Tuple[float, ...]]]: ...
+
+
+def nested(flat: Sequence[float], shape: Tuple[int, ...]
+           ) -> Union[List[Tuple[float, ...]], List[List[Tuple[float, ...]]]]:
+    # the length of shape fixes the depth of the result
+    return cast("Union[List[Tuple[float, ...]], List[List[Tuple[float, ...]]]]", _nested(flat, shape))
+
+
+def _nested(flat: Sequence[float], shape: Sequence[int]) -> NestedLists:
     """Split a flat sequence into nested lists; the innermost level becomes tuples."""
     if len(shape) == 1:
         return tuple(flat)
     step = 1
     for s in shape[1:]:
         step *= s
-    return [nested(flat[i * step:(i + 1) * step], shape[1:]) for i in range(shape[0])]
+    return [_nested(flat[i * step:(i + 1) * step], shape[1:]) for i in range(shape[0])]

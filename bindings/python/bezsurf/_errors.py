@@ -2,7 +2,7 @@
 
 import errno as _errno
 import os
-from typing import Any, Dict, Optional, Tuple, Type
+from typing import Dict, Optional, Tuple, Type, Union
 
 
 class BezsurfError(Exception):
@@ -29,12 +29,13 @@ class BezsurfError(Exception):
         where = f"{function}: " if function else ""
         more = f": {detail}" if detail else ""
         super().__init__(f"{where}{message}{more} (status {code})")
-        self._init: Tuple[Any, ...] = (code, message, function, detail)
+        # the constructor's arguments: ints, strings and None
+        self._init: Tuple[Union[int, str, None], ...] = (code, message, function, detail)
 
     def __str__(self) -> str:
         return str(self.args[0]) if self.args else ""
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Type["BezsurfError"], Tuple[Union[int, str, None], ...]]:
         # Rebuilt from the constructor's arguments: exceptions cross process boundaries
         # (multiprocessing) by pickling.
         return (type(self), self._init)

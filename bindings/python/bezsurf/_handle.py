@@ -1,7 +1,7 @@
 """Ownership of C handles: deterministic release and parents kept alive by their children."""
 
 import ctypes
-from typing import Any, Callable, Optional, TypeVar
+from typing import Callable, Optional, TypeVar
 
 _H = TypeVar("_H", bound="Handle")
 
@@ -15,7 +15,7 @@ class Handle:
     it never releases the handle itself; it becomes unusable once the parent is closed.
     """
 
-    _destroy: Optional[Callable[[Any], None]] = None
+    _destroy: Optional[Callable[[int], None]] = None
 
     def __init__(self) -> None:  # pragma: no cover - subclasses build through _adopt
         raise TypeError("use a subclass")
@@ -51,7 +51,7 @@ class Handle:
     def __enter__(self: _H) -> _H:
         return self
 
-    def __exit__(self, *exc: Any) -> None:
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
     def __del__(self) -> None:

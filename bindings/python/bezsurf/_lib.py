@@ -13,7 +13,7 @@ import sys
 import sysconfig
 from ctypes import (POINTER, c_char_p, c_double, c_int, c_size_t, c_ssize_t, c_ubyte, c_uint,
                     c_uint32, c_void_p)
-from typing import Any, Callable, Dict, List, Sequence, Tuple
+from typing import Any, Callable, Dict, List, NoReturn, Sequence, Tuple, Type, Union
 
 from ._errors import ERROR_CLASSES, BezsurfError, BezsurfIOError, io_error
 
@@ -120,7 +120,8 @@ PARSE_ERROR = POINTER(CParseError)
 IDS = c_void_p          # a uint32_t * (input or output)
 
 # (name, argtypes, restype): the one declaration of every C function the binding uses.
-FUNCTIONS: Sequence[Tuple[str, Sequence[Any], Any]] = (
+_CType = Type["ctypes._CData"]  # a ctypes type: c_int, POINTER(View), a Structure, ...
+FUNCTIONS: Sequence[Tuple[str, Sequence[_CType], Union[_CType, _Status, None]]] = (
     # core.h: version and status
     ("bs_version_number", (), c_uint),
     ("bs_version_string", (), c_char_p),
@@ -300,7 +301,7 @@ class Library:
                 fn.restype = restype
             setattr(self, name, fn)
 
-    def _check(self, result: int, func: Any, args: Any) -> int:
+    def _check(self, result: int, func: object, args: Tuple[object, ...]) -> int:
         if result < 0:
             # errno as the failed call left it (the library is loaded with use_errno; callers
             # of I/O functions clear it first), read before anything else can change it
@@ -308,13 +309,14 @@ class Library:
             raise error_for(self.dll, result, getattr(func, "__name__", ""), errno)
         return result
 
+    # Any: a foreign function returns what its restype makes of the C result (int, bytes, None, ...)
     def __getattr__(self, name: str) -> Callable[..., Any]:
         # Only reached for names outside FUNCTIONS: a programming error in the binding.
         raise AttributeError(f"{name} is not declared in bezsurf._lib.FUNCTIONS")
 
 
-def _missing_stub(name: str) -> Callable[..., Any]:
-    def stub(*args: Any) -> Any:
+def _missing_stub(name: str) -> Callable[..., NoReturn]:
+    def stub(*args: object) -> NoReturn:
         raise NotImplementedError(f"the loaded libbezsurf does not export {name}")
     stub.__name__ = name
     return stub

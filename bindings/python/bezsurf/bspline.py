@@ -1,7 +1,7 @@
 """The BSpline class: a B-spline or NURBS surface, cut into Bezier patches by a Surface."""
 
 import ctypes
-from typing import Any, List, Optional, Tuple
+from typing import List, Optional, Tuple, Type
 
 from . import _args as A
 from . import _buffers as B
@@ -87,7 +87,7 @@ class BSpline:
                               ctypes.byref(lu), ctypes.byref(lv))
         return index.value, lu.value, lv.value
 
-    def _add_to(self, surface_ptr: Any) -> B.Points:
+    def _add_to(self, surface_ptr: ctypes.c_void_p) -> B.Points:
         nu, nv = self.span_count()
         res = B.Output(nu * nv, 4, what="spans")
         # The library writes u0 u1 v0 v1 per patch packed; read through a packed scratch copy.
@@ -104,7 +104,7 @@ class BSpline:
             return result
         return rows
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Type["BSpline"], Tuple[Nested, B.RealsIn, B.RealsIn, Optional[Nested]]]:
         return (BSpline, self._args)
 
     def __repr__(self) -> str:

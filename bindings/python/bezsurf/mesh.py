@@ -13,8 +13,6 @@ from ._handle import Handle
 from ._lib import LIB, CTessOptions
 
 if TYPE_CHECKING:
-    import numpy.typing as npt
-
     from .model import Model
     from .surface import Surface
 
@@ -39,7 +37,13 @@ def format_of_path(path: A.PathArg) -> Format:
                          f"use one of {known} or pass format=") from None
 
 
-OutArray = Optional["npt.NDArray[Any]"]
+OutArray = B.OutArray
+
+#: The fields of a bs_tess_options, in the order tess_options() takes them.
+TessOptionsArgs = Tuple[int, int, int, int, float, int, int, int]
+#: Tessellation arguments as a mesh keeps them: (nu, nv, flags) for "uniform", (tolerance, flags)
+#: for "adaptive", else TessOptionsArgs; ints but for the tolerance.
+TessArgs = Tuple[Union[int, float], ...]
 
 
 def tess_options(method: int, flags: int, nu: int, nv: int, tolerance: float,
@@ -57,7 +61,7 @@ def tess_options(method: int, flags: int, nu: int, nv: int, tolerance: float,
 TESS_MAX_RATE = 1024
 
 
-def explain_tessellation(exc: BezsurfError, surface: "Surface", method: str, args: Tuple[Any, ...]) -> BezsurfError:
+def explain_tessellation(exc: BezsurfError, surface: "Surface", method: str, args: "TessArgs") -> BezsurfError:
     """A tessellator's error with the argument, its value and the limit it broke."""
     if method == "uniform":
         args = (0, args[2], args[0], args[1], 1e-3, 0, 0)
@@ -75,7 +79,8 @@ def explain_tessellation(exc: BezsurfError, surface: "Surface", method: str, arg
         nverts, ntris = ctypes.c_size_t(), ctypes.c_size_t()
         try:
             LIB.bs_surface_tessellate_count(surface._ptr, ctypes.byref(
-                tess_options(kind, flags, nu, nv, tol, 0, 0)), ctypes.byref(nverts),
+                tess_options(*cast(TessOptionsArgs, (kind, flags, nu, nv, tol, 0, 0, 1)))),
+                ctypes.byref(nverts),
                 ctypes.byref(ntris))
         except BezsurfError:
             return exc
@@ -105,14 +110,14 @@ class Mesh(Handle):
     """
 
     _destroy = LIB.bs_mesh_destroy
-    _recipe: Tuple[Union["Surface", "Model"], str, Tuple[Any, ...]]
+    _recipe: Tuple[Union["Surface", "Model"], str, "TessArgs"]
 
     def __init__(self) -> None:
         raise TypeError("meshes are made by Surface.tessellate() and Surface.tessellate_adaptive()")
 
     @classmethod
     def _tessellate(cls, surface: Union["Surface", "Model"], method: str,
-                    args: Tuple[Any, ...]) -> "Mesh":
+                    args: "TessArgs") -> "Mesh":
         """Tessellate ``surface`` (a copy the mesh keeps as its recipe): a Surface, or a Model
         for method "model"."""
         out = ctypes.c_void_p()
@@ -122,10 +127,10 @@ class Mesh(Handle):
             elif method == "adaptive":
                 LIB.bs_surface_tessellate_adaptive(surface._ptr, *args, ctypes.byref(out))
             elif method == "model":
-                LIB.bs_model_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
+                LIB.bs_model_tessellate(surface._ptr, ctypes.byref(tess_options(*cast(TessOptionsArgs, args))),
                                         ctypes.byref(out))
             elif method == "options":
-                LIB.bs_surface_tessellate(surface._ptr, ctypes.byref(tess_options(*args)),
+                LIB.bs_surface_tessellate(surface._ptr, ctypes.byref(tess_options(*cast(TessOptionsArgs, args))),
                                           ctypes.byref(out))
             else:
                 raise ValueError(f"unknown tessellation method {method!r}")
@@ -146,10 +151,11 @@ class Mesh(Handle):
     def __copy__(self) -> "Mesh":
         return self._remake()
 
-    def __deepcopy__(self, memo: Dict[int, Any]) -> "Mesh":
+    def __deepcopy__(self, memo: Dict[int, object]) -> "Mesh":
         return self._remake()
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Callable[[Union["Surface", "Model"], str, "TessArgs"], "Mesh"],
+                                  Tuple[Union["Surface", "Model"], str, "TessArgs"]]:
         self._ptr  # a closed mesh is not pickled
         return (Mesh._tessellate, self._recipe)
 
@@ -168,12 +174,11 @@ class Mesh(Handle):
         """Number of triangle strips (0 unless tessellated with ``strips=True``)."""
         return int(LIB.bs_mesh_strip_count(self._ptr))
 
-    def _views(self, fn: Callable[..., Any], n: int, k: int, out: OutArray,
+    def _views(self, fn: Callable[..., object], n: int, k: int, out: OutArray,
                float32: bool = False) -> Points:
         res = B.Output(n, k, out, "out", float32)
         fn(self._ptr, res.views)
-        result: Points = res.result()
-        return result
+        return res.result()
 
     def positions(self, *, out: OutArray = None, float32: bool = False) -> Points:
         """Vertex positions, (vertex_count, 3); with ``float32`` as float32, each value the
@@ -196,28 +201,25 @@ class Mesh(Handle):
         """(u, v) of every triangle corner on the triangle's own patch, (3 * triangle_count, 2)."""
         return self._views(LIB.bs_mesh_copy_corner_uv, 3 * self.triangle_count, 2, out)
 
-    def _ids(self, fn: Callable[..., Any], count: int, shape: Tuple[int, ...]) -> Any:
+    def _ids(self, fn: Callable[..., object], count: int, shape: Tuple[int, ...]) -> B.UInt32Output:
         res = B.UInt32Output(count, shape)
         fn(self._ptr, res.address, count)
-        return res.result()
+        return res
 
     def patch_ids(self) -> Ids:
         """Per vertex, the id of the patch it was evaluated on (uint32)."""
         n = self.vertex_count
-        result: Ids = self._ids(LIB.bs_mesh_copy_patch_ids, n, (n,))
-        return result
+        return self._ids(LIB.bs_mesh_copy_patch_ids, n, (n,)).ids()
 
     def triangles(self) -> IdRows:
         """Vertex index triples, (triangle_count, 3) (uint32)."""
         n = self.triangle_count
-        result: IdRows = self._ids(LIB.bs_mesh_copy_triangles, 3 * n, (n, 3))
-        return result
+        return self._ids(LIB.bs_mesh_copy_triangles, 3 * n, (n, 3)).rows()
 
     def triangle_patch_ids(self) -> Ids:
         """Per triangle, the id of the patch it tessellates (uint32)."""
         n = self.triangle_count
-        result: Ids = self._ids(LIB.bs_mesh_copy_triangle_patch_ids, n, (n,))
-        return result
+        return self._ids(LIB.bs_mesh_copy_triangle_patch_ids, n, (n,)).ids()
 
     def strips(self) -> List[List[int]]:
         """The triangle strips as lists of vertex indices. Triangle i of a strip s is
@@ -225,14 +227,15 @@ class Mesh(Handle):
         a repeated index (at poles) are degenerate and to be dropped. A mesh made without
         ``strips=True`` has none: ValueError (1.2; 1.1 returned [])."""
         _, method, args = self._recipe
-        if not (args[2] if method == "uniform" else args[1]) & 2:  # BS_TESS_STRIPS
+        flags = cast(int, args[2] if method == "uniform" else args[1])  # the flags are an int
+        if not flags & 2:  # BS_TESS_STRIPS
             raise ValueError("the mesh was made without strips: tessellate with strips=True")
         nidx = int(LIB.bs_mesh_strip_index_count(self._ptr))
         nstart = self.strip_count + 1
         idx = B.UInt32Output(nidx, (nidx,), lists=True)
         start = B.UInt32Output(nstart, (nstart,), lists=True)
         LIB.bs_mesh_copy_strips(self._ptr, idx.address, nidx, start.address, nstart)
-        flat, offsets = idx.result(), start.result()
+        flat, offsets = idx.values(), start.values()
         return [flat[offsets[k]:offsets[k + 1]] for k in range(nstart - 1)]
 
     def write(self, path: A.PathArg, format: Optional[FormatArg] = None) -> None:

@@ -3,7 +3,7 @@ STEP, IGES and OBJ files (docs/models.md)."""
 
 import ctypes
 import os
-from typing import Any, Dict, List, NamedTuple, Optional, Tuple, Union
+from typing import Callable, Dict, List, NamedTuple, Optional, Tuple, Type, Union, cast
 
 from . import _args as A
 from . import _buffers as B
@@ -16,6 +16,14 @@ from .mesh import Mesh, tess_options
 from .patch import Params, _Call
 from .query import Locator
 from .surface import Surface, _located, _with_file
+
+try:  # numpy is optional
+    import numpy as np
+except ImportError:  # pragma: no cover - depends on the interpreter
+    np = None  # type: ignore[assignment]
+
+#: What a model is made again from: ("surface", a Surface) or (format, the file's bytes).
+_Source = Tuple[str, Union[Surface, bytes]]
 
 #: Surface kinds of faces (``Face.kind``), in the order of the C constants BS_FACE_*.
 FACE_KINDS = ("bezier", "bspline", "plane", "cylinder", "cone", "sphere", "torus", "revolution",
@@ -94,10 +102,10 @@ class Model(Handle):
         out = ctypes.c_void_p()
         LIB.bs_model_from_surface(surface._ptr, ctypes.byref(out))
         self._adopt(out.value)  # type: ignore[arg-type]
-        self._source: Tuple[str, Any] = ("surface", surface.clone())
+        self._source: _Source = ("surface", surface.clone())
 
     @classmethod
-    def _wrap(cls, handle: Optional[int], source: Tuple[str, Any]) -> "Model":
+    def _wrap(cls, handle: Optional[int], source: _Source) -> "Model":
         m = cls.__new__(cls)
         m._adopt(handle)  # type: ignore[arg-type]
         m._source = source
@@ -201,14 +209,14 @@ class Model(Handle):
         s._adopt(handle, self)
         return s
 
-    def _face_ids(self, faces: IdsIn, call: _Call) -> Tuple[Any, int]:
+    def _face_ids(self, faces: IdsIn, call: _Call) -> Tuple[object, int]:
         if isinstance(faces, int) and not isinstance(faces, bool) and not call.scalar:
             faces = [faces] * call.n
         keep, addr, n = B.uint32s(faces, "faces")
         if n != call.n:
             raise ValueError(f"faces and u must have the same length ({n} != {call.n})")
         count = len(self)
-        ids = keep if B.is_ndarray(keep) else list(keep)
+        ids: Union["B.RealArray", List[int]] = keep if B.is_ndarray(keep) else list(keep)
         if n and max(ids) >= count:
             raise IndexError(f"a face id is out of range: the model has {count} faces")
         return keep, addr
@@ -238,7 +246,7 @@ class Model(Handle):
         LIB.bs_model_face_to_patch(self._ptr, call.n, addr, call.u, call.v, ids.address,
                                    st.views)
         del keep
-        patch = ids.result()
+        patch = ids.ids()
         return (patch[0] if call.scalar else patch), call.finish(st.result())
 
     def patch_to_face(self, patches: IdsIn, s: Params, t: Params) -> Tuple[IdOrIds, PointOrPoints]:
@@ -252,7 +260,7 @@ class Model(Handle):
         if n != call.n:
             raise ValueError(f"patches and s must have the same length ({n} != {call.n})")
         count = LIB.bs_surface_count(LIB.bs_model_surface(self._ptr))
-        ids = keep if B.is_ndarray(keep) else list(keep)
+        ids: Union["B.RealArray", List[int]] = keep if B.is_ndarray(keep) else list(keep)
         if n and max(ids) >= count:
             raise IndexError(f"a patch id is out of range: the model has {count} patches")
         uv = call.output(2, None, "uv")
@@ -260,7 +268,7 @@ class Model(Handle):
         LIB.bs_model_patch_to_face(self._ptr, call.n, addr, call.u, call.v, faces.address,
                                    uv.views)
         del keep
-        face = faces.result()
+        face = faces.ids()
         return (face[0] if call.scalar else face), call.finish(uv.result())
 
     def classify(self, faces: IdsIn, u: Params, v: Params, tol: float = 0.0) -> CodeOrCodes:
@@ -279,7 +287,7 @@ class Model(Handle):
         if call.scalar:
             return values[0]
         if B.have_numpy():
-            np = B.need_numpy()
+            B.need_numpy()
             codes: CodeOrCodes = np.array(values, dtype=np.uint8)
             return codes
         return values
@@ -350,10 +358,10 @@ class Model(Handle):
 
     __copy__ = clone
 
-    def __deepcopy__(self, memo: Dict[int, Any]) -> "Model":
+    def __deepcopy__(self, memo: Dict[int, object]) -> "Model":
         return self.clone()
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Callable[[str, Union[Surface, bytes]], "Model"], _Source]:
         return (_rebuild, self._source)
 
     def __repr__(self) -> str:
@@ -364,11 +372,11 @@ class Model(Handle):
                 f"{len(self.shells)} shells ({closed} closed)>")
 
 
-def _rebuild(fmt: str, source: Any) -> Model:
+def _rebuild(fmt: str, source: Union[Surface, bytes]) -> Model:
     """A model made again from what it was made of (pickling, copies)."""
     if fmt == "surface":
-        return Model(source)
-    return Model._read_text(fmt, source)
+        return Model(cast(Surface, source))
+    return Model._read_text(fmt, cast(bytes, source))
 
 
 __all__ = ["Model", "Face", "FaceEvaluation", "Properties", "FACE_KINDS", "TRIM_OUTSIDE", "TRIM_INSIDE",
@@ -396,11 +404,11 @@ class ModelLocator(Locator):
         self._adopt(out.value)  # type: ignore[arg-type]
         self._model = model  # the C locator refers to the model: keep it alive
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Type["ModelLocator"], Tuple[Model]]:
         self._ptr  # a closed locator is not copied
         return (ModelLocator, (self._model,))
 
-    def __deepcopy__(self, memo: Dict[int, Any]) -> "ModelLocator":
+    def __deepcopy__(self, memo: Dict[int, object]) -> "ModelLocator":
         return ModelLocator(self._model)
 
     def __repr__(self) -> str:

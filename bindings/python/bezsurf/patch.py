@@ -3,7 +3,7 @@
 import array
 import ctypes
 from typing import (TYPE_CHECKING, Any, Dict, List, Literal, NamedTuple, Optional, Sequence,
-                    Tuple, Union, overload)
+                    SupportsFloat, Tuple, Type, Union, cast, overload)
 
 from . import _args as A
 from . import _buffers as B
@@ -13,10 +13,13 @@ from ._errors import DegreeError, DimensionError, with_detail
 from ._handle import Handle
 from ._lib import LIB, CCurve
 
+try:  # numpy is optional
+    import numpy as np
+except ImportError:  # pragma: no cover - depends on the interpreter
+    np = None  # type: ignore[assignment]
+
 if TYPE_CHECKING:
     from .query import ClosestPoints
-    import numpy as np
-    import numpy.typing as npt
 
 #: Directions for split(), isocurve() and reverse(); 'u' and 'v' are accepted as well.
 DIR_U = Direction.U
@@ -35,9 +38,9 @@ ParamSeq = B.RealsIn
 Params = Union[float, ParamSeq]
 #: A control net (deg_u+1, deg_v+1, dim), a weight grid, a curve's points or a matrix: nested
 #: sequences of real numbers or a numpy array.
-Nested = Union[Sequence[Any], "npt.NDArray[Any]", memoryview]
-#: An ``out=`` array: a float64 numpy array of the result's shape.
-OutArray = Optional["npt.NDArray[Any]"]
+Nested = B.Nested
+#: An ``out=`` array: a numpy array of the result's dtype (float64, float32 or uint8) and shape.
+OutArray = B.OutArray
 
 class Curve(NamedTuple):
     """A Bezier curve: its control points and, when rational, its weights (else None).
@@ -48,8 +51,8 @@ class Curve(NamedTuple):
     also take a bare sequence of points for a polynomial curve.
     """
 
-    points: Any
-    weights: Optional[Any] = None
+    points: B.Grid
+    weights: Optional[B.Reals] = None
 
 
 class Evaluation(NamedTuple):
@@ -67,8 +70,8 @@ class Evaluation(NamedTuple):
     kind: Optional[KindOrKinds] = None
 
 
-def _check_requested(derivatives: bool, normals: bool, du_out: Any, dv_out: Any,
-                     normal_out: Any, kind_out: Any) -> None:
+def _check_requested(derivatives: bool, normals: bool, du_out: object, dv_out: object,
+                     normal_out: object, kind_out: object) -> None:
     """An output array given for a result that was not asked for is a mistake, not a no-op."""
     if not derivatives and (du_out is not None or dv_out is not None):
         raise ValueError("du_out and dv_out need derivatives=True")
@@ -97,6 +100,8 @@ class Curvature(NamedTuple):
     kind: Union["B.UInt8Array", List[CurvatureKind], CurvatureKind, "np.uint8"]
 
 
+# Any: the result is one point, kind or number of a result when u and v were scalars, which is
+# known at run time only; the public overloads state the precise types.
 def _squeeze(value: Any) -> Any:
     """The single point of a one-point result (scalar parameters)."""
     if value is None:
@@ -206,20 +211,21 @@ class Patch(Handle):
         LIB.bs_patch_get_ctrl(self._ptr, None, 0, buf.buffer_info()[0], len(buf))
         return [list(buf[i * cols:(i + 1) * cols]) for i in range(rows)]
 
-    def ctrl_array(self, out: OutArray = None) -> "npt.NDArray[Any]":
+    def ctrl_array(self, out: OutArray = None) -> "B.FloatArray":
         """The control net as a numpy array of shape (deg_u+1, deg_v+1, dim), written by the
         library into ``out`` (a C-contiguous float64 array of that shape) or a new array."""
-        np = B.need_numpy()
-        arr: "npt.NDArray[Any]" = out if out is not None else np.empty(self.shape)
+        B.need_numpy()
+        # the dtype of out is checked by _check_packed
+        arr = cast("B.FloatArray", out) if out is not None else np.empty(self.shape)
         _check_packed(arr, self.shape, "out")
         LIB.bs_patch_get_ctrl(self._ptr, arr.ctypes.data, arr.size, None, 0)
         return arr
 
-    def weights_array(self, out: OutArray = None) -> "npt.NDArray[Any]":
+    def weights_array(self, out: OutArray = None) -> "B.FloatArray":
         """The weights as a numpy array of shape (deg_u+1, deg_v+1); all ones when polynomial."""
-        np = B.need_numpy()
+        B.need_numpy()
         shape = self.shape[:2]
-        arr: "npt.NDArray[Any]" = out if out is not None else np.empty(shape)
+        arr = cast("B.FloatArray", out) if out is not None else np.empty(shape)
         _check_packed(arr, shape, "out")
         LIB.bs_patch_get_ctrl(self._ptr, None, 0, arr.ctypes.data, arr.size)
         return arr
@@ -232,10 +238,11 @@ class Patch(Handle):
 
     __copy__ = clone
 
-    def __deepcopy__(self, memo: Dict[int, Any]) -> "Patch":
+    def __deepcopy__(self, memo: Dict[int, object]) -> "Patch":
         return self.clone()
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Type["Patch"], Tuple[List[List[Tuple[float, ...]]],
+                                                       Optional[List[List[float]]]]]:
         # The control data, rebuilt by Patch(net, weights) on load (also for borrowed patches).
         return (Patch, (self.ctrl, self.weights))
 
@@ -276,7 +283,7 @@ class Patch(Handle):
 
     def eval(self, u: Params, v: Params, *, derivatives: bool = False, normals: bool = False,
              out: OutArray = None, du_out: OutArray = None, dv_out: OutArray = None,
-             normal_out: OutArray = None, kind_out: OutArray = None) -> Any:
+             normal_out: OutArray = None, kind_out: OutArray = None) -> object:
         """Evaluate the patch at the n points (u[k], v[k]).
 
         Returns the positions S(u, v), shape (n, dim), unless ``derivatives`` or ``normals`` is
@@ -325,7 +332,7 @@ class Patch(Handle):
                    out: OutArray = ...) -> Points: ...
 
     def eval_deriv(self, ku: int, kv: int, u: Params, v: Params, *,
-                   out: OutArray = None) -> Any:
+                   out: OutArray = None) -> object:
         """The mixed partial derivative d^(ku+kv) S / du^ku dv^kv at the n points (u[k], v[k]).
 
         Orders beyond the degree give zero (polynomial patches); (0, 0) gives positions. Result
@@ -374,9 +381,11 @@ class Patch(Handle):
         LIB.bs_patch_eval_curvature(self._ptr, call.n, call.u, call.v, curv.views, dmin.views,
                                     dmax.views, kinds.address)
         k = curv.result()
+        cols: List[Union["B.RealArray", List[float]]]
+        kind: Union["B.UInt8Array", List[CurvatureKind]]
         if B.is_ndarray(k):
             cols = [k[:, i] for i in range(4)]
-            kind: Any = kinds.result()
+            kind = cast("B.UInt8Array", kinds.result())  # an array, as k is
         else:
             cols = [[row[i] for row in k] for i in range(4)]
             kind = [CURVATURE_KINDS[int(x)] for x in kinds.result()]
@@ -420,7 +429,7 @@ class Patch(Handle):
     def eval_grid(self, u: Params, v: Params, *, derivatives: bool = False,
                   normals: bool = False, out: OutArray = None, du_out: OutArray = None,
                   dv_out: OutArray = None, normal_out: OutArray = None,
-                  kind_out: OutArray = None, float32: bool = False) -> Any:
+                  kind_out: OutArray = None, float32: bool = False) -> object:
         """Evaluate on the tensor grid of every u[a] with every v[b].
 
         Point (a, b) is row a*len(v) + b of results of shape (len(u)*len(v), dim) (for numpy,
@@ -509,18 +518,16 @@ class Patch(Handle):
         dim = self.dim
         rational = self.rational
         if B.have_numpy():
-            np = B.need_numpy()
-            pts: Any = np.empty((npts, dim))
-            w: Any = np.empty(npts) if rational else None
+            pts = np.empty((npts, dim))
+            w = np.empty(npts) if rational else None
             paddr, waddr = pts.ctypes.data, (w.ctypes.data if w is not None else None)
-        else:
-            pts = array.array("d", bytes(8 * npts * dim))
-            w = array.array("d", bytes(8 * npts)) if rational else None
-            paddr, waddr = pts.buffer_info()[0], (w.buffer_info()[0] if w is not None else None)
-        LIB.bs_patch_isocurve(self._ptr, d, t, paddr, npts * dim, waddr, npts if rational else 0)
-        if B.have_numpy():
+            LIB.bs_patch_isocurve(self._ptr, d, t, paddr, npts * dim, waddr, npts if rational else 0)
             return Curve(pts, w)
-        return Curve(B.nested(pts, (npts, dim)), list(w) if w is not None else None)
+        flat = array.array("d", bytes(8 * npts * dim))
+        wflat = array.array("d", bytes(8 * npts)) if rational else None
+        paddr, waddr = flat.buffer_info()[0], (wflat.buffer_info()[0] if wflat is not None else None)
+        LIB.bs_patch_isocurve(self._ptr, d, t, paddr, npts * dim, waddr, npts if rational else 0)
+        return Curve(B.nested(flat, (npts, dim)), list(wflat) if wflat is not None else None)
 
     def bounds(self) -> Tuple[Tuple[float, ...], Tuple[float, ...]]:
         """(lo, hi): the bounding box of the control net, which contains the patch."""
@@ -536,7 +543,9 @@ class Patch(Handle):
         homogeneous (dim+1) x (dim+1) matrix whose last row is 0 ... 0 1 (a 4 x 4 matrix for a
         3-D patch, since 1.2); another last row is a ValueError (a projective map)."""
         dim = self.dim
-        rows: Any = affine if B.is_ndarray(affine) else list(affine)
+        # rows of real numbers, checked below and by packed_doubles
+        rows: Union["B.RealArray", List[B.Reals]] = \
+            affine if B.is_ndarray(affine) else list(cast("Sequence[B.Reals]", affine))
         if len(rows) == dim + 1:
             last = [float(x) for x in rows[dim]]
             if last != [0.0] * dim + [1.0]:
@@ -590,7 +599,8 @@ class Patch(Handle):
 class _CurveArg:
     """A bs_curve built from a Curve or a bare point sequence, with its buffers kept alive."""
 
-    def __init__(self, curve: Any, what: str) -> None:
+    def __init__(self, curve: Union[Curve, Nested], what: str) -> None:
+        points: Nested
         if isinstance(curve, Curve):
             points, weights = curve.points, curve.weights
             pname = f"{what}.points"
@@ -601,7 +611,7 @@ class _CurveArg:
         if npts == 0:
             raise ValueError(f"{pname} needs at least one point")
         w_addr = None
-        keep: List[Any] = [ctrl]
+        keep: List["array.array[float]"] = [ctrl]
         if weights is not None:
             (nw,), w = B.nested_doubles(weights, 1, f"{what}.weights")
             if nw != npts:
@@ -612,8 +622,8 @@ class _CurveArg:
         self.c = CCurve(npts - 1, dim, ctrl.buffer_info()[0], w_addr)
 
 
-def _check_packed(arr: Any, shape: Sequence[int], what: str) -> None:
-    np = B.need_numpy()
+def _check_packed(arr: object, shape: Sequence[int], what: str) -> None:
+    B.need_numpy()
     if not isinstance(arr, np.ndarray):
         raise TypeError(f"{what} must be a numpy array, not {type(arr).__name__}")
     if arr.dtype != np.float64 or arr.shape != tuple(shape) \
@@ -626,19 +636,19 @@ class _Call:
     """The parameter views of one evaluation call, its outputs and how its results are shaped."""
 
     def __init__(self, u: Params, v: Params, grid: bool = False,
-                 inputs: Sequence[Tuple[str, Any]] = ()) -> None:
+                 inputs: Sequence[Tuple[str, object]] = ()) -> None:
         self.scalar = B.is_scalar(u) and B.is_scalar(v)
         if not grid and B.is_scalar(u) != B.is_scalar(v):  # a scalar pairs with every value
             n = B.doubles(v if B.is_scalar(u) else u, "v" if B.is_scalar(u) else "u").count
-            scalar: Any = u if B.is_scalar(u) else v
+            scalar = cast(SupportsFloat, u if B.is_scalar(u) else v)  # a number, checked above
             if B.is_scalar(u):
                 u = [float(scalar)] * n
             else:
                 v = [float(scalar)] * n
         du = B.doubles(u, "u")
         dv = B.doubles(v, "v")
-        self.inputs: List[Tuple[str, Any]] = [("u", du.keep), ("v", dv.keep)] + list(inputs)
-        self.given: List[Tuple[str, Any]] = []
+        self.inputs: List[Tuple[str, object]] = [("u", du.keep), ("v", dv.keep)] + list(inputs)
+        self.given: List[Tuple[str, object]] = []
         self.u = du.cview()
         self.v = dv.cview()
         self.nu = self.nv = 0
@@ -650,13 +660,13 @@ class _Call:
                 raise ValueError(f"u and v must have the same length ({du.count} != {dv.count})")
             self.n = du.count
 
-    def output(self, k: int, out: Any, what: str, float32: bool = False) -> B.Output:
+    def output(self, k: int, out: object, what: str, float32: bool = False) -> B.Output:
         res = B.Output(self.n, k, out, what, float32)
         if out is not None:
             self.given.append((what, out))
         return res
 
-    def kinds(self, out: Any) -> B.KindOutput:
+    def kinds(self, out: object) -> B.KindOutput:
         res = B.KindOutput(self.n, out)
         if out is not None:
             self.given.append(("kind_out", out))
@@ -666,5 +676,5 @@ class _Call:
         if self.given:
             B.check_disjoint(self.given, self.inputs)
 
-    def finish(self, value: Any) -> Any:
+    def finish(self, value: Any) -> Any:  # Any: as _squeeze
         return _squeeze(value) if self.scalar else value

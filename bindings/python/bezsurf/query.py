@@ -3,7 +3,7 @@ and ray intersection over a whole surface)."""
 
 import ctypes
 import math
-from typing import TYPE_CHECKING, Any, Dict, NamedTuple, Optional, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, List, NamedTuple, Optional, Tuple, Type, Union
 
 from . import _args as A
 from . import _buffers as B
@@ -13,6 +13,7 @@ from ._handle import Handle
 from ._lib import LIB, CView
 
 if TYPE_CHECKING:
+    from .model import Model
     from .patch import Patch
     from .surface import Surface
 
@@ -49,7 +50,7 @@ class RayHits(NamedTuple):
         """Where a ray hit, so that a miss need not be spelled NO_PATCH (4294967295): a bool
         numpy array of shape (n,) with numpy, else a list of bools (one bool for one ray;
         since 1.2). ``hits.patch[hits.hit]`` are the patches hit."""
-        patch: Any = self.patch
+        patch = self.patch
         if isinstance(patch, (list, tuple)):
             return [p != NO_PATCH for p in patch]
         if B.is_ndarray(patch) and patch.ndim > 0:
@@ -58,13 +59,14 @@ class RayHits(NamedTuple):
         return bool(patch != NO_PATCH)  # one ray: int or numpy scalar
 
 
-def _column(points: Any) -> Any:
+def _column(points: B.Points) -> Union["B.RealArray", List[float]]:
     """The single column of an (n, 1) result as (n,)."""
     if B.is_ndarray(points):
         return points[:, 0]
     return [row[0] for row in points]
 
 
+# Any: as patch._squeeze, one item of the result when the query was one point
 def _finish(scalar: bool, value: Any) -> Any:
     return value[0] if scalar and value is not None else value
 
@@ -101,14 +103,14 @@ class Locator(Handle):
         # copies and pickles rebuild the locator from the surface it was made from
         self._surface = surface.clone()
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Type["Locator"], Tuple[Union["Surface", "Model"]]]:
         self._ptr  # a closed locator is not copied
         return (Locator, (self._surface,))
 
     def __copy__(self) -> "Locator":
         return self  # immutable
 
-    def __deepcopy__(self, memo: Dict[int, Any]) -> "Locator":
+    def __deepcopy__(self, memo: Dict[int, object]) -> "Locator":
         return Locator(self._surface)
 
     @property
@@ -134,7 +136,7 @@ class Locator(Handle):
                                         dist.views, pos.views, threads)
         if self.dim == 0:
             pos.fill(math.nan)  # the library writes no coordinate for a surface of none
-        return ClosestPoints(_finish(q.scalar, ids.result()), _finish(q.scalar, uv.result()),
+        return ClosestPoints(_finish(q.scalar, ids.ids()), _finish(q.scalar, uv.result()),
                              _finish(q.scalar, _column(dist.result())),
                              _finish(q.scalar, pos.result()))
 
@@ -169,7 +171,7 @@ class Locator(Handle):
             raise ValueError(f"origins and directions must have the same length "
                              f"({org.n} != {dirs.n})")
         n = org.n
-        trange: Any = None
+        trange: Optional["ctypes.Array[CView]"] = None
         keep = []
         if t_min is not None or t_max is not None:
             trange = (CView * 2)()
@@ -195,7 +197,7 @@ class Locator(Handle):
             LIB.bs_locator_intersect_mt(self._ptr, n, org.views, dirs.views, trange, ids.address,
                                         uv.views, t.views, nrm.views, threads)
         scalar = org.scalar and dirs.scalar
-        hits = RayHits(_finish(scalar, ids.result()), _finish(scalar, uv.result()),
+        hits = RayHits(_finish(scalar, ids.ids()), _finish(scalar, uv.result()),
                        _finish(scalar, _column(t.result())), _finish(scalar, nrm.result()))
         if kinds is None:
             return hits, None

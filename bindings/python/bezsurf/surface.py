@@ -3,8 +3,8 @@
 import ctypes
 import numbers
 import os
-from typing import (Any, Dict, Iterable, Iterator, List, Literal, NamedTuple, Optional, Tuple,
-                    Union, overload)
+from typing import (Any, Callable, Dict, Iterable, Iterator, List, Literal, NamedTuple, Optional, Tuple,
+                    Type, Union, overload)
 
 from . import _args as A
 from . import _buffers as B
@@ -15,7 +15,7 @@ from ._errors import (BezsurfError, BezsurfIOError, DomainError, InvalidArgument
 from ._handle import Handle
 from ._lib import LIB, CEdgeContinuity, COpenEdge, CParseError
 from .bspline import BSpline
-from .mesh import Mesh, explain_tessellation, tess_options
+from .mesh import Mesh, TessOptionsArgs, explain_tessellation, tess_options
 from .query import Locator
 from .patch import (Evaluation, Nested, OutArray, Params, ParamSeq, Patch, _Call,
                     _check_requested)
@@ -74,7 +74,7 @@ def builtin_names() -> List[str]:
 _SURFACE_EXTENSIONS = {".bpt": "bpt", ".obj": "obj", ".igs": "iges", ".iges": "iges"}
 
 
-def _surface_format(path: Any, format: Optional[str], default: str) -> str:
+def _surface_format(path: A.PathArg, format: Optional[str], default: str) -> str:
     """The format named by ``format`` ("bpt", "obj", "iges", "igs"), else by the extension of
     ``path``, else ``default``."""
     if format is None:
@@ -152,7 +152,7 @@ class Surface(Handle):
         return cls._wrap(out.value)
 
     @classmethod
-    def _read_text(cls, reader: Any, text: Union[str, bytes]) -> "Surface":
+    def _read_text(cls, reader: Callable[..., object], text: Union[str, bytes]) -> "Surface":
         """A new surface from text through a C reader of (text, len, err, out)."""
         if isinstance(text, str):
             data = text.encode("utf-8")
@@ -169,7 +169,7 @@ class Surface(Handle):
         return cls._wrap(out.value)
 
     @classmethod
-    def _read_file(cls, reader: Any, path: A.PathArg) -> "Surface":
+    def _read_file(cls, reader: Callable[..., object], path: A.PathArg) -> "Surface":
         """A new surface from a file through a C reader of (path, err, out)."""
         name = A.path(path)
         err = CParseError()
@@ -181,7 +181,7 @@ class Surface(Handle):
             raise _located(exc, err, os.fsdecode(name)) from None
         return cls._wrap(out.value)
 
-    def _write_text(self, writer: Any) -> str:
+    def _write_text(self, writer: Callable[..., object]) -> str:
         """The text a C writer of (surface, buf, cap, size) produces."""
         size = ctypes.c_size_t()
         writer(self._ptr, None, 0, ctypes.byref(size))
@@ -189,7 +189,7 @@ class Surface(Handle):
         writer(self._ptr, buf, size.value, ctypes.byref(size))
         return buf.value.decode("ascii")
 
-    def _write_file(self, writer: Any, path: A.PathArg) -> None:
+    def _write_file(self, writer: Callable[..., object], path: A.PathArg) -> None:
         """Write a file through a C writer of (surface, path)."""
         name = A.path(path)
         ctypes.set_errno(0)
@@ -303,10 +303,10 @@ class Surface(Handle):
 
     __copy__ = clone
 
-    def __deepcopy__(self, memo: Dict[int, Any]) -> "Surface":
+    def __deepcopy__(self, memo: Dict[int, object]) -> "Surface":
         return self.clone()
 
-    def __reduce__(self) -> Tuple[Any, ...]:
+    def __reduce__(self) -> Tuple[Type["Surface"], Tuple[List[Patch]]]:
         # The patches' control data, rebuilt by Surface(patches) on load.
         return (Surface, (list(self),))
 
@@ -380,7 +380,7 @@ class Surface(Handle):
     def eval(self, ids: Ids, u: Params, v: Params, *, derivatives: bool = False,
              normals: bool = False, out: OutArray = None, du_out: OutArray = None,
              dv_out: OutArray = None, normal_out: OutArray = None,
-             kind_out: OutArray = None, threads: int = 1) -> Any:
+             kind_out: OutArray = None, threads: int = 1) -> object:
         """Evaluate at n scattered points: point k lies on patch ids[k] at (u[k], v[k]).
 
         ``ids`` is a sequence or numpy array of patch indices, or one index for every point.
@@ -563,9 +563,9 @@ class Surface(Handle):
         return int(nverts.value), int(ntris.value)
 
     @staticmethod
-    def _tess_args(method: int, nu: Any, nv: Any, tolerance: Any, relative: bool, strips: bool,
-                   max_vertices: Any, max_triangles: Any, threads: Any = 1,
-                   reverse: bool = False) -> Tuple[Any, ...]:
+    def _tess_args(method: int, nu: object, nv: object, tolerance: object, relative: bool,
+                   strips: bool, max_vertices: object, max_triangles: object, threads: object = 1,
+                   reverse: bool = False) -> TessOptionsArgs:
         """The checked fields of a bs_tess_options, in the order tess_options() takes them."""
         nu = A.integer(nu, "nu")
         nv = nu if nv is None else A.integer(nv, "nv")

@@ -8,8 +8,8 @@ from typing import List, Optional, Tuple
 from typing_extensions import assert_type
 
 import bezsurf
-from bezsurf._buffers import (BoolOrBools, CodeOrCodes, Ids, IdOrIds, IdRows, KindOrKinds, Point,
-                              PointOrPoints, Points, RealOrReals)
+from bezsurf._buffers import (BoolOrBools, CodeOrCodes, Grid, Ids, IdOrIds, IdRows, KindOrKinds, Point,
+                              PointOrPoints, Points, RealOrReals, Reals)
 
 
 def uses(path: str) -> None:
@@ -29,6 +29,8 @@ def uses(path: str) -> None:
     assert_type(p.degree, Tuple[int, int])
     assert_type(p.weights, Optional[List[List[float]]])
     c = p.isocurve("u", 0.5)
+    assert_type(c.points, Grid)
+    assert_type(c.weights, Optional[Reals])
     assert_type(bezsurf.Patch.ruled(c, [[0, 0, 1], [1, 0, 1]]), bezsurf.Patch)
 
     s = bezsurf.Surface.load(path)
