@@ -1,11 +1,13 @@
 /*
  * Curvature benchmark: bs_patch_eval_curvature against bs_patch_eval_normal on the same points,
  * measured in one run (the ratio is the figure; seconds vary from run to run). Workload: the 32
- * patches of the built-in teapot, N pseudo-random (u,v) per patch, all outputs wanted.
+ * patches of the built-in teapot, N pseudo-random (u,v) per patch, all outputs wanted; then the
+ * same with the teapot made rational (weights 1, 1.5, 2 by control point, the net unchanged).
  * Usage: bench_curvature [points per patch] [seconds per measurement]
  *        bench_curvature --once curvature|normal [points per patch [m n [rational]]]
  * --once is for callgrind; with m n, one pseudo-random patch of degree (m,n) (weights too with
- * "rational") is evaluated 32 times in place of the teapot's 32 patches.
+ * "rational") is evaluated 32 times in place of the teapot's 32 patches; with "teapot-rational"
+ * in place of m, the rational teapot.
  */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <bezsurf.h>
@@ -78,6 +80,31 @@ static bs_patch *random_patch(size_t m, size_t n, int rational)
     return bs_patch_create(m, n, 3, ctrl, rational ? w : NULL, &p) == BS_OK ? p : NULL;
 }
 
+/* A bicubic patch with the net of q and weights 1, 1.5, 2 by control point. */
+static bs_patch *rational_copy(const bs_patch *q)
+{
+    double ctrl[16 * 3], w[16];
+    if (bs_patch_get_ctrl(q, ctrl, 48, NULL, 0) != BS_OK)
+        return NULL;
+    for (size_t k = 0; k < 16; k++)
+        w[k] = 1.0 + 0.5 * (double)(k % 3);
+    bs_patch *p;
+    return bs_patch_create(3, 3, 3, ctrl, w, &p) == BS_OK ? p : NULL;
+}
+
+/* The ratio of curvature to normal on cx's patches, printed under title. */
+static int report(const context *cx, double budget, const char *title)
+{
+    double tn = measure(cx, 0, budget), tc = measure(cx, 1, budget);
+    if (!(tn > 0 && tc > 0))
+        return 0;
+    double pts = 32.0 * (double)cx->n;
+    printf("%s, %zu random points per patch (best of %.1f s each)\n", title, cx->n, budget);
+    printf("  bs_patch_eval_normal     %8.1f ns/point\n", 1e9 * tn / pts);
+    printf("  bs_patch_eval_curvature  %8.1f ns/point   ratio %.2f (goal <= 3)\n", 1e9 * tc / pts, tc / tn);
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
     int once = argc > 1 && strcmp(argv[1], "--once") == 0;
@@ -87,13 +114,17 @@ int main(int argc, char **argv)
     bs_surface *s;
     if (cx.n == 0 || bs_surface_create_builtin("teapot", &s) != BS_OK || bs_surface_count(s) != 32)
         return 1;
-    bs_patch *own = NULL;
-    if (once && argc > 5) {
+    bs_patch *own = NULL, *rat[32] = {NULL};
+    for (size_t i = 0; i < 32; i++)
+        if (!(rat[i] = rational_copy(bs_surface_get(s, i))))
+            return 1;
+    int rational_teapot = once && argc > 4 && strcmp(argv[4], "teapot-rational") == 0;
+    if (once && argc > 5 && !rational_teapot) {
         if (!(own = random_patch((size_t)atol(argv[4]), (size_t)atol(argv[5]), argc > 6)))
             return 1;
     }
     for (size_t i = 0; i < 32; i++)
-        cx.patches[i] = own ? own : bs_surface_get(s, i);
+        cx.patches[i] = own ? own : rational_teapot ? rat[i] : bs_surface_get(s, i);
     cx.u = malloc(cx.n * sizeof(double));
     cx.v = malloc(cx.n * sizeof(double));
     cx.out = malloc(10 * cx.n * sizeof(double));
@@ -111,18 +142,18 @@ int main(int argc, char **argv)
     if (once) {
         ok = argc > 2 && run(&cx, strcmp(argv[2], "curvature") == 0);
     } else {
-        double tn = measure(&cx, 0, budget), tc = measure(&cx, 1, budget);
-        ok = tn > 0 && tc > 0;
-        double pts = 32.0 * (double)cx.n;
-        printf("teapot, %zu random points per patch (best of %.1f s each)\n", cx.n, budget);
-        printf("  bs_patch_eval_normal     %8.1f ns/point\n", 1e9 * tn / pts);
-        printf("  bs_patch_eval_curvature  %8.1f ns/point   ratio %.2f (goal <= 3)\n", 1e9 * tc / pts, tc / tn);
+        ok = report(&cx, budget, "teapot");
+        for (size_t i = 0; i < 32; i++)
+            cx.patches[i] = rat[i];
+        ok = ok && report(&cx, budget, "rational teapot");
     }
     free(cx.u);
     free(cx.v);
     free(cx.out);
     free(cx.kind);
     bs_patch_destroy(own);
+    for (size_t i = 0; i < 32; i++)
+        bs_patch_destroy(rat[i]);
     bs_surface_destroy(s);
     return ok ? 0 : 1;
 }

@@ -135,9 +135,9 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc);
 /* Points per chunk of bsi_curv_partials_chunk. */
 #define BSI_PCHUNK ((size_t)32)
 
-/* The partials a curvature needs at nb <= BSI_PCHUNK finite points (u[k], v[k]) of a polynomial
- * 3-D patch, in one pass per point (lib/core/partials2.c): d[(3 j + c) BSI_PCHUNK + k] for
- * S_u, S_v, S_uu, S_uv, S_vv (j = 0..4), coordinate c, point k; the unit normal
+/* The partials a curvature needs at nb <= BSI_PCHUNK finite points (u[k], v[k]) of a 3-D patch,
+ * polynomial or rational, in one pass per point (lib/core/partials2.c): d[(3 j + c) BSI_PCHUNK + k]
+ * for S_u, S_v, S_uu, S_uv, S_vv (j = 0..4), coordinate c, point k; the unit normal
  * nrm[c BSI_PCHUNK + k] and its kind exactly as bs_patch_eval_normal gives them (S_u and S_v come
  * from the same operations as its evaluators, so the normal rule sees the same bits). sc from
  * bsi_normal_scale(p). */

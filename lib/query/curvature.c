@@ -1,14 +1,12 @@
 /*
  * Curvature of a patch (bezsurf/query.h): the shape operator in an orthonormal tangent frame,
- * whose eigenvalues are the principal curvatures, by chunks of points (the partials in one pass
- * for polynomial patches, the formulas vectorised over the chunk); limit points are handed to
- * curvature_limit.c.
+ * whose eigenvalues are the principal curvatures, by chunks of points (the partials in one pass,
+ * the formulas vectorised over the chunk); limit points are handed to curvature_limit.c.
  */
 #include "query/internal.h"
 
 #include <float.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #define L BSI_PCHUNK
@@ -98,7 +96,7 @@ void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
     }
 }
 
-/* The fast formulas at nb points of a chunk (d, nrm as bsi_curv_partials fills them) into
+/* The fast formulas at nb points of a chunk (d, nrm as bsi_curv_partials_chunk fills them) into
  * out[i L + k]; flag[k] = 1.0 where point k needs bsi_curv_regular. */
 BSI_HOT static void curv_chunk(size_t nb, const double *restrict d, const double *restrict nrm,
                                double inv_d, double *restrict out, double *restrict flag)
@@ -130,29 +128,6 @@ void bsi_curv_gather(const double *d, const double *nrm, size_t k, bsi_partials 
             q->d[j][c] = d[(size_t)(3 * j + c) * L + k];
     for (int c = 0; c < 3; c++)
         q->nrm[c] = nrm[(size_t)c * L + k];
-}
-
-void bsi_curv_partials(const bs_patch *p, const bsi_nscale *sc, size_t n, const double *u,
-                       const double *v, double *scratch, double *d, double *nrm,
-                       unsigned char *kind)
-{
-    if (!p->rational) {
-        bsi_curv_partials_chunk(p, sc, n, u, v, d, nrm, kind);
-        return;
-    }
-    static const unsigned ab[5][2] = {{1, 0}, {0, 1}, {2, 0}, {1, 1}, {0, 2}};
-    double *table = scratch + bsi_deriv_table_scratch(p, 2, 2); /* S^(a,b), a, b <= 2 */
-    for (size_t k = 0; k < n; k++) {
-        bsi_deriv_table(p, u[k], v[k], 2, 2, scratch, table);
-        for (size_t j = 0; j < 5; j++)
-            for (size_t c = 0; c < 3; c++)
-                d[(3 * j + c) * L + k] = table[((size_t)ab[j][0] * 3 + ab[j][1]) * 3 + c];
-    }
-    /* The normal and its kind as bs_patch_eval_normal gives them (the sign convention). Every
-     * view was made here from valid memory: the call cannot fail. */
-    bs_cview cu = {u, n, 0}, cv = {v, n, 0};
-    bs_view views[3] = {{nrm, n, 0}, {nrm + L, n, 0}, {nrm + 2 * L, n, 0}};
-    (void)bs_patch_eval_normal(p, n, &cu, &cv, NULL, views, kind);
 }
 
 /* Diagonal of the bounding box of the control points. */
@@ -226,11 +201,6 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
                 *bsi_at(&curv[c], k) = c == 0 ? *bsi_at(&curv[c], k) * sig * sig : *bsi_at(&curv[c], k) * sig;
         return st;
     }
-    /* the one allocation (the rational table's scratch), before anything is written */
-    double *scratch = NULL;
-    if (p->rational &&
-        (scratch = malloc((bsi_deriv_table_scratch(p, 2, 2) + 27) * sizeof(double))) == NULL)
-        return BS_ERR_NO_MEMORY;
     double inv_d = 1.0 / net_diagonal(p);
     bsi_nscale sc;
     bsi_normal_scale(p, &sc);
@@ -254,7 +224,7 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
             continue;
         double d[15 * L], nrm[3 * L], out[10 * L], flag[L];
         unsigned char nk[L], ck[L];
-        bsi_curv_partials(p, &sc, nf, ub, vb, scratch, d, nrm, nk);
+        bsi_curv_partials_chunk(p, &sc, nf, ub, vb, d, nrm, nk);
         curv_chunk(nf, d, nrm, inv_d, out, flag);
         for (size_t k = 0; k < nf; k++) {
             ck[k] = BS_CURV_REGULAR;
@@ -268,7 +238,7 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
                 bsi_curv_regular(&q, inv_d, &c);
             else
                 ck[k] = nk[k] == BS_NORMAL_LIMIT
-                            ? bsi_curv_limit(p, &sc, ub[k], vb[k], q.nrm, inv_d, scratch, &c)
+                            ? bsi_curv_limit(p, &sc, ub[k], vb[k], q.nrm, inv_d, &c)
                             : BS_CURV_UNDEFINED;
             int defined = ck[k] != BS_CURV_UNDEFINED;
             for (size_t i = 0; i < 4; i++)
@@ -287,6 +257,5 @@ bs_status bs_patch_eval_curvature(const bs_patch *p, size_t n, const bs_cview *u
         for (size_t k = 0; kind && k < nf; k++)
             kind[at[k]] = ck[k];
     }
-    free(scratch);
     return BS_OK;
 }

@@ -59,7 +59,7 @@ static int frame(const double *t, const double *nrm, bsi_curv *out)
 /* The principal curvatures k[2] extrapolated from samples at h = 2^-first .. 2^-(first + 7)
  * along the line (du, dv) from (u, v), and the samples c[]: 1 when they settle, else 0. */
 static int limit_from(const bs_patch *p, const bsi_nscale *sc, double u, double v, double du, double dv, int first,
-                      double inv_d, double *scratch, bsi_curv *c, double *k)
+                      double inv_d, bsi_curv *c, double *k)
 {
     double us[LEVELS], vs[LEVELS];
     for (int j = 0; j < LEVELS; j++) {
@@ -69,7 +69,7 @@ static int limit_from(const bs_patch *p, const bsi_nscale *sc, double u, double 
     }
     double d[15 * BSI_PCHUNK], nv[3 * BSI_PCHUNK];
     unsigned char nk[BSI_PCHUNK];
-    bsi_curv_partials(p, sc, LEVELS, us, vs, scratch, d, nv, nk);
+    bsi_curv_partials_chunk(p, sc, LEVELS, us, vs, d, nv, nk);
     for (int j = 0; j < LEVELS; j++) {
         if (nk[j] != BS_NORMAL_REGULAR)
             return 0;
@@ -92,7 +92,7 @@ static int limit_from(const bs_patch *p, const bsi_nscale *sc, double u, double 
 }
 
 unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                             const double nrm[3], double inv_d, double *scratch, bsi_curv *out)
+                             const double nrm[3], double inv_d, bsi_curv *out)
 {
     double du = 0.5 - u, dv = 0.5 - v;
     if (du == 0.0 && dv == 0.0)
@@ -101,7 +101,7 @@ unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, 
     double k[2];
     int settled = 0;
     for (int w = 0; w < WINDOWS && !settled; w++)
-        settled = limit_from(p, sc, u, v, du, dv, 3 + 5 * w, inv_d, scratch, c, k);
+        settled = limit_from(p, sc, u, v, du, dv, 3 + 5 * w, inv_d, c, k);
     if (!settled)
         return BS_CURV_UNDEFINED; /* no finite limit, or none found */
     double f[LEVELS], scale = fabs(k[0]) + fabs(k[1]) + inv_d;
@@ -116,7 +116,7 @@ unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, 
         bsi_partials here;
         double d[15 * BSI_PCHUNK], nv[3 * BSI_PCHUNK];
         unsigned char nk[BSI_PCHUNK];
-        bsi_curv_partials(p, sc, 1, &u, &v, scratch, d, nv, nk);
+        bsi_curv_partials_chunk(p, sc, 1, &u, &v, d, nv, nk);
         bsi_curv_gather(d, nv, 0, &here);
         double len = 1.0 / inv_d;
         if (unit3(here.d[0], len, t) && frame(t, nrm, out))

@@ -34,22 +34,14 @@ typedef struct bsi_partials {
 /* Curvature from the fundamental forms at a regular point; inv_d = 1/D (umbilic test scale). */
 void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out);
 
-/* The partials at n <= BSI_PCHUNK finite points (u[k], v[k]) into the planes d and nrm (the
- * layout of bsi_curv_partials_chunk) and the normal kinds, exactly those of bs_patch_eval_normal,
- * into kind: polynomial patches in one pass (bsi_curv_partials_chunk), rational ones by the
- * table of partials point by point. sc from bsi_normal_scale(p); scratch holds
- * bsi_deriv_table_scratch(p, 2, 2) + 27 doubles for a rational p (unused, may be NULL, else). */
-void bsi_curv_partials(const bs_patch *p, const bsi_nscale *sc, size_t n, const double *u,
-                       const double *v, double *scratch, double *d, double *nrm,
-                       unsigned char *kind);
-/* Point k of those planes as one bsi_partials. */
+/* Point k of the planes of bsi_curv_partials_chunk as one bsi_partials. */
 void bsi_curv_gather(const double *d, const double *nrm, size_t k, bsi_partials *q);
 
 /* The limit of the curvature at finite (u,v) along the line towards (1/2,1/2), nrm the limit
- * normal there (sc and scratch as for bsi_curv_partials): BS_CURV_LIMIT with out filled, or
+ * normal there (sc from bsi_normal_scale(p)): BS_CURV_LIMIT with out filled, or
  * BS_CURV_UNDEFINED when the limit does not exist or could not be found. */
 unsigned char bsi_curv_limit(const bs_patch *p, const bsi_nscale *sc, double u, double v,
-                             const double nrm[3], double inv_d, double *scratch, bsi_curv *out);
+                             const double nrm[3], double inv_d, bsi_curv *out);
 
 /* Closest point of one patch to a finite point q (p->dim coordinates), certified global to
  * tau = 1e-9 (D + d) (D from the patch, or the caller's larger D: pass it in d_scale, 0 = the

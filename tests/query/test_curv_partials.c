@@ -2,8 +2,10 @@
  * built with the library's sources): its S_u and S_v are the bits of bs_patch_eval's, its normal
  * and kind those of bs_patch_eval_normal, at every point of chunks of several sizes on the
  * teapot (bicubic, collapsed edges and poles), on random bicubic patches (whose sums, unlike the
- * teapot's, change with their order) and on polynomial patches of other degrees; its
- * second partials agree with bs_patch_eval_deriv's. */
+ * teapot's, change with their order) and on polynomial patches of other degrees; the same
+ * for rational patches (the teapot's nets with weights, random ones of several degrees), whose
+ * partials come from the quotient rule on the homogeneous sums; its second partials agree with
+ * bs_patch_eval_deriv's. */
 #include "harness.h"
 #include "core/internal.h"
 
@@ -75,16 +77,12 @@ static void chunks(const bs_patch *p)
             one_chunk(p, 289 - k0 < sizes[s] ? 289 - k0 : sizes[s], u + k0, v + k0);
 }
 
-int main(void)
+/* Random patches of several degrees, with weights in [0.5, 2] when rational, each also with
+ * its row i = 0 collapsed to one point. */
+static void random_patches(int rational, unsigned long long rng)
 {
-    bs_surface *s;
-    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
-    for (size_t i = 0; i < bs_surface_count(s); i++)
-        chunks(bs_surface_get(s, i));
-    bs_surface_destroy(s);
     static const size_t deg[][2] = {{3, 3}, {2, 3}, {3, 2}, {5, 1}, {1, 1}, {4, 4}, {0, 2}, {6, 3}, {2, 2}};
-    unsigned long long rng = 11;
-    double ctrl[7 * 7 * 3];
+    double ctrl[7 * 7 * 3], w[7 * 7];
     for (size_t d = 0; d < sizeof deg / sizeof deg[0]; d++)
         for (int collapsed = 0; collapsed < 2; collapsed++) {
             size_t m = deg[d][0], n = deg[d][1];
@@ -95,10 +93,33 @@ int main(void)
                     ctrl[3 * k + c] = collapsed && k <= n ? 0.5 * (double)c
                                                           : base + bs_test_rand(&rng, -0.4, 0.4);
                 }
+            for (size_t k = 0; rational && k < (m + 1) * (n + 1); k++)
+                w[k] = bs_test_rand(&rng, 0.5, 2.0);
             bs_patch *p;
-            CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, NULL, &p), BS_OK);
+            CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, rational ? w : NULL, &p), BS_OK);
             chunks(p);
             bs_patch_destroy(p);
         }
+}
+
+int main(void)
+{
+    bs_surface *s;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        const bs_patch *q = bs_surface_get(s, i);
+        chunks(q);
+        double ctrl[16 * 3], w[16]; /* the same net, weights 1, 1.5, 2 */
+        CHECK_STATUS(bs_patch_get_ctrl(q, ctrl, 48, NULL, 0), BS_OK);
+        for (size_t k = 0; k < 16; k++)
+            w[k] = 1.0 + 0.5 * (double)(k % 3);
+        bs_patch *p;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl, w, &p), BS_OK);
+        chunks(p);
+        bs_patch_destroy(p);
+    }
+    bs_surface_destroy(s);
+    random_patches(0, 11);
+    random_patches(1, 12);
     return bs_test_exit("test_curv_partials");
 }
