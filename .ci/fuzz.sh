@@ -2,9 +2,9 @@
 # Build the libFuzzer targets with clang in their own build tree, replay the committed seed corpora,
 # then fuzz each target for N seconds (default 90; the readers' targets for at most
 # READER_SECONDS, default 30, each) and print its execution count. fuzz_locator's corpus is
-# replayed but not extended here: its ray oracle still finds misses next to cusp edges and at wild
-# weights (docs/reliability.md), so a run would fail on a known, open defect; run it by hand with
-# FUZZ_LOCATOR=1.
+# replayed but not extended here: its ray oracle still finds misses on rational patches with a pole
+# and weights 2^39 and more apart (docs/reliability.md, tests/hostile/), so a run would fail on a
+# known, open defect; run it by hand with FUZZ_LOCATOR=1.
 #   .ci/fuzz.sh [seconds]        FUZZ_BUILD=dir to choose the build tree (default build-fuzz)
 set -euo pipefail
 cd "$(dirname "$0")/.."
