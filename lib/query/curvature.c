@@ -63,19 +63,16 @@ BSI_INLINE double curv_formulas(const double *q, const double *nrm, double inv_d
 
 void bsi_curv_regular(const bsi_partials *q, double inv_d, bsi_curv *out)
 {
-    /* The formulas run on the partials scaled by a power of two sig that brings the larger first
-     * partial near 1 (lengths times sig, curvatures over sig), exact: the fundamental forms'
-     * products (fourth powers of the partials, f^2 l / e) would overflow or underflow at extreme
-     * scales, and next to a collapsed side, where S_v is far smaller than S_u, already at
-     * coordinates about 2^-200 (limit samples on both sides of a fixed threshold then differed
-     * in their rounding and the limit did not settle). Scaling by a power of two changes no bit
-     * where nothing overflows or underflows. */
+    /* Partials beyond 2^200 or below 2^-200 (coordinates past about 1e150 or under 1e-150):
+     * the fundamental forms' products would overflow or underflow, so the formulas run on the
+     * partials scaled by a power of two sig (lengths times sig, curvatures over sig), exact;
+     * in the usual range sig = 1 and nothing changes. */
     double big = 0.0, o[10], x[15];
     for (int j = 0; j < 2; j++)
         for (int c = 0; c < 3; c++)
             big = fmax(big, fabs(q->d[j][c]));
     double sig = 1.0;
-    if (big > 0.0 && big <= DBL_MAX) {
+    if (big > 0.0 && big <= DBL_MAX && (big < 0x1p-200 || big > 0x1p200)) {
         int e = 0;
         (void)frexp(big, &e);
         sig = ldexp(1.0, -e);

@@ -26,17 +26,18 @@ SPECIALISE double line_span(const double *net, size_t a, size_t count, size_t st
     return span;
 }
 
-/* The largest distance (max norm of X1, X2, T over W) between the points of two lines of the net,
- * from indices a and b, count points step apart. */
-SPECIALISE double lines_apart(const double *net, size_t a, size_t b, size_t count, size_t step, int rat)
+/* 1 if the points of two lines of the net, from indices a and b, count points step apart, lie
+ * within ext of each other point by point (max norm of X1, X2, T over W). Most pieces fail at
+ * their first points. */
+SPECIALISE int lines_near(const double *net, size_t a, size_t b, size_t count, size_t step, int rat, double ext)
 {
-    double gap = 0.0;
     for (size_t k = 0; k < count; k++) {
         const double *p = net + (a + k * step) * NC, *q = net + (b + k * step) * NC;
         for (int c = 0; c < 3; c++)
-            gap = greater(gap, fabs(WDIV(rat, p[c], p[3]) - WDIV(rat, q[c], q[3])));
+            if (!(fabs(WDIV(rat, p[c], p[3]) - WDIV(rat, q[c], q[3])) <= ext))
+                return 0;
     }
-    return gap;
+    return 1;
 }
 
 /* 1 if the points of two lines of the net (from indices a and b, count points step apart) lie on
@@ -86,8 +87,8 @@ SPECIALISE int singular_side(const double *net, size_t m, size_t n, int rat, int
     size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
     size_t last = deg * next; /* the first point of the side s = 1 (or r = 1) */
     return line_span(net, 0, count, step, rat) <= ext || line_span(net, last, count, step, rat) <= ext ||
-           lines_apart(net, 0, next, count, step, rat) <= ext ||
-           lines_apart(net, last, last - next, count, step, rat) <= ext ||
+           lines_near(net, 0, next, count, step, rat, ext) ||
+           lines_near(net, last, last - next, count, step, rat, ext) ||
            lines_collinear(net, 0, next, count, step, rat, ext) ||
            lines_collinear(net, last, last - next, count, step, rat, ext);
 }
@@ -124,13 +125,9 @@ SPECIALISE int lines_all_near(const double *net, size_t m, size_t n, int rat, in
 {
     size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
     size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
-    for (size_t k = 1; k <= deg; k++) /* point by point: most pieces fail at their first points */
-        for (size_t j = 0; j < count; j++) {
-            const double *p = net + j * step * NC, *q = net + (k * next + j * step) * NC;
-            for (int c = 0; c < 3; c++)
-                if (!(fabs(WDIV(rat, p[c], p[3]) - WDIV(rat, q[c], q[3])) <= ext))
-                    return 0;
-        }
+    for (size_t k = 1; k <= deg; k++)
+        if (!lines_near(net, 0, k * next, count, step, rat, ext))
+            return 0;
     return 1;
 }
 
