@@ -379,25 +379,27 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
          * corner), where a hit may lie on the boundary of pieces Newton cannot settle */
         if (dir == -1 && e.depth >= MAX_DEPTH && !singular_corner(net, m, n, rat, 0x1p-8, 0.0))
             continue;
-        /* the four halves (two across a pole), nearest t first */
+        /* the four parts (two across a pole), nearest t first: halves, or cut where the weights
+         * hand over (fs, fr: the fractions of the width that the first parts take) */
         pending kids[4];
         int nk = 0;
-        bsi_net_halve(net, m, n, NC, dir < 0 ? BS_DIR_U : dir, half[0], half[1]);
+        double fs = dir == BS_DIR_V ? 1.0 : handover(net, m, n, rat, BS_DIR_U);
+        double fr = dir == BS_DIR_U ? 1.0 : handover(net, m, n, rat, BS_DIR_V);
+        net_cut(net, m, n, dir < 0 ? BS_DIR_U : dir, dir == BS_DIR_V ? fr : fs, half[0], half[1]);
         for (int a = 0; a < 2; a++) {
             double *cn[2];
             int nb = dir < 0 ? 2 : 1;
             for (int b = 0; b < nb; b++) {
                 pending *c = &kids[nk + b];
-                double su = dir == BS_DIR_V ? 0.0 : 0.5, sv = dir == BS_DIR_U ? 0.0 : 0.5;
                 int ia = dir == BS_DIR_V ? 0 : a, ib = dir == BS_DIR_V ? a : b;
-                *c = (pending){e.s0 + ia * su * e.w, e.r0 + ib * sv * e.wr,
-                               dir == BS_DIR_V ? e.w : 0.5 * e.w, dir == BS_DIR_U ? e.wr : 0.5 * e.wr,
+                double ws = ia ? (1.0 - fs) * e.w : fs * e.w, wr = ib ? (1.0 - fr) * e.wr : fr * e.wr;
+                *c = (pending){e.s0 + ia * fs * e.w, e.r0 + ib * fr * e.wr, ws, wr,
                                INFINITY, e.depth + (dir < 0), e.level + 1,
                                nfree > 0 ? free_slot[--nfree] : unused++};
                 cn[b] = slot + (size_t)c->slot * len;
             }
             if (dir < 0)
-                bsi_net_halve(half[a], m, n, NC, BS_DIR_V, cn[0], cn[1]);
+                net_cut(half[a], m, n, BS_DIR_V, fr, cn[0], cn[1]);
             else
                 for (size_t q = 0; q < len; q++)
                     cn[0][q] = half[a][q];

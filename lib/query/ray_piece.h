@@ -209,11 +209,18 @@ SPECIALISE int newton(const double *net, size_t m, size_t n, int rat, const pend
          * and X_r may be nearly parallel and very different in size, where the damping below,
          * relative to the larger, would stall the step along the smaller; else
          * (J^T J + lambda I) step = -J^T f, finite also where X_r vanishes */
-        double dj = fs[0] * fr[1] - fs[1] * fr[0], ds, dr;
-        if (fabs(dj) > 1e-10 * (fabs(fs[0]) + fabs(fs[1])) * (fabs(fr[0]) + fabs(fr[1])) && isfinite(dj)) {
+        double dj = fs[0] * fr[1] - fs[1] * fr[0], ds = 0.0, dr = 0.0;
+        int full = fabs(dj) > 1e-10 * (fabs(fs[0]) + fabs(fs[1])) * (fabs(fr[0]) + fabs(fr[1])) && isfinite(dj);
+        if (full) {
             ds = -(fr[1] * f[0] - fr[0] * f[1]) / dj;
             dr = -(fs[0] * f[1] - fs[1] * f[0]) / dj;
-        } else {
+            /* a step out of the piece is the damped one: where the map is nearly singular (a
+             * sliver of a surface, thinner than the accepted distance of a hit) the full step
+             * reaches for a zero far away and would be cut short at a corner, while the damped
+             * one finds the point of the piece nearest to the ray */
+            full = s + ds >= slo && s + ds <= shi && r + dr >= rlo && r + dr <= rhi;
+        }
+        if (!full) {
             double a11 = fs[0] * fs[0] + fs[1] * fs[1], a12 = fs[0] * fr[0] + fs[1] * fr[1];
             double a22 = fr[0] * fr[0] + fr[1] * fr[1];
             double g1 = fs[0] * f[0] + fs[1] * f[1], g2 = fr[0] * f[0] + fr[1] * f[1];

@@ -156,8 +156,8 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     /* a sliver (a piece holding or beside a cusp edge, where the map is quadratic across it) is
      * halved along its length only: halved across, it would make two pieces no box can tell apart
      * at every level */
-    int flat_s = lines_all_near(net, m, n, rat, BS_DIR_U, 0x1p-12 * size);
-    int flat_r = lines_all_near(net, m, n, rat, BS_DIR_V, 0x1p-12 * size);
+    int flat_s = lines_all_near(net, m, n, rat, BS_DIR_U, 0x1p-4 * size);
+    int flat_r = lines_all_near(net, m, n, rat, BS_DIR_V, 0x1p-4 * size);
     if (flat_s != flat_r)
         return flat_s ? BS_DIR_V : BS_DIR_U;
     if (rows || cols)
@@ -165,6 +165,64 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     double big = greater(greater(fabs(lo[0]), fabs(hi[0])), greater(greater(fabs(lo[1]), fabs(hi[1])),
                                                                   greater(fabs(lo[2]), fabs(hi[2]))));
     return singular_corner(net, m, n, rat, 1e-9, 64 * DBL_EPSILON * big) ? -2 : -1;
+}
+
+/* Where to cut a rational piece along dir (BS_DIR_U: across its rows), as a fraction of its
+ * width: 1/2, unless its weights hand over from one side to the other, the geometric mean of its
+ * lines' end-weight ratios more than 16^deg away from 1. Then the cut lies where they hand over,
+ * (1 - t)^deg w_first = t^deg w_last (a Moebius reparametrisation that balances the end weights
+ * maps 1/2 there): halved, such a piece keeps a hull far larger than itself for level after level
+ * (wild weights next to a pole: most of the domain maps within a hair of one side). */
+SPECIALISE double handover(const double *net, size_t m, size_t n, int rat, int dir)
+{
+    size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
+    size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
+    if (!rat || deg == 0)
+        return 0.5;
+    double lg = 0.0; /* log2 of the weights' ratio per degree */
+    for (size_t k = 0; k < count; k++)
+        lg += log2(net[k * step * NC + 3]) - log2(net[(k * step + deg * next) * NC + 3]);
+    lg /= (double)(count * deg);
+    if (!(fabs(lg) > 4.0))
+        return 0.5;
+    if (fabs(lg) > 40.0) /* cuts beyond 2^-40 of the width only add levels */
+        return lg < 0.0 ? 0x1p-40 : 1.0 - 0x1p-40;
+    double sig = exp2(lg);
+    return sig / (1.0 + sig);
+}
+
+/* Cut a net of NC doubles a point at the fraction f of its width along dir into lo and hi:
+ * bsi_net_halve's midpoints at f = 1/2 (the same bits in patches sharing a side), de
+ * Casteljau's convex combinations elsewhere. */
+SPECIALISE void net_cut(const double *net, size_t m, size_t n, int dir, double f, double *lo, double *hi)
+{
+    if (f == 0.5) {
+        bsi_net_halve(net, m, n, NC, dir, lo, hi);
+        return;
+    }
+    size_t deg = dir == BS_DIR_U ? m : n, step = dir == BS_DIR_U ? (n + 1) * NC : NC;
+    size_t ncurve = dir == BS_DIR_U ? n + 1 : m + 1, cstep = dir == BS_DIR_U ? NC : (n + 1) * NC;
+    double b[(BS_MAX_DEGREE + 1) * NC], g = 1.0 - f;
+    for (size_t q = 0; q < ncurve; q++) {
+        const double *in = net + q * cstep;
+        size_t base = q * cstep;
+        for (size_t k = 0; k <= deg; k++)
+            for (size_t c = 0; c < NC; c++)
+                b[k * NC + c] = in[k * step + c];
+        for (size_t c = 0; c < NC; c++) {
+            lo[base + c] = b[c];
+            hi[base + deg * step + c] = b[deg * NC + c];
+        }
+        for (size_t r = 1; r <= deg; r++) {
+            for (size_t k = 0; k + r <= deg; k++)
+                for (size_t c = 0; c < NC; c++)
+                    b[k * NC + c] = g * b[k * NC + c] + f * b[(k + 1) * NC + c];
+            for (size_t c = 0; c < NC; c++) {
+                lo[base + r * step + c] = b[c];
+                hi[base + (deg - r) * step + c] = b[(deg - r) * NC + c];
+            }
+        }
+    }
 }
 
 #endif

@@ -10,7 +10,8 @@
  * and v are parallel (S_u and S_v parallel there, the normal from second derivatives): the patch of
  * tests/hostile/fuzz_locator_ray_miss_tiny.bin (a polynomial (5,2) net at 2^-1000, most of it two
  * repeated points, whose ray down the normal at (2^-19, 2^-19) was missed) at that scale and at
- * 1, and random patches with such a corner, rays from 2^-j D above points 2^-4 .. 2^-27 from it. */
+ * 1, and random patches with such a corner, rays from 2^-j D above points 2^-4 .. 2^-27 from it. Then
+ * folds and poles with wild weights (fold_sides, pole_weights). */
 #include "harness.h"
 #include "shapes.h"
 
@@ -273,6 +274,76 @@ static void fold_sides(int count)
     }
 }
 
+/* fuzz_locator_ray_miss_pole_weights.bin and ..._pole_weights2.bin: rational (1,2) nets in units of
+ * 2^-7 whose u = 0 side is a pole, with weights 2^41 and 2^39 apart, at 2^711 and 2^-240 */
+static const double raw6[2][6][4] = {
+    {{127, -121, 0, 0x1p-37}, {127, -121, 0, 0x1p-31}, {127, -121, 0, 0x1p4},
+     {-128, 0, 127, 0x1p-7}, {127, 127, 127, 0x1p-7}, {127, -95, 127, 0x1p-7}},
+    {{-78, -70, 28, 0x1p19}, {-78, -70, 28, 0x1p12}, {-78, -70, 28, 0x1p-9},
+     {124, 43, 13, 0x1p-4}, {127, 127, 20, 0x1p-18}, {105, 96, 13, 0x1p21}}};
+
+/* Points (2^-a, v) next to the u = 0 pole, a = 1 .. 29, at v = 2^-a, 1 - 2^-a and the vs given,
+ * rays from size 2^-j above. */
+static void pole_weight_sweep(const bs_patch *p, double size, const double *vs, int nvs, const char *what)
+{
+    bs_locator *L = shape_locator(p);
+    if (L == NULL)
+        return;
+    for (int a = 1; a <= 29; a += bs_test_quick() ? 6 : 2)
+        for (int i = 0; i < nvs + 2; i++)
+            for (int j = 0; j < 12; j += 4) {
+                double u = ldexp(1.0, -a), v = i == 0 ? u : i == 1 ? 1.0 - u : vs[i - 2];
+                shoot(L, p, u, v, ldexp(size, -j), size, what);
+            }
+    bs_locator_destroy(L);
+}
+
+/* Poles with wild weights: where the weights hand over from the pole's row to the next (u about
+ * the ratio of their weights, different along v), nearly the whole domain maps within a hair of
+ * the far side, and the pieces next to v = 0 reach from there to the pole until they are far
+ * narrower in v than in u (they are halved along v alone then: pole_split in
+ * lib/query/ray_split.h). The two fuzz nets at their scales and at 1, then random (1..2, 2..3)
+ * nets with their u = 0 side a pole and weights 2^-40 .. 2^40. */
+static void pole_weights(int count)
+{
+    static const int scale[2] = {711, -240};
+    for (int f = 0; f < 2; f++)
+        for (int e = scale[f]; e != 1; e = e ? 0 : 1) {
+            double c6[18], w6[6], vs[1] = {0x1.adab187134be6p-1};
+            for (int k = 0; k < 6; k++) {
+                for (int c = 0; c < 3; c++)
+                    c6[3 * k + c] = ldexp(raw6[f][k][c], e - 7);
+                w6[k] = raw6[f][k][3];
+            }
+            bs_patch *p6 = NULL;
+            char what[64];
+            (void)snprintf(what, sizeof what, "fuzz_locator_ray_miss_pole_weights%s at 2^%d", f ? "2" : "", e);
+            CHECK_STATUS(bs_patch_create(1, 2, 3, c6, w6, &p6), BS_OK);
+            if (p6 != NULL)
+                pole_weight_sweep(p6, ldexp(4.0, e), vs, 1, what);
+            bs_patch_destroy(p6);
+        }
+    for (int t = 0; t < count; t++) {
+        size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 2), n = 2 + (size_t)(bs_test_rand_u64(&rng) % 2);
+        double ctrl[3 * 16], wt[16], pole[3];
+        for (size_t c = 0; c < 3; c++)
+            pole[c] = bs_test_rand(&rng, -1, 1);
+        for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
+            for (size_t c = 0; c < 3; c++)
+                ctrl[3 * k + c] = k <= n ? pole[c] : bs_test_rand(&rng, -1, 1);
+            wt[k] = ldexp(1.0, (int)(bs_test_rand_u64(&rng) % 81) - 40);
+        }
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, wt, &p), BS_OK);
+        double vs[2] = {bs_test_rand(&rng, 0, 1), bs_test_rand(&rng, 0, 1)};
+        char what[64];
+        (void)snprintf(what, sizeof what, "wild pole weights %d (%zu,%zu)", t, m, n);
+        if (p != NULL)
+            pole_weight_sweep(p, 2.0, vs, 2, what);
+        bs_patch_destroy(p);
+    }
+}
+
 /* Random patches with the u = 1 side collapsed to one point (cusp 0), or equal to the row before it,
  * points and weights (cusp 1: S_u vanishes all along u = 1, a cusp edge). */
 static void random_poles(int count, int cusp)
@@ -312,6 +383,7 @@ int main(void)
     random_poles(bs_test_quick() ? 6 : 40, 1);
     singular_corners(bs_test_quick() ? 4 : 24);
     fold_sides(bs_test_quick() ? 4 : 24);
+    pole_weights(bs_test_quick() ? 4 : 24);
     printf("%d rays down normals next to poles, cusp edges, singular corners and folds, %d missed or hit later\n", rays, misses);
     return bs_test_exit("test_ray_poles");
 }
