@@ -189,13 +189,16 @@ int bsi_grow_array(void **p, size_t *cap, size_t need, size_t size);
 
 /* 1 for a net whose largest coordinate lies within [2^-lo, 2^hi] (or is 0), else the power of
  * two (at most 2^1000) that brings it near 1. Beyond 2^1000 the evaluators' first differences
- * overflow; below 2^-SMALL_NET the partials at points next to a pole, still served by the
+ * overflow, and beyond 2^LARGE_NET already a rational net's partials at a pole, its coordinates
+ * times the ratio of its weights (2^25 took a pole's limit normal to "undefined" from 2^973);
+ * below 2^-SMALL_NET the partials at points next to a pole, still served by the
  * general rule (down to 2^-30 of the net's scale, and the net's differences may be far smaller
  * than its coordinates), fall into the subnormal range and lose their bits. So scale-invariant
- * results (normals, kinds, ray hits) come from a copy scaled by it (lo = SMALL_NET, hi = 1000);
- * the curvature's limit rule multiplies partials, and takes the copy beyond 2^256 (256, 256).
- * (lib/core/normal.c) */
+ * results (normals, kinds, ray hits) come from a copy scaled by it (lo = SMALL_NET, hi =
+ * LARGE_NET); the curvature's limit rule multiplies partials, and takes the copy beyond 2^64
+ * (64, 64). (lib/core/normal.c) */
 #define SMALL_NET 900
+#define LARGE_NET 512
 double bsi_extreme_scale(const bs_patch *p, int lo, int hi);
 /* p with its control points times sig (weights kept) into *out; BS_ERR_NO_MEMORY. */
 bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out);

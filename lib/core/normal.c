@@ -394,7 +394,7 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     if ((pos && (st = bsi_check_views(pos, 3, n)) != BS_OK) ||
         (nrm && (st = bsi_check_views(nrm, 3, n)) != BS_OK))
         return st;
-    double sig = bsi_extreme_scale(p, SMALL_NET, 1000);
+    double sig = bsi_extreme_scale(p, SMALL_NET, LARGE_NET);
     if (sig != 1.0) { /* normals and kinds of the scaled copy, positions of p itself */
         bs_patch *q = NULL;
         if ((st = bsi_scaled_patch(p, sig, &q)) == BS_OK)

@@ -100,12 +100,12 @@ static double surface_diagonal(bs_patch *const *patches, size_t np, size_t dim)
     return fmin(DBL_MAX, 2.0 * s);
 }
 
-/* The scaled copies of the patches beyond 2^1000 or below 2^-1000 (L->scaled), for rays. */
+/* The scaled copies of the patches beyond 2^512 or below 2^-900 (L->scaled), for rays. */
 static bs_status scale_extremes(bs_locator *L)
 {
     bs_status st = BS_OK;
     for (size_t i = 0; i < L->npatch && st == BS_OK; i++) {
-        double sig = L->dim == 3 ? bsi_extreme_scale(L->patches[i], SMALL_NET, 1000) : 1.0;
+        double sig = L->dim == 3 ? bsi_extreme_scale(L->patches[i], SMALL_NET, LARGE_NET) : 1.0;
         if (sig == 1.0)
             continue;
         if (L->scaled == NULL && (L->scaled = calloc(L->npatch, sizeof *L->scaled)) == NULL)

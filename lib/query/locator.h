@@ -55,7 +55,7 @@ struct bsi_loc_trim {
                     double st[2]);
 };
 
-/* A patch beyond 2^1000 or below 2^-1000 (subnormal): sig, the power of two of bsi_extreme_scale
+/* A patch beyond 2^512 or below 2^-900: sig, the power of two of bsi_extreme_scale
  * (1 for the others), and its copy times sig (else NULL). Its leaves' nets are stored times sig,
  * so that they are halved and projected without losing bits, and its normals (nscale) are those
  * of the copy, as bs_patch_eval_normal takes them. */

@@ -184,7 +184,7 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, const double 
         u = leaf->u0 + hit->s * side;
         v = leaf->v0 + hit->r * side;
         /* bs_patch_eval_normal's bits, with the patch's normal scale made once (of its scaled
-         * copy beyond 2^1000 or below 2^-1000, and pos that copy's) */
+         * copy beyond 2^512 or below 2^-900, and pos that copy's) */
         double sig;
         bsi_eval_normal_one(bsi_loc_patch(L, id, &sig), &L->nscale[id], u, v, pos, nv, &kd);
         /* t of the point reported, kept within the range the hit was found in */

@@ -302,7 +302,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     const bs_patch *p = L->patches[leaf->patch];
     size_t m = p->deg_u, n = p->deg_v, np = p->nctrl, len = NC * np;
     double *root = scratch, *half[2] = {root + len, root + 2 * len}, *slot = root + 3 * len;
-    /* the net of a patch beyond 2^1000 or below 2^-1000 is stored times ps, and o is taken alike */
+    /* the net of a patch beyond 2^512 or below 2^-900 is stored times ps, and o is taken alike */
     const double *net0 = L->nets + leaf->net;
     double ps;
     (void)bsi_loc_patch(L, leaf->patch, &ps);

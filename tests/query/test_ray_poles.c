@@ -303,7 +303,8 @@ static void pole_weight_sweep(const bs_patch *p, double size, const double *vs, 
  * the far side, and the pieces next to v = 0 reach from there to the pole until they are far
  * narrower in v than in u (they are halved along v alone then: pole_split in
  * lib/query/ray_split.h). The two fuzz nets at their scales and at 1, then random (1..2, 2..3)
- * nets with their u = 0 side a pole and weights 2^-40 .. 2^40. */
+ * nets with their u = 0 side a pole and weights 2^-40 .. 2^40 (2^-12 .. 2^12 above degree (2,2), as
+ * fuzz_locator draws them). */
 static void pole_weights(int count)
 {
     static const int scale[2] = {711, -240};
@@ -326,12 +327,13 @@ static void pole_weights(int count)
     for (int t = 0; t < count; t++) {
         size_t m = 1 + (size_t)(bs_test_rand_u64(&rng) % 2), n = 2 + (size_t)(bs_test_rand_u64(&rng) % 2);
         double ctrl[3 * 16], wt[16], pole[3];
+        int wexp = m * n <= 4 ? 40 : 12; /* as fuzz_locator draws them */
         for (size_t c = 0; c < 3; c++)
             pole[c] = bs_test_rand(&rng, -1, 1);
         for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
             for (size_t c = 0; c < 3; c++)
                 ctrl[3 * k + c] = k <= n ? pole[c] : bs_test_rand(&rng, -1, 1);
-            wt[k] = ldexp(1.0, (int)(bs_test_rand_u64(&rng) % 81) - 40);
+            wt[k] = ldexp(1.0, (int)(bs_test_rand_u64(&rng) % (2 * wexp + 1)) - wexp);
         }
         bs_patch *p = NULL;
         CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, wt, &p), BS_OK);
@@ -383,7 +385,7 @@ int main(void)
     random_poles(bs_test_quick() ? 6 : 40, 1);
     singular_corners(bs_test_quick() ? 4 : 24);
     fold_sides(bs_test_quick() ? 4 : 24);
-    pole_weights(bs_test_quick() ? 4 : 24);
+    pole_weights(bs_test_quick() ? 8 : 300);
     printf("%d rays down normals next to poles, cusp edges, singular corners and folds, %d missed or hit later\n", rays, misses);
     return bs_test_exit("test_ray_poles");
 }

@@ -5,7 +5,7 @@
  * bits); rays hit subnormal copies (2^-1030 .. 2^-1060) as they hit the same net scaled back to
  * unit size; the hostile boxes (tests/hostile/huge_box, tiny_box, subnormal_box) tessellate with
  * a relative tolerance into the unit box's mesh and normals; a limit curvature on a collapsed
- * side, the same at every scale. Before 1.2: normals (0,0,0) beyond
+ * side, the same at every scale, and the limit normal at a pole with wild weights. Before 1.2: normals (0,0,0) beyond
  * 1e154 and below 1e-162, no closest point through a locator beyond 1e154, rays missing at
  * 1e-170 and 1e200, 2 triangles for huge_box; ray hit normals beyond 2^1000 a few ulps off
  * bs_patch_eval_normal's and subnormal copies missed. */
@@ -188,6 +188,49 @@ static void collapsed_limit(const double (*net)[3], size_t m, size_t n, int rati
     }
 }
 
+/* fuzz_locator's pole_weights_limit_normal: a rational (1,2) net in units of 2^-7 whose u = 0 side
+ * is a pole, weights 2^-21 .. 2^4 */
+static const double pole_net[6][4] = {{28, -78, 47, 0x1p-21},  {28, -78, 47, 0x1p-14}, {28, -78, 47, 0x1p-13},
+                                      {127, 127, -124, 0x1p4}, {127, 0, 0, 0x1p-16},  {52, 47, 22, 0x1p-21}};
+
+/* Normals at the pole (its corners and a point of it) and next to it: the same kinds and normals
+ * at every scale 2^-1000 .. 2^1000 as at unit size. The limit normal at the pole was (0,0,0) "undefined" at 2^973 .. 2^1000, where the
+ * general rule's partials (the weights' ratio times the net) overflowed. */
+static void pole_weight_normals(void)
+{
+    static const double at[5][2] = {{0.0, 0.0}, {0.0, 1.0}, {0.0, 0.5}, {0x1p-20, 0.5}, {0x1p-40, 0x1p-40}};
+    double ref[5][3] = {{0}}, ctrl[18], w[6];
+    unsigned char ref_kind[5] = {9, 9, 9, 9, 9};
+    for (int e = 0; e >= -1000; e = e == 1000 ? -1 : e >= 0 ? e + 1 : e - 1) {
+        for (int k = 0; k < 6; k++) {
+            for (int c = 0; c < 3; c++)
+                ctrl[3 * k + c] = ldexp(pole_net[k][c], e - 7);
+            w[k] = pole_net[k][3];
+        }
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(1, 2, 3, ctrl, w, &p), BS_OK);
+        for (int q = 0; q < 5 && p != NULL; q++) {
+            double u = at[q][0], v = at[q][1], x[3], n[3];
+            unsigned char kind = 9;
+            bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+            bs_view xv[3] = {{&x[0], 1, 0}, {&x[1], 1, 0}, {&x[2], 1, 0}};
+            bs_view nv[3] = {{&n[0], 1, 0}, {&n[1], 1, 0}, {&n[2], 1, 0}};
+            CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu, &cv, xv, nv, &kind), BS_OK);
+            if (e == 0) {
+                CHECKF(kind != BS_NORMAL_UNDEFINED, "pole weights, unit size: no normal at (%g, %g)", u, v);
+                ref_kind[q] = kind;
+                for (int c = 0; c < 3; c++)
+                    ref[q][c] = n[c];
+                continue;
+            }
+            CHECKF(kind == ref_kind[q] && fabs(n[0] - ref[q][0]) + fabs(n[1] - ref[q][1]) + fabs(n[2] - ref[q][2]) <= 1e-9,
+                   "pole weights, 2^%d, (%g, %g): kind %d normal (%g %g %g), at unit size %d (%g %g %g)", e, u, v,
+                   kind, n[0], n[1], n[2], ref_kind[q], ref[q][0], ref[q][1], ref[q][2]);
+        }
+        bs_patch_destroy(p);
+    }
+}
+
 /* Rays at a subnormal copy of the net (2^e, e from -1030 to -1060: 44 to 14 bits left) and at
  * that copy scaled back to unit size (exactly): the same patch, the same (u, v) and normal bit
  * for bit, t scaled to within the copy's last bits (rounded to them). A ray from 2^30 away hits
@@ -283,6 +326,7 @@ int main(void)
     copies(1);
     collapsed_limit(sides4, 2, 4, 0, 0x1.49539e3b2d067p-1, 0.0, "four sides one point");
     collapsed_limit(two_points, 5, 3, 1, 0x1p-19, 0x1p-19, "two points, two poles");
+    pole_weight_normals();
     subnormal(0);
     subnormal(1);
     boxes();
