@@ -18,7 +18,8 @@
  * pieces along a pole would double at every level, each holding the pole, which lies close to a
  * ray through a point next to it, so that none could be discarded and the budget ran out before
  * the piece holding the hit was reached; halved across the pole, one piece a level holds it, and
- * its hull shrinks onto the pole until the ray leaves it.
+ * its hull shrinks onto the pole until the ray leaves it. A rational piece whose weights hand
+ * over from one side to the other is cut where they do, not halved (ray_split.h).
  */
 #include "query/ray_piece.h"
 #include "query/ray_split.h"

@@ -1,7 +1,8 @@
 /*
  * Which way to halve a piece of a ray's search (lib/query/ray_patch.c): across a side that is
  * singular (collapsed to a pole, or a cusp edge where the partial across it vanishes), or both
- * ways, deeper than regular pieces go, at a corner between two poles or a singular corner. Private
+ * ways, deeper than regular pieces go, at a corner between two poles or a singular corner; and
+ * where to cut a rational piece whose weights hand over from one side to the other. Private
  * to lib/query/; included by ray_patch.c alone, after ray_piece.h (inlined into each of that
  * file's two cases, rational or not).
  */
@@ -131,7 +132,7 @@ SPECIALISE int lines_all_near(const double *net, size_t m, size_t n, int rat, in
     return 1;
 }
 
-/* The direction to halve a piece in: first, a sliver (every line one way within 2^-12 of the
+/* The direction to halve a piece in: first, a sliver (every line one way within 2^-4 of the
  * piece's extent of the first) along its length only (BS_DIR_V when its rows lie together);
  * else BS_DIR_U when a side s = const (a row of the net) is
  * singular (singular_side, within 1e-9 of the net's extent) and no side r = const is, BS_DIR_V
@@ -153,7 +154,8 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
     double size = greater(hi[0] - lo[0], greater(hi[1] - lo[1], hi[2] - lo[2]));
     int rows = singular_side(net, m, n, rat, BS_DIR_U, 1e-9 * size);
     int cols = singular_side(net, m, n, rat, BS_DIR_V, 1e-9 * size);
-    /* a sliver (a piece holding or beside a cusp edge, where the map is quadratic across it) is
+    /* a sliver (a piece holding or beside a cusp edge, where the map is quadratic across it, or
+     * next to a pole with wild weights, where pieces reach from the pole to the far side) is
      * halved along its length only: halved across, it would make two pieces no box can tell apart
      * at every level */
     int flat_s = lines_all_near(net, m, n, rat, BS_DIR_U, 0x1p-4 * size);
