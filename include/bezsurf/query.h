@@ -153,8 +153,10 @@ BS_API bs_status bs_locator_closest_point(const bs_locator *L, size_t n, const b
  * tau/|d| of the exact first hit (the second term, from 1.2, is the rounding of S - o for an
  * origin far from the surface; 1.1 stated 1e-9 D alone, which such rays exceeded). No ray whose
  * exact first hit is transversal (|d.N| >= 1e-3 |d|) is missed or answered with a later hit,
- * including rays through shared edges, corners and poles. Tangent and grazing hits may be reported
- * or not. t is a double: hits beyond t = DBL_MAX are not looked for (a direction of subnormal
+ * including rays through shared edges, corners and poles (measured on rational patches with
+ * weights 2^-40 .. 2^40 up to degree (2,2) and 2^-12 .. 2^12 above; wider weights next to a pole
+ * can exhaust the search's per-sub-patch budget: docs/queries.md). Tangent and grazing hits may
+ * be reported or not. t is a double: hits beyond t = DBL_MAX are not looked for (a direction of subnormal
  * length reaches only DBL_MAX |d| along the ray; 1.1 reported them with t = +Inf). On a miss:
  * patch UINT32_MAX, t = +Inf, uv and nrm NaN. A NaN or Inf in o or d, a NaN in the range, an
  * infinite t_min, a t_max of -Inf, or d = 0, is a miss with t = NaN. A t_max of +Inf means no
