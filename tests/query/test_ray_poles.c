@@ -333,7 +333,7 @@ static void pole_weights(int count)
         for (size_t k = 0; k < (m + 1) * (n + 1); k++) {
             for (size_t c = 0; c < 3; c++)
                 ctrl[3 * k + c] = k <= n ? pole[c] : bs_test_rand(&rng, -1, 1);
-            wt[k] = ldexp(1.0, (int)(bs_test_rand_u64(&rng) % (2 * wexp + 1)) - wexp);
+            wt[k] = ldexp(1.0, (int)(bs_test_rand_u64(&rng) % (unsigned)(2 * wexp + 1)) - wexp);
         }
         bs_patch *p = NULL;
         CHECK_STATUS(bs_patch_create(m, n, 3, ctrl, wt, &p), BS_OK);
