@@ -193,9 +193,9 @@ void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const 
                       size_t ustep, const double *v, const double *const *su,
                       const double *const *sv, double *const *nrm, unsigned char *kind);
 /* bs_patch_eval_normal of a polynomial bicubic 3-D patch from packed parameter arrays into packed
- * outputs (pos[3], nrm[3], kind; each may be NULL), whole chunks of BSI_CHUNK points from the
- * caller's arrays to the caller's arrays (lib/core/normal_chunk.c). Same bits as the general loop.
- * Returns the points done, a multiple of BSI_CHUNK. */
+ * outputs (pos[3], nrm[3], kind; each may be NULL), in whole chunks (4 BSI_CHUNK points, then
+ * BSI_CHUNK) from the caller's arrays to the caller's arrays (lib/core/normal_chunk.c). Same bits
+ * as the general loop. Returns the points done, a multiple of BSI_CHUNK. */
 size_t bsi_bicubic_normal_packed(const bs_patch *p, const bsi_nscale *sc, size_t n,
                                  const double *u, const double *v, double *const *pos,
                                  double *const *nrm, unsigned char *kind);
