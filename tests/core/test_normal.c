@@ -320,6 +320,7 @@ static void test_packed_chunks(void)
         u[41] = -INFINITY;
         u[70] = 1e300; /* squares out of range: the general rule */
         v[140] = NAN;
+        u[145] = NAN;
         u[150] = -1e300;
         v[N - 1] = NAN;
         bs_cview cu = cview_of(u, N), cv = cview_of(v, N);
