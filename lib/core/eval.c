@@ -31,62 +31,12 @@ void bsi_block_weights(size_t deg, const double *t, double *w, double *wm)
     }
 }
 
-/* One point of one plane of a bicubic net from its weights in u (bu, bum) and v (bv, bvm): the
- * value, and the first partials when hu != NULL. This is the general loop of
- * bsi_eval_first_block with every index fixed: the same operations in the same order (same bits),
- * so that the compiler keeps everything in registers and vectorises over points. */
-BSI_INLINE void bicubic_point(const double *restrict net, const double bu[4],
-                              const double bum[3], const double bv[4], const double bvm[3],
-                              double *h, double *hu, double *hv)
-{
-#define P(i, j) net[(i) * 4 + (j)]
-#define D(i, j) (P((i) + 1, j) - P(i, j))
-#define E(i, j) (P(i, (j) + 1) - P(i, j))
-#define Q(j) (bu[0] * P(0, j) + bu[1] * P(1, j) + bu[2] * P(2, j) + bu[3] * P(3, j))
-#define QU(j) (bum[0] * D(0, j) + bum[1] * D(1, j) + bum[2] * D(2, j))
-#define QV(j) (bu[0] * E(0, j) + bu[1] * E(1, j) + bu[2] * E(2, j) + bu[3] * E(3, j))
-    *h = bv[0] * Q(0) + bv[1] * Q(1) + bv[2] * Q(2) + bv[3] * Q(3);
-    if (hu == NULL)
-        return;
-    *hu = 3.0 * (bv[0] * QU(0) + bv[1] * QU(1) + bv[2] * QU(2) + bv[3] * QU(3));
-    *hv = 3.0 * (bvm[0] * QV(0) + bvm[1] * QV(1) + bvm[2] * QV(2));
-#undef Q
-#undef QU
-#undef QV
-#undef P
-#undef D
-#undef E
-}
-
-/* bicubic_point over a block of L lanes (weights [i*L + k]): value only when hu == NULL (two
- * loops, so each vectorises). */
-BSI_INLINE void bicubic_block(size_t L, const double *restrict net, const double *restrict bu,
-                              const double *restrict bum, const double *restrict bv,
-                              const double *restrict bvm, double *restrict h,
-                              double *restrict hu, double *restrict hv)
-{
-    if (hu == NULL)
-        for (size_t k = 0; k < L; k++) {
-            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
-            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
-            bicubic_point(net, au, NULL, av, NULL, h + k, NULL, NULL);
-        }
-    else
-        for (size_t k = 0; k < L; k++) {
-            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
-            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
-            double aum[3] = {bum[k], bum[L + k], bum[2 * L + k]};
-            double avm[3] = {bvm[k], bvm[L + k], bvm[2 * L + k]};
-            bicubic_point(net, au, aum, av, avm, h + k, hu + k, hv + k);
-        }
-}
-
 /* Points per block of the bicubic paths: the set-up per coordinate is shared by more points. */
 #define PB BSI_CHUNK
 
 /* bs_patch_eval of a polynomial bicubic patch whose views are all packed: whole blocks go from
  * the caller's arrays to the caller's arrays in one loop per block, with the per-point
- * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bicubic_point: same bits). Non-finite
+ * arithmetic of bsi_eval_first_block (bsi_bernstein3_first, bsi_bicubic_point: same bits). Non-finite
  * parameters give NaN, as in bs_patch_eval. Returns the points done, a multiple of PB. */
 BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *restrict u,
                                      const double *restrict v, double *const *pos,
@@ -110,7 +60,7 @@ BSI_HOT static size_t bicubic_packed(const bs_patch *p, size_t n, const double *
             double th[PB], thu[PB], thv[PB];
             double *h = pos != NULL ? pos[c] + k0 : th;
             double *hu = du != NULL ? du[c] + k0 : thu, *hv = dv != NULL ? dv[c] + k0 : thv;
-            bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h,
+            bsi_bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h,
                           first ? hu : NULL, hv);
             for (size_t k = 0; nbad > 0 && k < PB; k++)
                 if (!(fabs(u[k0 + k]) <= DBL_MAX) || !(fabs(v[k0 + k]) <= DBL_MAX))
@@ -127,12 +77,12 @@ BSI_HOT void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const d
     bsi_weights3(PB, u, bu[0], bum[0]);
     bsi_weights3(PB, v, bv[0], bvm[0]);
     for (size_t c = 0; c < p->dim; c++)
-        bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h + c * PB,
+        bsi_bicubic_block(PB, p->hom + c * p->nctrl, bu[0], bum[0], bv[0], bvm[0], h + c * PB,
                       hu + c * PB, hv + c * PB);
 }
 
 /* bsi_eval_first_block with first != 0 at one finite point: outputs [ncoord], the same bits
- * (bicubic nets through bicubic_point, as the block and chunk paths; others through a block). */
+ * (bicubic nets through bsi_bicubic_point, as the block and chunk paths; others through a block). */
 void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double *hu, double *hv)
 {
     if (p->deg_u == 3 && p->deg_v == 3) {
@@ -140,7 +90,7 @@ void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double
         bsi_bernstein3_first(u, bu, bum);
         bsi_bernstein3_first(v, bv, bvm);
         for (size_t c = 0; c < p->ncoord; c++)
-            bicubic_point(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c, hu + c, hv + c);
+            bsi_bicubic_point(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c, hu + c, hv + c);
         return;
     }
     double ub[B] = {u}, vb[B] = {v}, hb[(BS_MAX_DIM + 1) * B], hub[(BS_MAX_DIM + 1) * B],
@@ -153,17 +103,6 @@ void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double
     }
 }
 
-/* Element 0 of each of the k views when all are packed (stride 0 or 8), else 0. */
-static int packed_views(const bs_view *views, size_t k, double **data)
-{
-    for (size_t c = 0; c < k; c++) {
-        if (bsi_stride(views[c].stride) != (ptrdiff_t)sizeof(double))
-            return 0;
-        data[c] = views[c].data;
-    }
-    return 1;
-}
-
 BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
                           double *h, double *hu, double *hv)
 {
@@ -173,7 +112,7 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
         bsi_weights3(B, u, bu, bum);
         bsi_weights3(B, v, bv, bvm);
         for (size_t c = 0; c < p->ncoord; c++)
-            bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
+            bsi_bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
                           first ? hu + c * B : NULL, first ? hv + c * B : NULL);
         return;
     }
@@ -329,8 +268,8 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
     double *ps[BS_MAX_DIM], *pu[BS_MAX_DIM], *pv[BS_MAX_DIM];
     if (!p->rational && p->deg_u == 3 && p->deg_v == 3 &&
         bsi_stride(u->stride) == (ptrdiff_t)sizeof(double) &&
-        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double) && (pos == NULL || packed_views(pos, dim, ps)) &&
-        (du == NULL || packed_views(du, dim, pu)) && (dv == NULL || packed_views(dv, dim, pv)))
+        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double) && (pos == NULL || bsi_packed_views(pos, dim, ps)) &&
+        (du == NULL || bsi_packed_views(du, dim, pu)) && (dv == NULL || bsi_packed_views(dv, dim, pv)))
         k0 = bicubic_packed(p, n, u->data, v->data, pos ? ps : NULL, du ? pu : NULL,
                             dv ? pv : NULL);
     double h[(BS_MAX_DIM + 1) * B], hu[(BS_MAX_DIM + 1) * B], hv[(BS_MAX_DIM + 1) * B];

@@ -80,6 +80,56 @@ void bsi_block_weights(size_t deg, const double *t, double *w, double *wm);
 void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
                           double *h, double *hu, double *hv);
 
+/* One point of one plane of a bicubic net from its weights in u (bu, bum) and v (bv, bvm): the
+ * value, and the first partials when hu != NULL. This is the general loop of
+ * bsi_eval_first_block with every index fixed: the same operations in the same order (same bits),
+ * so that the compiler keeps everything in registers and vectorises over points. */
+BSI_INLINE void bsi_bicubic_point(const double *restrict net, const double bu[4],
+                                  const double bum[3], const double bv[4], const double bvm[3],
+                                  double *h, double *hu, double *hv)
+{
+#define P(i, j) net[(i) * 4 + (j)]
+#define D(i, j) (P((i) + 1, j) - P(i, j))
+#define E(i, j) (P(i, (j) + 1) - P(i, j))
+#define Q(j) (bu[0] * P(0, j) + bu[1] * P(1, j) + bu[2] * P(2, j) + bu[3] * P(3, j))
+#define QU(j) (bum[0] * D(0, j) + bum[1] * D(1, j) + bum[2] * D(2, j))
+#define QV(j) (bu[0] * E(0, j) + bu[1] * E(1, j) + bu[2] * E(2, j) + bu[3] * E(3, j))
+    *h = bv[0] * Q(0) + bv[1] * Q(1) + bv[2] * Q(2) + bv[3] * Q(3);
+    if (hu == NULL)
+        return;
+    *hu = 3.0 * (bv[0] * QU(0) + bv[1] * QU(1) + bv[2] * QU(2) + bv[3] * QU(3));
+    *hv = 3.0 * (bvm[0] * QV(0) + bvm[1] * QV(1) + bvm[2] * QV(2));
+#undef Q
+#undef QU
+#undef QV
+#undef P
+#undef D
+#undef E
+}
+
+/* bsi_bicubic_point over a block of L lanes (weights [i*L + k]): value only when hu == NULL (two
+ * loops, so each vectorises). */
+BSI_INLINE void bsi_bicubic_block(size_t L, const double *restrict net, const double *restrict bu,
+                                  const double *restrict bum, const double *restrict bv,
+                                  const double *restrict bvm, double *restrict h,
+                                  double *restrict hu, double *restrict hv)
+{
+    if (hu == NULL)
+        for (size_t k = 0; k < L; k++) {
+            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
+            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
+            bsi_bicubic_point(net, au, NULL, av, NULL, h + k, NULL, NULL);
+        }
+    else
+        for (size_t k = 0; k < L; k++) {
+            double au[4] = {bu[k], bu[L + k], bu[2 * L + k], bu[3 * L + k]};
+            double av[4] = {bv[k], bv[L + k], bv[2 * L + k], bv[3 * L + k]};
+            double aum[3] = {bum[k], bum[L + k], bum[2 * L + k]};
+            double avm[3] = {bvm[k], bvm[L + k], bvm[2 * L + k]};
+            bsi_bicubic_point(net, au, aum, av, avm, h + k, hu + k, hv + k);
+        }
+}
+
 /* Points per chunk of the bicubic kernels, which share their set-up over more points. */
 #define BSI_CHUNK ((size_t)32)
 
@@ -119,6 +169,19 @@ void bsi_contract_cubic(const bs_patch *p, const double *bu, const double *bum, 
 BSI_CUBIC_KERNELS(bsi_cubic_rows, bsi_cubic_pos_normal, double);
 BSI_CUBIC_KERNELS(bsi_cubic_rows_f32, bsi_cubic_pos_normal_f32, float);
 
+/* ---- Packed views ---- */
+
+/* Element 0 of each of the k views when all are packed (stride 0 or 8), else 0. */
+static inline int bsi_packed_views(const bs_view *views, size_t k, double **data)
+{
+    for (size_t c = 0; c < k; c++) {
+        if (bsi_stride(views[c].stride) != (ptrdiff_t)sizeof(double))
+            return 0;
+        data[c] = views[c].data;
+    }
+    return 1;
+}
+
 /* ---- Normals (lib/core/normal.c) ---- */
 
 /* The normal rule at one point from its S_u and S_v: writes nrm[3], returns the kind. */
@@ -129,6 +192,13 @@ unsigned char bsi_normal(const bs_patch *p, const bsi_nscale *sc, double u, doub
 void bsi_normal_block(const bs_patch *p, const bsi_nscale *sc, size_t nb, const double *u,
                       size_t ustep, const double *v, const double *const *su,
                       const double *const *sv, double *const *nrm, unsigned char *kind);
+/* bs_patch_eval_normal of a polynomial bicubic 3-D patch from packed parameter arrays into packed
+ * outputs (pos[3], nrm[3], kind; each may be NULL), in whole chunks (4 BSI_CHUNK points, then
+ * BSI_CHUNK) from the caller's arrays to the caller's arrays (lib/core/normal_chunk.c). Same bits
+ * as the general loop. Returns the points done, a multiple of BSI_CHUNK. */
+size_t bsi_bicubic_normal_packed(const bs_patch *p, const bsi_nscale *sc, size_t n,
+                                 const double *u, const double *v, double *const *pos,
+                                 double *const *nrm, unsigned char *kind);
 /* ---- The regular normal rule at one point (lib/core/normal.c, lib/core/eval_grid.c) ----
  * N = (S_u x S_v) / |S_u x S_v| with the fast tests of bsi_normal; flag 0.0 when settled, 1.0
  * when the point needs bsi_normal. Inline so that every vectorised caller does the same

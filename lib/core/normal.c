@@ -409,9 +409,15 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     /* Polynomial bicubic patches go in chunks of BSI_CHUNK points, others in blocks of
      * BSI_BLOCK: the same arithmetic per point either way. */
     int chunked = !p->rational && p->deg_u == 3 && p->deg_v == 3;
-    size_t L = chunked ? BSI_CHUNK : B;
+    size_t L = chunked ? BSI_CHUNK : B, k0 = 0;
+    double *op[3], *on[3];
+    /* packed arrays: whole chunks straight from the caller's arrays to the caller's arrays */
+    if (chunked && bsi_stride(u->stride) == (ptrdiff_t)sizeof(double) &&
+        bsi_stride(v->stride) == (ptrdiff_t)sizeof(double) && (pos == NULL || bsi_packed_views(pos, 3, op)) &&
+        (nrm == NULL || bsi_packed_views(nrm, 3, on)))
+        k0 = bsi_bicubic_normal_packed(p, &sc, n, u->data, v->data, pos ? op : NULL, nrm ? on : NULL, kind);
     double h[4 * BSI_CHUNK], hu[4 * BSI_CHUNK], hv[4 * BSI_CHUNK];
-    for (size_t k0 = 0; k0 < n; k0 += L) {
+    for (; k0 < n; k0 += L) {
         size_t nb = n - k0 < L ? n - k0 : L;
         double ub[BSI_CHUNK], vb[BSI_CHUNK];
         int bad[BSI_CHUNK] = {0}; /* filled below block by block; zero keeps the analyzer sure */

@@ -14,7 +14,7 @@
 #define NMAX (BS_MAX_DEGREE + 1)
 
 /* One plane of a bicubic net at one point: out[0..4] = S_u, S_v, S_uu, S_uv, S_vv, out[5] the
- * value. The value, S_u and S_v are the sums of bicubic_point (lib/core/eval.c) term for term. */
+ * value. The value, S_u and S_v are the sums of bsi_bicubic_point (lib/core/kernels.h) term for term. */
 BSI_INLINE void bicubic2_point(const double *restrict net, const double bu[4],
                                const double bum[3], const double bumm[2], const double bv[4],
                                const double bvm[3], const double bvmm[2], double out[6])

@@ -285,6 +285,105 @@ static void test_positions_match_eval(void)
     tnet_free(&t);
 }
 
+/* The chunked path of polynomial bicubic patches with packed arrays against the general loop
+ * (strided outputs) and one call per point, bit for bit: positions, normals and kinds, with
+ * limit normals, undefined normals, NaN, infinite and huge parameters in each size of chunk, and
+ * a count that is not a multiple of the chunk; each output may be left out. */
+static void test_packed_chunks(void)
+{
+    enum { N = 128 + 32 + 7 }; /* a chunk of 128, one of 32, a tail */
+    static double ctrl[32][48];
+    CHECK(load_bpt(BS_DATA_DIR "/teapot.bpt", ctrl, 32) == 32);
+    unsigned long long rng = 700;
+    tnet col = collapsed_net(&rng, 3, 3, 3, 0), wild = tnet_random(&rng, 3, 3, 3, 0, 0.5, 2.0);
+    double pt[48], big[48];
+    for (int k = 0; k < 48; k++) {
+        pt[k] = k % 3 - 1.5;           /* one point: no normal anywhere */
+        big[k] = wild.ctrl[k] * 1e200; /* goes through the scaled copy */
+    }
+    const double *nets[5] = {ctrl[20], ctrl[5], col.ctrl, pt, big};
+    for (int q = 0; q < 5; q++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(3, 3, 3, nets[q], NULL, &p), BS_OK);
+        double u[N], v[N], a[6 * N], b[6 * N], s[6 * N * 2], c[6 * N];
+        unsigned char ka[N], kb[N], kc[N];
+        for (int k = 0; k < N; k++) {
+            u[k] = bs_test_rand(&rng, -0.1, 1.1);
+            v[k] = bs_test_rand(&rng, -0.1, 1.1);
+            if (k % 4 == 0)
+                u[k] = 0.0; /* the teapot's collapsed row: limit normals */
+            if (k % 9 == 0)
+                v[k] = k % 2 ? 1.0 : 0.0;
+        }
+        u[3] = NAN;
+        v[40] = INFINITY;
+        u[41] = -INFINITY;
+        u[70] = 1e300; /* squares out of range: the general rule */
+        v[140] = NAN;
+        u[145] = NAN;
+        u[150] = -1e300;
+        v[N - 1] = NAN;
+        bs_cview cu = cview_of(u, N), cv = cview_of(v, N);
+        bs_view va[6], vs[6];
+        views_of(a, 6, N, va);
+        for (int d = 0; d < 6; d++) { /* interleaved with a gap: the general loop */
+            bs_view w = {s + d, N, 12 * (ptrdiff_t)sizeof(double)};
+            vs[d] = w;
+        }
+        CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, va, va + 3, ka), BS_OK);
+        CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, vs, vs + 3, kb), BS_OK);
+        for (int k = 0; k < N; k++) {
+            for (int d = 0; d < 6; d++)
+                b[d * N + k] = s[12 * k + d];
+            bs_cview cu1 = cview_of(u + k, 1), cv1 = cview_of(v + k, 1);
+            bs_view v1[6];
+            for (int d = 0; d < 6; d++) {
+                bs_view w = {c + d * N + k, 1, 0};
+                v1[d] = w;
+            }
+            CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu1, &cv1, v1, v1 + 3, kc + k), BS_OK);
+        }
+        CHECKF(memcmp(a, b, sizeof a) == 0 && memcmp(ka, kb, sizeof ka) == 0, "net %d: packed/strided", q);
+        CHECKF(memcmp(a, c, sizeof a) == 0 && memcmp(ka, kc, sizeof ka) == 0, "net %d: packed/one by one", q);
+        int limits = 0;
+        for (int k = 0; k < N; k++)
+            limits += ka[k] == BS_NORMAL_LIMIT;
+        CHECK(q != 0 || limits > 0);
+        /* a strided parameter or normal array: the general loop, the same bits */
+        double uu[2 * N], vv[2 * N];
+        for (int k = 0; k < N; k++) {
+            uu[2 * k] = u[k];
+            vv[2 * k] = v[k];
+        }
+        bs_cview su = {uu, N, 2 * (ptrdiff_t)sizeof(double)}, sv = {vv, N, 2 * (ptrdiff_t)sizeof(double)};
+        const bs_cview *lu[3] = {&su, &cu, &cu}, *lv[3] = {&cv, &sv, &cv};
+        for (int l = 0; l < 3; l++) {
+            memset(c, 0, sizeof c);
+            bs_view vc[6];
+            views_of(c, 6, N, vc);
+            CHECK_STATUS(bs_patch_eval_normal(p, N, lu[l], lv[l], vc, l == 2 ? vs + 3 : vc + 3, kc), BS_OK);
+            for (int k = 0; l == 2 && k < N; k++)
+                for (int d = 3; d < 6; d++)
+                    c[d * N + k] = s[12 * k + d];
+            CHECKF(memcmp(a, c, sizeof a) == 0 && memcmp(ka, kc, sizeof ka) == 0, "net %d: layout %d", q, l);
+        }
+        memset(kc, 9, sizeof kc);
+        CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, NULL, NULL, kc), BS_OK);
+        CHECK(memcmp(ka, kc, sizeof ka) == 0);
+        /* each output left out in turn: the others keep their bits */
+        memset(c, 0, sizeof c);
+        CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, NULL, va + 3, NULL), BS_OK);
+        CHECK(memcmp(a + 3 * N, b + 3 * N, 3 * N * sizeof(double)) == 0);
+        bs_view vc[3];
+        views_of(c, 3, N, vc);
+        CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, vc, NULL, kc), BS_OK);
+        CHECK(memcmp(c, b, 3 * N * sizeof(double)) == 0 && memcmp(kc, kb, sizeof kc) == 0);
+        bs_patch_destroy(p);
+    }
+    tnet_free(&col);
+    tnet_free(&wild);
+}
+
 int main(void)
 {
     test_teapot();
@@ -295,6 +394,7 @@ int main(void)
     test_undefined();
     test_finite_and_nan();
     test_positions_match_eval();
+    test_packed_chunks();
     printf("normals: worst regular error %.3g (limit 1e-9), worst limit error %.3g (limit 1e-6)\n",
            worst_regular, worst_limit);
     return bs_test_exit("test_normal");
