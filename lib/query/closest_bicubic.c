@@ -85,24 +85,19 @@ BSI_HOT double bsi_cl_box4(const double *net)
 }
 
 
-/* The products of the planes y (the net times the binomials) into N's coefficients o, N's
- * products summed over the three coordinates before they are added in, and with rational (a
- * constant once inlined) W's from the weight plane y[3] into ow, vectorised over j'. */
-BSI_INLINE void products(double (*y)[4][4], int rational, double o[7][8], double ow[7][8])
+/* The products of the planes a, b, c (the net's coordinates times the binomials) into o, summed
+ * over the three before they are added in, vectorised over j'. W's are taken with the weight
+ * plane and two planes of zeros (x + 0 is x: the same bits as its products alone). */
+BSI_INLINE void products(double (*a)[4], double (*b)[4], double (*c)[4], double o[7][8])
 {
     for (int i = 0; i < 4; i++)
         for (int i2 = i; i2 < 4; i2++) {
             double f = i2 == i ? 1.0 : 2.0;
             for (int j = 0; j < 4; j++) {
-                double a0 = f * y[0][i][j], a1 = f * y[1][i][j], a2 = f * y[2][i][j];
+                double a0 = f * a[i][j], a1 = f * b[i][j], a2 = f * c[i][j];
                 double *row = &o[i + i2][j];
                 for (int j2 = 0; j2 < 4; j2++)
-                    row[j2] += a0 * y[0][i2][j2] + a1 * y[1][i2][j2] + a2 * y[2][i2][j2];
-                if (!rational)
-                    continue;
-                double a3 = f * y[3][i][j], *roww = &ow[i + i2][j];
-                for (int j2 = 0; j2 < 4; j2++)
-                    roww[j2] += a3 * y[3][i2][j2];
+                    row[j2] += a0 * a[i2][j2] + a1 * b[i2][j2] + a2 * c[i2][j2];
             }
         }
 }
@@ -126,7 +121,7 @@ BSI_HOT void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b)
             }
             amax = a2 > amax ? a2 : amax;
         }
-    products(y, 0, o, NULL);
+    products(y[0], y[1], y[2], o);
     double err = (double)(16 * 3 + 16) * DBL_EPSILON * amax, rel = (double)(16 + 16) * DBL_EPSILON;
     double best = INFINITY;
     size_t arg = 0;
@@ -160,7 +155,9 @@ BSI_HOT void bsi_cl_fbound4(bsi_cl *w, const double *net, bsi_cl_bound *b)
             a2 = a2 / (x[3] * x[3]) * (1.0 + 8.0 * DBL_EPSILON);
             amax = a2 > amax ? a2 : amax;
         }
-    products(y, 1, o, ow);
+    double zero[4][4] = {{0.0}};
+    products(y[0], y[1], y[2], o);
+    products(y[3], zero, zero, ow);
     /* err, the bound on every N_kl's error e W_kl (1 + rel) of bsi_cl_fbound, taken with W_kl at
      * most 1 + rel: the weights are scaled below 1 and W_kl is an average of their products */
     double e = (double)(16 * 3 + 16) * DBL_EPSILON * amax;
@@ -246,8 +243,8 @@ BSI_HOT void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, do
 
 /* bsi_deriv_table's quotient rule (Leibniz on A = w S) on the homogeneous partials hd of a
  * bicubic 3-D rational patch, k = ka = kb: the same operations in the same order (the same
- * bits), the binomials C(i,a) from a table. */
-BSI_INLINE void leibniz3(const double *hd, unsigned k, double *out)
+ * bits), the binomials C(i,a) from a table. Not specialised by k (few operations). */
+static void leibniz3(const double *hd, unsigned k, double *out)
 {
     static const double binom[3][3] = {{1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {1.0, 2.0, 1.0}};
     size_t k1 = (size_t)k + 1;
