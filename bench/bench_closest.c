@@ -8,9 +8,19 @@
  *                                     answer is not the global one (farther by more than tau).
  *   bench_closest --degrees [points]  random wavy patches of degree 3, 6, 10, 16: boxes visited
  *                                     and time per query, for queries near, on and far.
+ *   bench_closest --once poly|rational [points]
+ *                                     for callgrind: the teapot (poly) or the rational teapot
+ *                                     (its nets with weight 1 + 0.5 (k % 3) on control point k,
+ *                                     bench_curvature's teapot-rational), each patch against the
+ *                                     same `points` random query points as above in one call of
+ *                                     bs_patch_closest_point; then, outside that function, the
+ *                                     boxes whose second-order bound was computed, per query.
+ *   valgrind --tool=callgrind --toggle-collect=bs_patch_closest_point \
+ *            build/bench/bench_closest --once rational 1000
  */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include "query/closest.h"
+#include "rational_teapot.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -92,11 +102,10 @@ static double naive(const bs_patch *p, const double *q, double uv[2])
     return sqrt(best);
 }
 
-static int teapot(size_t npts)
+/* npts random points in the teapot's bounding box grown by 0.2 of its size each way (NULL when
+ * out of memory). */
+static double *query_points(const bs_surface *s, size_t npts)
 {
-    bs_surface *s;
-    if (bs_surface_create_builtin("teapot", &s) != BS_OK)
-        return 1;
     size_t np = bs_surface_count(s);
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = 0; i < np; i++) {
@@ -107,14 +116,26 @@ static int teapot(size_t npts)
             hi[c] = fmax(hi[c], b[3 + c]);
         }
     }
-    double *q = malloc(3 * npts * sizeof(double)), *ours = malloc(np * npts * sizeof(double));
-    if (q == NULL || ours == NULL)
-        return 1;
+    double *q = malloc(3 * npts * sizeof(double));
+    if (q == NULL)
+        return NULL;
     for (size_t k = 0; k < npts; k++)
         for (int c = 0; c < 3; c++) {
             double pad = 0.2 * (hi[c] - lo[c]);
             q[3 * k + (size_t)c] = rnd(lo[c] - pad, hi[c] + pad);
         }
+    return q;
+}
+
+static int teapot(size_t npts)
+{
+    bs_surface *s;
+    if (bs_surface_create_builtin("teapot", &s) != BS_OK)
+        return 1;
+    size_t np = bs_surface_count(s);
+    double *q = query_points(s, npts), *ours = malloc(np * npts * sizeof(double));
+    if (q == NULL || ours == NULL)
+        return 1;
     double t0 = now();
     for (size_t i = 0; i < np; i++) {
         const bs_patch *p = bs_surface_get(s, i);
@@ -193,8 +214,52 @@ static int degrees(size_t npts)
     return 0;
 }
 
+/* The --once run: every patch (rational copies with rational) against the same npts points in
+ * one call each, then the boxes per query and the mean distance (a check that both runs answer
+ * alike). */
+static int once(size_t npts, int rational)
+{
+    bs_surface *s;
+    if (bs_surface_create_builtin("teapot", &s) != BS_OK)
+        return 1;
+    size_t np = bs_surface_count(s);
+    double *q = query_points(s, npts), *d = malloc(npts * sizeof(double));
+    if (q == NULL || d == NULL)
+        return 1;
+    double boxes = 0.0, sum = 0.0;
+    for (size_t i = 0; i < np; i++) {
+        const bs_patch *p0 = bs_surface_get(s, i);
+        bs_patch *r = rational ? rational_copy(p0) : NULL;
+        const bs_patch *p = rational ? r : p0;
+        bs_cview qv[3] = {{q, npts, 24}, {q + 1, npts, 24}, {q + 2, npts, 24}};
+        bs_view dv = {d, npts, 0};
+        if (p == NULL || bs_patch_closest_point(p, npts, qv, NULL, &dv, NULL) != BS_OK)
+            return 1;
+        for (size_t k = 0; k < npts; k++) {
+            double best = INFINITY, uv[2];
+            size_t b = 0;
+            if (bsi_patch_closest_count(p, q + 3 * k, 0.0, &best, uv, &b) < 0)
+                return 1;
+            boxes += (double)b;
+            sum += d[k];
+        }
+        bs_patch_destroy(r);
+    }
+    double total = (double)(np * npts);
+    printf("%s teapot: %zu patches x %zu points: %.2f boxes per query, mean distance %.17g\n",
+           rational ? "rational" : "polynomial", np, npts, boxes / total, sum / total);
+    free(q);
+    free(d);
+    bs_surface_destroy(s);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 2 && strcmp(argv[1], "--once") == 0) {
+        size_t n = argc > 3 ? (size_t)atol(argv[3]) : 1000;
+        return n == 0 ? 1 : once(n, strcmp(argv[2], "rational") == 0);
+    }
     int deg = argc > 1 && strcmp(argv[1], "--degrees") == 0;
     const char *count = argc > (deg ? 2 : 1) ? argv[deg ? 2 : 1] : NULL;
     size_t npts = count != NULL ? (size_t)atol(count) : (deg ? 200 : 1000);

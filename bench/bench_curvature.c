@@ -11,6 +11,7 @@
  */
 #define _POSIX_C_SOURCE 199309L /* clock_gettime */
 #include <bezsurf.h>
+#include "rational_teapot.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -80,17 +81,6 @@ static bs_patch *random_patch(size_t m, size_t n, int rational)
     return bs_patch_create(m, n, 3, ctrl, rational ? w : NULL, &p) == BS_OK ? p : NULL;
 }
 
-/* A bicubic patch with the net of q and weights 1, 1.5, 2 by control point. */
-static bs_patch *rational_copy(const bs_patch *q)
-{
-    double ctrl[16 * 3], w[16];
-    if (bs_patch_get_ctrl(q, ctrl, 48, NULL, 0) != BS_OK)
-        return NULL;
-    for (size_t k = 0; k < 16; k++)
-        w[k] = 1.0 + 0.5 * (double)(k % 3);
-    bs_patch *p;
-    return bs_patch_create(3, 3, 3, ctrl, w, &p) == BS_OK ? p : NULL;
-}
 
 /* The ratio of curvature to normal on cx's patches, printed under title. */
 static int report(const context *cx, double budget, const char *title)

@@ -93,8 +93,9 @@ static void certify(bsi_cl *w, search *s)
     double g[2], h[3], c = bsi_cl_grad(w, s->uv, g, h);
     /* For a polynomial patch G = f - c, and lambda bounds its Hessian from below over a square
      * that holds x*: where f's Hessian at x* is not positive definite (a minimum on an edge or
-     * at a corner) no square can be shown convex, and only separable_bound is tried. */
-    int poly = w->nc == w->dim && w->m > 0 && w->n > 0;
+     * at a corner) no square can be shown convex, and only separable_bound is tried. A rational
+     * patch's G is tried for convexity, else bounded the same way (separable_weighted). */
+    int both = w->m > 0 && w->n > 0, poly = w->nc == w->dim && both;
     int convex = !poly || (h[0] > 0.0 && h[2] > 0.0 && h[0] * h[2] - h[1] * h[1] > 0.0);
     /* rounding of f(x*) (evaluation relative to q, amplified by s2) and of the square's net */
     /* S is a convex combination of the control points (weights B w / sum B w), so its rounding
@@ -119,8 +120,10 @@ static void certify(bsi_cl *w, search *s)
         double lambda = bsi_cl_convex(w, &b, c, &wlo, &whi, abc);
         if (!(lambda > 0.0 && convex)) {
             /* a square kept only where it prunes now */
-            double lbf = poly ? fmax(c + bsi_cl_separable_bound(s->uv, x, g, dg, abc), b.lbf) : 0.0;
-            double lb = poly ? sqrt(fmax(lbf, 0.0)) - noise : -INFINITY;
+            double wr[4] = {wlo, whi, b.rel, dr * (2.0 * sqrt(c) + dr)};
+            double sep = poly ? bsi_cl_separable_bound(s->uv, x, g, dg, abc)
+                              : bsi_cl_separable_weighted(s->uv, x, g, dg, abc, wr);
+            double lb = both ? sqrt(fmax(fmax(c + sep, b.lbf), 0.0)) - noise : -INFINITY;
             if (!pruned(s, lb))
                 continue;
             region *rg = &s->reg[s->nreg++ % REGIONS];

@@ -28,6 +28,7 @@ typedef struct bsi_cl {
     size_t m, n, dim, nc; /* degrees, dimension, doubles per net point (dim + 1 when rational) */
     size_t np;            /* doubles per net, (m+1)(n+1) nc */
     unsigned depth;       /* the deepest box (BSI_CL_DEPTH, more for a rational patch) */
+    size_t bicubic;       /* m = n = dim = 3: nc, the kernels of closest_bicubic.c; else 0 */
     /* scratch sized for p, allocated once by bsi_cl_create */
     double *pool;      /* BSI_CL_SLOTS nets, point-major: coordinate c of (i,j) at [(i(n+1)+j) nc + c];
                         * homogeneous w (P - q) then w when rational, scaled */
@@ -95,6 +96,11 @@ double bsi_cl_convex(const bsi_cl *w, const bsi_cl_bound *b, double c, double *w
  * its rounding, abc the bounds of bsi_cl_convex (lib/query/closest_bound.c). */
 double bsi_cl_separable_bound(const double uv[2], const double x[4], const double g[2],
                               const double dg[2], const double abc[3]);
+/* The same for a rational patch (G = N - c W), a lower bound on f - c: wr holds the bounds of
+ * bsi_cl_convex on W over the square, bsi_cl_fbound's relative rounding of W and the rounding
+ * of c = f(x*) (lib/query/closest_rational.c). */
+double bsi_cl_separable_weighted(const double uv[2], const double x[4], const double g[2],
+                                 const double dg[2], const double abc[3], const double wr[4]);
 /* 1 when the box x of the last bsi_cl_fbound (b its result, w->nco and w->wco still its
  * coefficients) holds no local minimum of f over the patch's domain: a partial derivative keeps
  * one sign over it and the box does not reach the side of the domain it points to
@@ -116,16 +122,23 @@ double bsi_cl_grad(bsi_cl *w, const double x[2], double g[2], double h[3]);
 int bsi_patch_closest_count(const bs_patch *p, const double *q, double d_scale, double *best_d2,
                             double uv[2], size_t *boxes);
 
-/* The bicubic 3-D polynomial patch (m = n = 3, dim = nc = 3), lib/query/closest_bicubic.c:
- * bsi_cl_split, bsi_cl_box, bsi_cl_fbound and the partials on constant sizes. */
-#define BSI_CL_BICUBIC3(w) ((w)->m == 3 && (w)->n == 3 && (w)->dim == 3 && (w)->nc == 3)
+/* The bicubic 3-D polynomial patch (m = n = 3, dim = nc = 3) and the rational one (nc = 4),
+ * lib/query/closest_bicubic.c: bsi_cl_split, bsi_cl_box, bsi_cl_fbound and the partials on
+ * constant sizes (3: polynomial, 4: rational). */
+#define BSI_CL_BICUBIC3(w) ((w)->bicubic == 3)
+#define BSI_CL_BICUBIC4(w) ((w)->bicubic == 4)
 void bsi_cl_split3(const double *src, int dir, double *lo, double *hi);
+void bsi_cl_split4(const double *src, int dir, double *lo, double *hi);
 double bsi_cl_box3(const double *net);
+double bsi_cl_box4(const double *net);
 void bsi_cl_fbound3(bsi_cl *w, const double *net, bsi_cl_bound *b);
+void bsi_cl_fbound4(bsi_cl *w, const double *net, bsi_cl_bound *b);
 /* bsi_cl_region's subdivision of a copy of the root net to the box x (the same bits). */
 void bsi_cl_region3(double *net, const double x[4]);
+void bsi_cl_region4(double *net, const double x[4]);
 /* bsi_deriv_table(p, u, v, k, k, ...) for k = 0 or 2, hom = p->hom: the same bits. */
 void bsi_cl_deriv3(const double *hom, double u, double v, unsigned k, double *out);
+void bsi_cl_deriv4(const double *hom, double u, double v, unsigned k, double *out);
 /* The end of bsi_cl_fbound: what b receives from the smallest ratio (at arg), the smallest lower
  * bound low on the ratios and the rounding terms err and rel. */
 void bsi_cl_fbound_finish(bsi_cl *w, bsi_cl_bound *b, double low, size_t arg, double err,

@@ -55,6 +55,7 @@ bsi_cl *bsi_cl_create(const bs_patch *p)
     w->nc = p->ncoord;
     w->np = pts * w->nc;
     w->depth = bsi_cl_depth(p);
+    w->bicubic = m == 3 && n == 3 && w->dim == 3 ? w->nc : 0;
     size_t slots = (size_t)w->depth + 3;
     size_t total = (slots + 2) * w->np + pts * w->dim + w->np + 3 * coef +
                    (m + n + 2 * m + 2 * n + 4) + max_sz(m, n) + 1 + bsi_deriv_table_scratch(p, 2, 2) +
@@ -166,6 +167,8 @@ void bsi_cl_split(bsi_cl *w, const double *src, int dir, double *lo, double *hi)
     size_t m = w->m, n = w->n, nc = w->nc;
     if (BSI_CL_BICUBIC3(w)) {
         bsi_cl_split3(src, dir, lo, hi);
+    } else if (BSI_CL_BICUBIC4(w)) {
+        bsi_cl_split4(src, dir, lo, hi);
     } else if (dir == BS_DIR_U) {
         for (size_t j = 0; j <= n; j++)
             for (size_t c = 0; c < nc; c++) {
@@ -196,6 +199,8 @@ double bsi_cl_box(bsi_cl *w, const double *net)
 {
     if (BSI_CL_BICUBIC3(w))
         return bsi_cl_box3(net);
+    if (BSI_CL_BICUBIC4(w))
+        return bsi_cl_box4(net);
     if (w->nc > w->dim) {
         cartesian(w, net);
         net = w->cart;
@@ -265,6 +270,10 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
         bsi_cl_fbound3(w, net, b);
         return;
     }
+    if (BSI_CL_BICUBIC4(w)) {
+        bsi_cl_fbound4(w, net, b);
+        return;
+    }
     size_t n2 = 2 * n + 1, coef = (2 * m + 1) * n2;
     int rational = nc > dim;
     const double *bm = w->binom, *bn = bm + m + 1, *b2m = bn + n + 1, *b2n = b2m + 2 * m + 1;
@@ -326,7 +335,7 @@ void bsi_cl_fbound(bsi_cl *w, const double *net, bsi_cl_bound *b)
 
 int bsi_cl_direction(const bsi_cl *w)
 {
-    return BSI_CL_BICUBIC3(w) ? bsi_cl_slack3(w) : bsi_cl_slack(w, w->m, w->n);
+    return w->bicubic != 0 ? bsi_cl_slack3(w) : bsi_cl_slack(w, w->m, w->n);
 }
 
 void bsi_cl_region(bsi_cl *w, const double x[4])
@@ -336,6 +345,10 @@ void bsi_cl_region(bsi_cl *w, const double x[4])
         w->region[k] = w->root[k];
     if (BSI_CL_BICUBIC3(w)) {
         bsi_cl_region3(w->region, x);
+        return;
+    }
+    if (BSI_CL_BICUBIC4(w)) {
+        bsi_cl_region4(w->region, x);
         return;
     }
     for (size_t j = 0; j <= n; j++)

@@ -22,6 +22,8 @@ static double eval(bsi_cl *w, double u, double v, double *g, double *h, double *
     unsigned k = g != NULL ? 2u : 0u;
     if (BSI_CL_BICUBIC3(w))
         bsi_cl_deriv3(w->p->hom, u, v, k, w->table);
+    else if (BSI_CL_BICUBIC4(w))
+        bsi_cl_deriv4(w->p->hom, u, v, k, w->table);
     else
         bsi_deriv_table(w->p, u, v, k, k, w->dscratch, w->table);
     const double *t = w->table;

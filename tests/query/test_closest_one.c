@@ -2,7 +2,9 @@
  * surface locator runs over many patches with a shrinking best: a patch farther than the best
  * returns 0 without a box visited and leaves uv and the best alone; run over all the teapot's
  * patches it finds the same distance as the best of bs_patch_closest_point patch by patch; the
- * caller's larger D widens the tolerance; two threads at once get the same bits as one.
+ * caller's larger D widens the tolerance; the rational teapot's answers match the general code's
+ * and its minima on edges and corners are closed without splitting; two threads at once get the
+ * same bits as one.
  * Built with the library's sources (the step is internal). */
 #include "harness.h"
 #include "query/closest.h"
@@ -92,6 +94,83 @@ static void pruning(void)
     bs_patch_destroy(p);
 }
 
+/* The teapot's patch i with weight 1 + 0.5 (k % 3) on control point k, in dim 3 or, with a zero
+ * fourth coordinate, in dim 4 (the same surface through the general code). */
+static bs_patch *rational_teapot(const bs_surface *s, size_t i, size_t dim)
+{
+    double ctrl[48], ctrl4[64], w[16];
+    CHECK_STATUS(bs_patch_get_ctrl(bs_surface_get(s, i), ctrl, 48, NULL, 0), BS_OK);
+    for (size_t k = 0; k < 16; k++) {
+        w[k] = 1.0 + 0.5 * (double)(k % 3);
+        for (size_t c = 0; c < 4; c++)
+            ctrl4[4 * k + c] = c < 3 ? ctrl[3 * k + c] : 0.0;
+    }
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(3, 3, dim, dim == 3 ? ctrl : ctrl4, w, &p), BS_OK);
+    return p;
+}
+
+/* The rational teapot: the bicubic rational kernels give the general code's distances (the same
+ * patches in dim 4) within tau, and minima on edges and corners are closed by the separable bound
+ * on G = N - c W: 13.3 boxes a query on these points without it, under 9 with it. */
+static void rational(void)
+{
+    bs_surface *s;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &s), BS_OK);
+    unsigned long long rng = 11;
+    size_t boxes = 0, queries = 0;
+    for (size_t i = 0; i < bs_surface_count(s); i++) {
+        bs_patch *p = rational_teapot(s, i, 3), *p4 = rational_teapot(s, i, 4);
+        double lo[3], hi[3];
+        bs_patch_bounds(p, lo, hi);
+        double D = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                        (hi[2] - lo[2]) * (hi[2] - lo[2]));
+        for (int k = 0; k < 20; k++, queries++) {
+            double q[4] = {bs_test_rand(&rng, -4, 4), bs_test_rand(&rng, -3, 3), bs_test_rand(&rng, -1, 4), 0};
+            double b3 = INFINITY, b4 = INFINITY, uv[2];
+            size_t nb = 0;
+            CHECK(bsi_patch_closest_count(p, q, 0.0, &b3, uv, &nb) == 1);
+            CHECK(bsi_patch_closest_count(p4, q, 0.0, &b4, uv, NULL) == 1);
+            boxes += nb;
+            double tau = 1e-9 * (D + sqrt(b3));
+            CHECKF(fabs(sqrt(b3) - sqrt(b4)) <= tau, "patch %zu: %.17g in 3-D, %.17g in 4-D", i,
+                   sqrt(b3), sqrt(b4));
+        }
+        bs_patch_destroy(p);
+        bs_patch_destroy(p4);
+    }
+    printf("rational teapot: %.2f boxes per query\n", (double)boxes / (double)queries);
+    CHECKF(boxes < 9 * queries, "%zu boxes for %zu queries", boxes, queries);
+    bs_surface_destroy(s);
+}
+
+/* Curves (degree 0 in one direction): an arc of the unit circle from angle -0.5 to 0.5 (its
+ * cubic approximation) seen from far on the other side, where f is concave along it, so no square
+ * around the nearer end is shown convex and none is bounded without it (kept open, the boxes
+ * settle it). The answer is no farther than the best of 1,000 points of the arc. */
+static void curves(void)
+{
+    double h = 4.0 / 3.0 * tan(0.25), c = cos(0.5), s = sin(0.5);
+    double arc[12] = {c, -s, 0, c + h * s, -s + h * c, 0, c + h * s, s - h * c, 0, c, s, 0};
+    double q[3] = {-10.0, 0.5, 0.0};
+    for (int k = 0; k < 2; k++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_create(k ? 3 : 0, k ? 0 : 3, 3, arc, NULL, &p), BS_OK);
+        double best = INFINITY, uv[2], sampled = INFINITY;
+        CHECK(bsi_patch_closest_one(p, q, 0.0, &best, uv) == 1);
+        for (int i = 0; i <= 1000; i++) {
+            double t = i / 1000.0, pt[3];
+            bs_cview ct = {&t, 1, 0}, c0 = {&(double){0.0}, 1, 0};
+            bs_view o[3] = {{&pt[0], 1, 0}, {&pt[1], 1, 0}, {&pt[2], 1, 0}};
+            CHECK_STATUS(bs_patch_eval(p, 1, k ? &ct : &c0, k ? &c0 : &ct, o, NULL, NULL), BS_OK);
+            sampled = fmin(sampled, sqrt((pt[0] - q[0]) * (pt[0] - q[0]) + (pt[1] - q[1]) * (pt[1] - q[1])));
+        }
+        CHECKF(sqrt(best) <= sampled + 1e-9 * (2.0 + sampled), "curve %d: %.17g, sampled %.17g", k,
+               sqrt(best), sampled);
+        bs_patch_destroy(p);
+    }
+}
+
 /* Thread safety: two threads on the same patch and points, the bits of one thread alone. */
 typedef struct job {
     const bs_patch *p;
@@ -133,6 +212,8 @@ int main(void)
 {
     pruning();
     teapot();
+    rational();
+    curves();
     threads();
     return bs_test_exit("test_closest_one");
 }
