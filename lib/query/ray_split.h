@@ -174,8 +174,9 @@ SPECIALISE int pole_split(const double *net, size_t m, size_t n, int rat, const 
  * lines' end-weight ratios more than 16^deg away from 1. Then the cut lies where they hand over,
  * (1 - t)^deg w_first = t^deg w_last (a Moebius reparametrisation that balances the end weights
  * maps 1/2 there): halved, such a piece keeps a hull far larger than itself for level after level
- * (wild weights next to a pole: most of the domain maps within a hair of one side). */
-SPECIALISE double handover(const double *net, size_t m, size_t n, int rat, int dir)
+ * (wild weights next to a pole: most of the domain maps within a hair of one side). Not inlined
+ * into the two cases of the search: rare and cheap next to the halving. */
+static double handover(const double *net, size_t m, size_t n, int rat, int dir)
 {
     size_t deg = dir == BS_DIR_U ? m : n, count = dir == BS_DIR_U ? n + 1 : m + 1;
     size_t step = dir == BS_DIR_U ? 1 : n + 1, next = dir == BS_DIR_U ? n + 1 : 1;
@@ -196,7 +197,7 @@ SPECIALISE double handover(const double *net, size_t m, size_t n, int rat, int d
 /* Cut a net of NC doubles a point at the fraction f of its width along dir into lo and hi:
  * bsi_net_halve's midpoints at f = 1/2 (the same bits in patches sharing a side), de
  * Casteljau's convex combinations elsewhere. */
-SPECIALISE void net_cut(const double *net, size_t m, size_t n, int dir, double f, double *lo, double *hi)
+static void net_cut(const double *net, size_t m, size_t n, int dir, double f, double *lo, double *hi)
 {
     if (f == 0.5) {
         bsi_net_halve(net, m, n, NC, dir, lo, hi);
