@@ -33,9 +33,11 @@ BSI_INLINE void normal_chunk(const bs_patch *p, const bsi_nscale *sc, size_t L, 
     }
     bsi_weights3(L, x, bu, bum);
     bsi_weights3(L, y, bv, bvm);
-    for (size_t c = 0; c < 3; c++) /* positions not asked for go to scratch */
-        bsi_bicubic_block(L, p->hom + c * p->nctrl, bu, bum, bv, bvm,
-                          pos != NULL ? pos[c] + k0 : th, hu[c], hv[c]);
+    for (size_t c = 0; c < 3; c++) { /* positions not asked for go to scratch (th: written, not read) */
+        // cppcheck-suppress legacyUninitvar
+        double *out = pos != NULL ? pos[c] + k0 : th;
+        bsi_bicubic_block(L, p->hom + c * p->nctrl, bu, bum, bv, bvm, out, hu[c], hv[c]);
+    }
     double *restrict n0 = nrm != NULL ? nrm[0] + k0 : tn[0];
     double *restrict n1 = nrm != NULL ? nrm[1] + k0 : tn[1];
     double *restrict n2 = nrm != NULL ? nrm[2] + k0 : tn[2];
