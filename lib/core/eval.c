@@ -7,28 +7,36 @@
 #define B BSI_BLOCK
 #define NMAX (BS_MAX_DEGREE + 1)
 
-void bsi_block_weights(size_t deg, const double *t, double *w, double *wm)
+/* bsi_block_weights on lanes 0 .. nl-1 of the block (stride B): in line, so that a whole block
+ * (nl = B) vectorises and a single point (nl = 1) computes one lane, with the same operations. */
+BSI_INLINE void weights_lanes(size_t deg, const double *t, double *w, double *wm, size_t nl)
 {
     double s[B], saved[B];
-    for (size_t k = 0; k < B; k++) {
+    for (size_t k = 0; k < nl; k++) {
         s[k] = 1.0 - t[k];
         w[k] = 1.0;
     }
     for (size_t r = 1; r <= deg; r++) {
         if (r == deg)
-            for (size_t x = 0; x < deg * B; x++)
-                wm[x] = w[x];
-        for (size_t k = 0; k < B; k++)
+            for (size_t i = 0; i < deg; i++)
+                for (size_t k = 0; k < nl; k++)
+                    wm[i * B + k] = w[i * B + k];
+        for (size_t k = 0; k < nl; k++)
             saved[k] = 0.0;
         for (size_t i = 0; i < r; i++)
-            for (size_t k = 0; k < B; k++) {
+            for (size_t k = 0; k < nl; k++) {
                 double tmp = w[i * B + k];
                 w[i * B + k] = saved[k] + s[k] * tmp;
                 saved[k] = t[k] * tmp;
             }
-        for (size_t k = 0; k < B; k++)
+        for (size_t k = 0; k < nl; k++)
             w[r * B + k] = saved[k];
     }
+}
+
+void bsi_block_weights(size_t deg, const double *t, double *w, double *wm)
+{
+    weights_lanes(deg, t, w, wm, B);
 }
 
 /* Points per block of the bicubic paths: the set-up per coordinate is shared by more points. */
@@ -81,61 +89,34 @@ BSI_HOT void bsi_bicubic_first_chunk(const bs_patch *p, const double *u, const d
                       hu + c * PB, hv + c * PB);
 }
 
-/* bsi_eval_first_block with first != 0 at one finite point: outputs [ncoord], the same bits
- * (bicubic nets through bsi_bicubic_point, as the block and chunk paths; others through a block). */
-void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double *hu, double *hv)
-{
-    if (p->deg_u == 3 && p->deg_v == 3) {
-        double bu[4], bum[3], bv[4], bvm[3];
-        bsi_bernstein3_first(u, bu, bum);
-        bsi_bernstein3_first(v, bv, bvm);
-        for (size_t c = 0; c < p->ncoord; c++)
-            bsi_bicubic_point(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c, hu + c, hv + c);
-        return;
-    }
-    double ub[B] = {u}, vb[B] = {v}, hb[(BS_MAX_DIM + 1) * B], hub[(BS_MAX_DIM + 1) * B],
-           hvb[(BS_MAX_DIM + 1) * B];
-    bsi_eval_first_block(p, ub, vb, 1, hb, hub, hvb);
-    for (size_t c = 0; c < p->ncoord; c++) {
-        h[c] = hb[c * B];
-        hu[c] = hub[c * B];
-        hv[c] = hvb[c * B];
-    }
-}
-
-BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
-                          double *h, double *hu, double *hv)
+/* The general case of bsi_eval_first_block on lanes 0 .. nl-1 (outputs at stride B), in line for
+ * the block (nl = B, vectorised) and for one point (nl = 1: an eighth of the arithmetic, the
+ * same bits). */
+BSI_INLINE void first_lanes(const bs_patch *p, const double *u, const double *v, int first,
+                            double *h, double *hu, double *hv, size_t nl)
 {
     size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
     double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
-    if (m == 3 && n == 3) {
-        bsi_weights3(B, u, bu, bum);
-        bsi_weights3(B, v, bv, bvm);
-        for (size_t c = 0; c < p->ncoord; c++)
-            bsi_bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
-                          first ? hu + c * B : NULL, first ? hv + c * B : NULL);
-        return;
-    }
-    bsi_block_weights(m, u, bu, bum);
-    bsi_block_weights(n, v, bv, bvm);
+    weights_lanes(m, u, bu, bum, nl);
+    weights_lanes(n, v, bv, bvm, nl);
     int du = first && m > 0, dv = first && n > 0;
 
     for (size_t c = 0; c < p->ncoord; c++) {
         const double *net = p->hom + c * p->nctrl;
         double acc[B], accu[B], accv[B];
-        for (size_t k = 0; k < B; k++)
+        for (size_t k = 0; k < nl; k++)
             acc[k] = accu[k] = accv[k] = -0.0;
         /* Per column j: contract u (i ascending) into q, qu, qv held in registers, then add the
          * column's v-weighted share to the results (j ascending). */
         for (size_t j = 0; j <= n; j++) {
             double q[B], qu[B], qv[B];
-            for (size_t k = 0; k < B; k++)
+            for (size_t k = 0; k < nl; k++)
                 q[k] = qu[k] = qv[k] = -0.0;
             if (!first) {
                 for (size_t i = 0; i <= m; i++) {
                     double pij = net[i * n1 + j];
                     const double *wi = bu + i * B;
-                    for (size_t k = 0; k < B; k++)
+                    for (size_t k = 0; k < nl; k++)
                         q[k] += wi[k] * pij;
                 }
             } else {
@@ -146,26 +127,26 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
                     double dvij = jv ? net[i * n1 + j + 1] - pij : 0.0;
                     double duij = du && i < m ? net[(i + 1) * n1 + j] - pij : 0.0;
                     const double *wi = bu + i * B, *wmi = bum + i * B;
-                    for (size_t k = 0; k < B; k++) {
+                    for (size_t k = 0; k < nl; k++) {
                         q[k] += wi[k] * pij;
                         qv[k] += wi[k] * dvij;
                     }
                     if (du && i < m)
-                        for (size_t k = 0; k < B; k++)
+                        for (size_t k = 0; k < nl; k++)
                             qu[k] += wmi[k] * duij;
                 }
             }
             const double *wj = bv + j * B, *wmj = bvm + j * B;
-            for (size_t k = 0; k < B; k++)
+            for (size_t k = 0; k < nl; k++)
                 acc[k] += wj[k] * q[k];
             if (du)
-                for (size_t k = 0; k < B; k++)
+                for (size_t k = 0; k < nl; k++)
                     accu[k] += wj[k] * qu[k];
             if (dv && j < n)
-                for (size_t k = 0; k < B; k++)
+                for (size_t k = 0; k < nl; k++)
                     accv[k] += wmj[k] * qv[k];
         }
-        for (size_t k = 0; k < B; k++) {
+        for (size_t k = 0; k < nl; k++) {
             h[c * B + k] = acc[k];
             if (first) {
                 hu[c * B + k] = du ? (double)m * accu[k] : 0.0;
@@ -173,6 +154,61 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
             }
         }
     }
+}
+
+BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const double *v, int first,
+                          double *h, double *hu, double *hv)
+{
+    if (p->deg_u == 3 && p->deg_v == 3) {
+        double bu[4 * B], bum[4 * B], bv[4 * B], bvm[4 * B];
+        bsi_weights3(B, u, bu, bum);
+        bsi_weights3(B, v, bv, bvm);
+        for (size_t c = 0; c < p->ncoord; c++)
+            bsi_bicubic_block(B, p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
+                          first ? hu + c * B : NULL, first ? hv + c * B : NULL);
+        return;
+    }
+    first_lanes(p, u, v, first, h, hu, hv, B);
+}
+
+/* bsi_eval_first_block's lane 0 alone (u[0], v[0] finite; outputs at stride B, as the block's):
+ * the same bits for a call of one point at an eighth of the cost. */
+static void eval_first_lane0(const bs_patch *p, const double *u, const double *v, int first,
+                             double *h, double *hu, double *hv)
+{
+    if (p->deg_u == 3 && p->deg_v == 3) {
+        double bu[4], bum[3], bv[4], bvm[3];
+        bsi_bernstein3_first(u[0], bu, bum);
+        bsi_bernstein3_first(v[0], bv, bvm);
+        for (size_t c = 0; c < p->ncoord; c++)
+            bsi_bicubic_point(p->hom + c * p->nctrl, bu, bum, bv, bvm, h + c * B,
+                              first ? hu + c * B : NULL, hv + c * B);
+        return;
+    }
+    first_lanes(p, u, v, first, h, hu, hv, 1);
+}
+
+/* bsi_eval_first_block with first != 0 at one finite point: outputs [ncoord], the same bits. */
+void bsi_eval_first_one(const bs_patch *p, double u, double v, double *h, double *hu, double *hv)
+{
+    double hb[(BS_MAX_DIM + 1) * B], hub[(BS_MAX_DIM + 1) * B], hvb[(BS_MAX_DIM + 1) * B];
+    eval_first_lane0(p, &u, &v, 1, hb, hub, hvb);
+    for (size_t c = 0; c < p->ncoord; c++) {
+        h[c] = hb[c * B];
+        hu[c] = hub[c * B];
+        hv[c] = hvb[c * B];
+    }
+}
+
+void bsi_eval_point(const bs_patch *p, double u, double v, double *pos)
+{
+    double h[(BS_MAX_DIM + 1) * B];
+    int ok = isfinite(u) && isfinite(v);
+    double ub = ok ? u : 0.0, vb = ok ? v : 0.0;
+    eval_first_lane0(p, &ub, &vb, 0, h, NULL, NULL);
+    bsi_project_first(p, h, NULL, NULL, B, pos, NULL, NULL);
+    for (size_t c = 0; !ok && c < p->dim; c++)
+        pos[c] = NAN;
 }
 
 void bsi_project_first(const bs_patch *p, const double *h, const double *hu, const double *hv,
@@ -278,7 +314,10 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
         double ub[B], vb[B];
         int bad[B];
         bsi_load_block(u, v, k0, nb, ub, vb, bad);
-        bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
+        if (nb == 1) /* a single point (a call of one, or a tail of one) costs one lane */
+            eval_first_lane0(p, ub, vb, first, h, hu, hv);
+        else
+            bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
         if (p->rational)
             for (size_t k = 0; k < nb; k++) {
                 /* in place: S replaces A, S_u and S_v replace A_u and A_v */

@@ -208,4 +208,8 @@ bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out);
 void bsi_eval_normal_one(const bs_patch *p, const bsi_nscale *sc, double u, double v,
                          double pos[3], double nrm[3], unsigned char *kind);
 
+/* bs_patch_eval's position at one point (u, v), into pos[dim]: the same bits, without the views
+ * (for callers inside the library that evaluate point by point). Non-finite u or v give NaN. */
+void bsi_eval_point(const bs_patch *p, double u, double v, double *pos);
+
 #endif

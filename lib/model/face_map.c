@@ -70,9 +70,8 @@ int bsi_face_point(const bs_model *m, size_t f, double u, double v, double *p)
     double st[2];
     if (!bsi_face_locate(m, f, u, v, &patch, st))
         return 0;
-    bs_cview cu = {&st[0], 1, 0}, cv = {&st[1], 1, 0};
-    bs_view pos[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
-    return bs_patch_eval(bs_surface_get(m->surface, patch), 1, &cu, &cv, pos, NULL, NULL) == BS_OK;
+    bsi_eval_point(bs_surface_get(m->surface, patch), st[0], st[1], p); /* bs_patch_eval's bits */
+    return 1;
 }
 
 int bsi_face_partials_cell(const bs_model *m, size_t f, double u, double v, double *p, double *pu,
