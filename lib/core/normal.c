@@ -15,6 +15,11 @@
 /* Highest Taylor order of S_u x S_v tried along the approach direction. */
 #define KMAX 6
 
+/* min and max for the scans over a net, whose values are finite: the values of fmin and fmax,
+ * without their calls. */
+static inline double lower(double a, double b) { return b < a ? b : a; }
+static inline double upper(double a, double b) { return b > a ? b : a; }
+
 static double norm3(const double *a)
 {
     /* Plain formula unless the squares could underflow or overflow. */
@@ -68,8 +73,8 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t k = 0; k < p->nctrl; k++)
         for (size_t c = 0; c < 3; c++) {
-            lo[c] = fmin(lo[c], p->ctrl[k * 3 + c]);
-            hi[c] = fmax(hi[c], p->ctrl[k * 3 + c]);
+            lo[c] = lower(lo[c], p->ctrl[k * 3 + c]);
+            hi[c] = upper(hi[c], p->ctrl[k * 3 + c]);
         }
     /* halves first: the extent of a net near DBL_MAX overflows; the scales are capped at
      * DBL_MAX, which keeps every zero test meaningful */
@@ -79,14 +84,14 @@ void bsi_normal_scale(const bs_patch *p, bsi_nscale *sc)
         double wmin = INFINITY;
         wmax = 0.0;
         for (size_t k = 0; k < p->nctrl; k++) {
-            wmin = fmin(wmin, p->weights[k]);
-            wmax = fmax(wmax, p->weights[k]);
+            wmin = lower(wmin, p->weights[k]);
+            wmax = upper(wmax, p->weights[k]);
         }
         rho = wmax / wmin;
     }
     double pmax = 0.0;
     for (size_t k = 0; k < p->nctrl; k++)
-        pmax = fmax(pmax, norm3(p->ctrl + 3 * k));
+        pmax = upper(pmax, norm3(p->ctrl + 3 * k));
     sc->rho = rho;
     sc->noise = 2.0 * (double)(p->deg_u + p->deg_v + 1) * DBL_EPSILON * fmin(pmax, DBL_MAX);
     sc->lu = fmin(DBL_MAX, (double)(p->deg_u > 0 ? p->deg_u : 1) * d);
@@ -359,7 +364,7 @@ double bsi_extreme_scale(const bs_patch *p, int lo, int hi)
 {
     double big = 0.0;
     for (size_t k = 0; k < p->nctrl * p->dim; k++)
-        big = fmax(big, fabs(p->ctrl[k]));
+        big = upper(big, fabs(p->ctrl[k]));
     if (!(big > 0.0) || (big >= ldexp(1.0, -lo) && big <= ldexp(1.0, hi)))
         return 1.0;
     int e = 0;
@@ -377,6 +382,23 @@ bs_status bsi_scaled_patch(const bs_patch *p, double sig, bs_patch **out)
     bs_status st = bs_patch_create(p->deg_u, p->deg_v, p->dim, ctrl, p->rational ? p->weights : NULL, out);
     free(ctrl);
     return st;
+}
+
+/* bs_patch_eval_normal of a single point (u, v) with the patch's scale sc. */
+static bs_status one_normal(const bs_patch *p, const bsi_nscale *sc, double u, double v,
+                            const bs_view *pos, const bs_view *nrm, unsigned char *kind)
+{
+    double s[3] = {NAN, NAN, NAN}, nv[3] = {NAN, NAN, NAN};
+    unsigned char kd = BS_NORMAL_UNDEFINED;
+    if (isfinite(u) && isfinite(v))
+        bsi_eval_normal_one(p, sc, u, v, s, nv, &kd);
+    for (size_t c = 0; c < 3; c++) {
+        put_coord(pos, c, 0, &s[c], 1);
+        put_coord(nrm, c, 0, &nv[c], 1);
+    }
+    if (kind != NULL)
+        kind[0] = kd;
+    return BS_OK;
 }
 
 bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, const bs_cview *v,
@@ -406,6 +428,8 @@ bs_status bs_patch_eval_normal(const bs_patch *p, size_t n, const bs_cview *u, c
     }
     bsi_nscale sc;
     bsi_normal_scale(p, &sc);
+    if (n == 1) /* one point: bsi_eval_normal_one, the bits of the loop below without its chunk */
+        return one_normal(p, &sc, bsi_cget(u, 0), bsi_cget(v, 0), pos, nrm, kind);
     /* Polynomial bicubic patches go in chunks of BSI_CHUNK points, others in blocks of
      * BSI_BLOCK: the same arithmetic per point either way. */
     int chunked = !p->rational && p->deg_u == 3 && p->deg_v == 3;

@@ -384,6 +384,52 @@ static void test_packed_chunks(void)
     tnet_free(&wild);
 }
 
+/* A call of one point (its own path) against the same point in a batch, bit for bit: positions,
+ * normals and kinds on nets of degrees 1..5, rational and polynomial, with collapsed sides (limit
+ * normals), at parameters on the sides, inside, outside and not finite. */
+static void test_single_point_calls(void)
+{
+    enum { N = 40 };
+    unsigned long long rng = 4242;
+    int same = 1, limits = 0;
+    for (size_t m = 1; m <= 5; m++)
+        for (size_t n = 1; n <= 5; n += 2)
+            for (int kind = 0; kind < 4; kind++) {
+                int rational = kind & 1;
+                tnet t = kind & 2 ? collapsed_net(&rng, m, n, (int)((m + n) % 4), rational)
+                                  : tnet_random(&rng, m, n, 3, rational, 0.25, 4.0);
+                bs_patch *p = tnet_patch(&t);
+                double u[N], v[N], a[6 * N];
+                unsigned char ka[N];
+                for (int k = 0; k < N; k++) {
+                    u[k] = k % 5 == 0 ? 0.0 : k % 7 == 0 ? 1.0 : bs_test_rand(&rng, -0.1, 1.1);
+                    v[k] = k % 3 == 0 ? 0.0 : k % 4 == 0 ? 1.0 : bs_test_rand(&rng, -0.1, 1.1);
+                }
+                u[11] = NAN;
+                v[13] = -INFINITY;
+                bs_cview cu = cview_of(u, N), cv = cview_of(v, N);
+                bs_view va[6];
+                views_of(a, 6, N, va);
+                CHECK_STATUS(bs_patch_eval_normal(p, N, &cu, &cv, va, va + 3, ka), BS_OK);
+                for (int k = 0; k < N; k++) {
+                    double one[6];
+                    unsigned char k1 = 77;
+                    bs_cview cu1 = cview_of(u + k, 1), cv1 = cview_of(v + k, 1);
+                    bs_view v1[6];
+                    views_of(one, 6, 1, v1);
+                    CHECK_STATUS(bs_patch_eval_normal(p, 1, &cu1, &cv1, v1, v1 + 3, &k1), BS_OK);
+                    for (int d = 0; d < 6; d++)
+                        same &= memcmp(&one[d], &a[d * N + k], sizeof(double)) == 0;
+                    same &= k1 == ka[k];
+                    limits += ka[k] == BS_NORMAL_LIMIT;
+                }
+                CHECKF(same, "deg (%zu,%zu) kind %d: one point differs from its batch", m, n, kind);
+                bs_patch_destroy(p);
+                tnet_free(&t);
+            }
+    CHECK(limits > 0); /* the collapsed nets' sides were reached */
+}
+
 int main(void)
 {
     test_teapot();
@@ -395,6 +441,7 @@ int main(void)
     test_finite_and_nan();
     test_positions_match_eval();
     test_packed_chunks();
+    test_single_point_calls();
     printf("normals: worst regular error %.3g (limit 1e-9), worst limit error %.3g (limit 1e-6)\n",
            worst_regular, worst_limit);
     return bs_test_exit("test_normal");
