@@ -172,9 +172,10 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
 }
 
 /* bsi_eval_first_block's lane 0 alone (u[0], v[0] finite; outputs at stride B, as the block's):
- * the same bits for a call of one point at an eighth of the cost. */
-static void eval_first_lane0(const bs_patch *p, const double *u, const double *v, int first,
-                             double *h, double *hu, double *hv)
+ * the same bits for a call of one point at an eighth of the cost. In line, so that the callers
+ * that want values alone compile without the partials' branches. */
+BSI_INLINE void eval_first_lane0(const bs_patch *p, const double *u, const double *v, int first,
+                                 double *h, double *hu, double *hv)
 {
     if (p->deg_u == 3 && p->deg_v == 3) {
         double bu[4], bum[3], bv[4], bvm[3];
@@ -314,8 +315,10 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
         double ub[B], vb[B];
         int bad[B];
         bsi_load_block(u, v, k0, nb, ub, vb, bad);
-        if (nb == 1) /* a single point (a call of one, or a tail of one) costs one lane */
-            eval_first_lane0(p, ub, vb, first, h, hu, hv);
+        if (nb == 1 && !first) /* a single point (a call of one, or a tail of one): one lane */
+            eval_first_lane0(p, ub, vb, 0, h, NULL, NULL);
+        else if (nb == 1)
+            eval_first_lane0(p, ub, vb, 1, h, hu, hv);
         else
             bsi_eval_first_block(p, ub, vb, first, h, hu, hv);
         if (p->rational)
