@@ -13,6 +13,8 @@
 #include "model/classify_internal.h"
 
 #include <math.h>
+#include <stdlib.h>
+#include <string.h>
 
 #define CLEAR_DEPTH 40
 
@@ -40,28 +42,64 @@ static int hull_meets(const double *h, size_t count, const double nb[4], const d
     return 0;
 }
 
-/* 1 when the degree-p segment may pass through nb: halved while its pieces' boxes meet it. */
+/* The halves of the degree-p piece h (homogeneous points) at its middle into lo and hi, which may
+ * be h itself: one de Casteljau pass of midpoints gives both. */
+static void halve_piece(const double *h, size_t p, double *lo, double *hi)
+{
+    double tmp[BSI_SEG_MAX];
+    memcpy(tmp, h, (p + 1) * 3 * sizeof *tmp);
+    memcpy(lo, tmp, 3 * sizeof *tmp);
+    memcpy(hi + p * 3, tmp + p * 3, 3 * sizeof *tmp);
+    for (size_t r = 1; r <= p; r++) {
+        for (size_t i = 0; i + r <= p; i++)
+            for (size_t c = 0; c < 3; c++)
+                tmp[i * 3 + c] = (tmp[i * 3 + c] + tmp[(i + 1) * 3 + c]) * 0.5;
+        memcpy(lo + r * 3, tmp, 3 * sizeof *tmp);
+        memcpy(hi + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
+    }
+}
+
+/* Pieces of a segment up to cubic waiting in seg_meets without a heap block. */
+#define LOCAL_PIECES ((CLEAR_DEPTH + 2) * 4 * 3)
+
+/* 1 when the degree-p segment may pass through nb: halved while its pieces' boxes meet it. The
+ * pieces waiting are kept on the stack whole, and each is halved where it is taken, rather than
+ * cut from the segment again (two de Casteljau passes each). Without memory for the pieces the
+ * answer is 1, the safe one. */
 static int seg_meets(const double *seg, size_t p, const double nb[4], const double *su, size_t nu,
                      const double *sv, size_t nv)
 {
-    struct { double s0, s1; int depth; } stack[CLEAR_DEPTH + 2];
-    size_t top = 0;
-    stack[top].s0 = 0.0, stack[top].s1 = 1.0, stack[top++].depth = 0;
-    while (top > 0) {
+    if (!hull_meets(seg, p + 1, nb, su, nu, sv, nv))
+        return 0;
+    /* the segment's first point is on the curve: in the box, the curve passes through it */
+    if (hull_meets(seg, 1, nb, su, nu, sv, nv))
+        return 1;
+    size_t len = (p + 1) * 3, top = 0;
+    double local[LOCAL_PIECES];
+    double *pieces = len * (CLEAR_DEPTH + 2) <= LOCAL_PIECES ? local : malloc((CLEAR_DEPTH + 2) * len * sizeof *pieces);
+    if (pieces == NULL)
+        return 1;
+    int depth[CLEAR_DEPTH + 2], found = 0;
+    /* the segment's halves: the first half on top, taken first */
+    halve_piece(seg, p, pieces + len, pieces);
+    depth[0] = depth[1] = 1;
+    top = 2;
+    while (top > 0 && !found) {
         top--;
-        double s0 = stack[top].s0, s1 = stack[top].s1, piece[BSI_SEG_MAX];
-        int depth = stack[top].depth;
-        bsi_seg_piece(seg, p, s0, s1, piece);
-        if (!hull_meets(piece, p + 1, nb, su, nu, sv, nv))
+        double *h = pieces + top * len;
+        if (!hull_meets(h, p + 1, nb, su, nu, sv, nv))
             continue;
-        /* the piece's first point is on the curve: in the box, the curve passes through it */
-        if (depth >= CLEAR_DEPTH || hull_meets(piece, 1, nb, su, nu, sv, nv))
-            return 1;
-        double mid = 0.5 * (s0 + s1);
-        stack[top].s0 = mid, stack[top].s1 = s1, stack[top++].depth = depth + 1;
-        stack[top].s0 = s0, stack[top].s1 = mid, stack[top++].depth = depth + 1;
+        if (depth[top] >= CLEAR_DEPTH || hull_meets(h, 1, nb, su, nu, sv, nv)) {
+            found = 1;
+            continue;
+        }
+        halve_piece(h, p, h + len, h); /* the second half stays in place, the first goes on top */
+        depth[top + 1] = ++depth[top];
+        top += 2;
     }
-    return 0;
+    if (pieces != local)
+        free(pieces);
+    return found;
 }
 
 /* The shifts by whole periods (0 when not periodic) that can bring the curve range [lo, hi] of

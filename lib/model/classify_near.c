@@ -40,6 +40,12 @@ void bsi_seg_piece(const double *seg, size_t p, double s0, double s1, double *ou
 /* The point at s of a 2-D segment (de Casteljau on homogeneous points). */
 void bsi_seg_point(const double *seg, size_t p, double s, double *xy)
 {
+    if (s == 0.0 || s == 1.0) { /* an end: its control point (de Casteljau gives the same) */
+        const double *e = seg + (s == 0.0 ? 0 : p * 3);
+        xy[0] = e[0] / e[2];
+        xy[1] = e[1] / e[2];
+        return;
+    }
     double tmp[BSI_SEG_MAX];
     memcpy(tmp, seg, (p + 1) * 3 * sizeof *tmp);
     for (size_t r = 1; r <= p; r++)
