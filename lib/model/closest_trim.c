@@ -78,7 +78,10 @@ static void net_bounds(const double *pts, const double *w, size_t m, size_t n, s
         R = bsi_dmax(R, sqrt(r2));
         wmin = bsi_dmin(wmin, w ? w[k] : 1.0);
     }
-    /* hb, wb: the largest coefficients of H_s, H_t, H_ss, H_st, H_tt and of W's */
+    /* hb, wb: the largest coefficients of H_s, H_t, H_ss, H_st, H_tt and of W's: differences of
+     * the net's values V = (w (P - c0), w), written out per kind */
+#define V(i, j, c) ((c) < dim ? (w ? w[(i) * n1 + (j)] : 1.0) * (pts[((i) * n1 + (j)) * dim + (c)] - c0[c]) \
+                              : (w ? w[(i) * n1 + (j)] : 1.0))
     double hb[5] = {0}, wb[5] = {0};
     static const int di[5] = {1, 0, 2, 1, 0}, dj[5] = {0, 1, 0, 1, 2};
     for (int d = 0; d < 5; d++) {
@@ -94,15 +97,11 @@ static void net_bounds(const double *pts, const double *w, size_t m, size_t n, s
             for (size_t j = 0; j + e <= n; j++) {
                 double h2 = 0.0, wd = 0.0;
                 for (size_t c = 0; c <= dim; c++) { /* c = dim: the weight */
-                    double x = 0.0;
-                    for (size_t p = 0; p <= a; p++)
-                        for (size_t q = 0; q <= e; q++) {
-                            size_t k = (i + p) * n1 + j + q;
-                            double sign = ((a - p + e - q) % 2) ? -1.0 : 1.0;
-                            double coef = (a == 2 && p == 1) || (e == 2 && q == 1) ? 2.0 : 1.0;
-                            double wk = w ? w[k] : 1.0;
-                            x += sign * coef * (c < dim ? wk * (pts[k * dim + c] - c0[c]) : wk);
-                        }
+                    double x = d == 0   ? V(i + 1, j, c) - V(i, j, c)
+                               : d == 1 ? V(i, j + 1, c) - V(i, j, c)
+                               : d == 2 ? V(i + 2, j, c) - 2.0 * V(i + 1, j, c) + V(i, j, c)
+                               : d == 3 ? V(i + 1, j + 1, c) - V(i + 1, j, c) - V(i, j + 1, c) + V(i, j, c)
+                                        : V(i, j + 2, c) - 2.0 * V(i, j + 1, c) + V(i, j, c);
                     if (c < dim)
                         h2 += x * x;
                     else
@@ -112,6 +111,7 @@ static void net_bounds(const double *pts, const double *w, size_t m, size_t n, s
                 wb[d] = bsi_dmax(wb[d], f * wd);
             }
     }
+#undef V
     double up = 1.0 + 1e-12;
     b[0] = up * (hb[0] + R * wb[0]) / wmin;
     b[1] = up * (hb[1] + R * wb[1]) / wmin;
