@@ -172,10 +172,9 @@ BSI_HOT void bsi_eval_first_block(const bs_patch *p, const double *u, const doub
 }
 
 /* bsi_eval_first_block's lane 0 alone (u[0], v[0] finite; outputs at stride B, as the block's):
- * the same bits for a call of one point at an eighth of the cost. In line, so that the callers
- * that want values alone compile without the partials' branches. */
-BSI_INLINE void eval_first_lane0(const bs_patch *p, const double *u, const double *v, int first,
-                                 double *h, double *hu, double *hv)
+ * the same bits for a call of one point at an eighth of the cost. */
+static void eval_first_lane0(const bs_patch *p, const double *u, const double *v, int first,
+                             double *h, double *hu, double *hv)
 {
     if (p->deg_u == 3 && p->deg_v == 3) {
         double bu[4], bum[3], bv[4], bvm[3];
@@ -187,6 +186,34 @@ BSI_INLINE void eval_first_lane0(const bs_patch *p, const double *u, const doubl
         return;
     }
     first_lanes(p, u, v, first, h, hu, hv, 1);
+}
+
+/* The values alone of eval_first_lane0 (h[c * B]): the operations of first_lanes without the
+ * partials, for the callers that evaluate point by point. */
+static void values_one(const bs_patch *p, double u, double v, double *h)
+{
+    size_t m = p->deg_u, n = p->deg_v, n1 = n + 1;
+    double bu[NMAX * B], bum[NMAX * B], bv[NMAX * B], bvm[NMAX * B];
+    if (m == 3 && n == 3) {
+        bsi_bernstein3_first(u, bu, bum);
+        bsi_bernstein3_first(v, bv, bvm);
+        for (size_t c = 0; c < p->ncoord; c++)
+            bsi_bicubic_point(p->hom + c * p->nctrl, bu, NULL, bv, NULL, h + c * B, NULL, NULL);
+        return;
+    }
+    weights_lanes(m, &u, bu, bum, 1);
+    weights_lanes(n, &v, bv, bvm, 1);
+    for (size_t c = 0; c < p->ncoord; c++) {
+        const double *net = p->hom + c * p->nctrl;
+        double acc = -0.0;
+        for (size_t j = 0; j <= n; j++) {
+            double q = -0.0;
+            for (size_t i = 0; i <= m; i++)
+                q += bu[i * B] * net[i * n1 + j];
+            acc += bv[j * B] * q;
+        }
+        h[c * B] = acc;
+    }
 }
 
 /* bsi_eval_first_block with first != 0 at one finite point: outputs [ncoord], the same bits. */
@@ -205,8 +232,7 @@ void bsi_eval_point(const bs_patch *p, double u, double v, double *pos)
 {
     double h[(BS_MAX_DIM + 1) * B];
     int ok = isfinite(u) && isfinite(v);
-    double ub = ok ? u : 0.0, vb = ok ? v : 0.0;
-    eval_first_lane0(p, &ub, &vb, 0, h, NULL, NULL);
+    values_one(p, ok ? u : 0.0, ok ? v : 0.0, h);
     bsi_project_first(p, h, NULL, NULL, B, pos, NULL, NULL);
     for (size_t c = 0; !ok && c < p->dim; c++)
         pos[c] = NAN;
@@ -316,7 +342,7 @@ bs_status bs_patch_eval(const bs_patch *p, size_t n, const bs_cview *u, const bs
         int bad[B];
         bsi_load_block(u, v, k0, nb, ub, vb, bad);
         if (nb == 1 && !first) /* a single point (a call of one, or a tail of one): one lane */
-            eval_first_lane0(p, ub, vb, 0, h, NULL, NULL);
+            values_one(p, ub[0], vb[0], h);
         else if (nb == 1)
             eval_first_lane0(p, ub, vb, 1, h, hu, hv);
         else
