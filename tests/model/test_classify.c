@@ -7,6 +7,7 @@
 #include "harness.h"
 
 #include "model/internal.h"
+#include "cad_model.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -553,6 +554,47 @@ static void test_public(void)
     bs_surface_destroy(s);
 }
 
+/* bsi_face_box_place on the CAD parts' faces: a box called inside or outside holds no trim, so
+ * the loops' parity (exact off the trims) agrees with it at every point of a 7 x 7 grid across
+ * the box; boxes of every size from half the face's box down to 1/64 of it, at random places. */
+static void test_box_place(void)
+{
+    static const char *parts[] = {"bottle.step", "block.step", "bell.step", "duct.step"};
+    unsigned long long rng = 77;
+    size_t count[3] = {0, 0, 0}, wrong = 0;
+    for (size_t q = 0; q < sizeof parts / sizeof parts[0]; q++) {
+        bs_model *m = read_model(parts[q]);
+        for (size_t f = 0; m != NULL && f < m->nface; f++) {
+            const double *fb = m->faces[f].box;
+            for (int k = 0; k < 60; k++) {
+                double nb[4];
+                double scale = ldexp(1.0, -1 - k % 6);
+                for (int d = 0; d < 2; d++) {
+                    double lo = fb[2 * d], w = (fb[2 * d + 1] - lo) * scale;
+                    double a = lo + bs_test_rand(&rng, 0.0, 1.0) * (fb[2 * d + 1] - lo - w);
+                    nb[2 * d] = a;
+                    nb[2 * d + 1] = a + w;
+                }
+                int place = bsi_face_box_place(m, f, nb);
+                count[place == BSI_CL_IN ? 0 : place == BSI_CL_OUT ? 1 : 2]++;
+                if (place != BSI_CL_IN && place != BSI_CL_OUT)
+                    continue;
+                for (int i = 0; i < 7; i++)
+                    for (int j = 0; j < 7; j++) {
+                        double u = nb[0] + (nb[1] - nb[0]) * (i + 0.5) / 7.0;
+                        double v = nb[2] + (nb[3] - nb[2]) * (j + 0.5) / 7.0;
+                        wrong += bsi_face_parity(m, f, u, v) != (place == BSI_CL_IN);
+                    }
+            }
+        }
+        bs_model_destroy(m);
+    }
+    CHECKF(wrong == 0, "%zu grid points disagree with their box's place", wrong);
+    /* every answer occurs */
+    CHECKF(count[0] > 0 && count[1] > 0 && count[2] > 0, "in %zu, out %zu, crossed %zu", count[0], count[1],
+           count[2]);
+}
+
 int main(void)
 {
     test_square_hole();
@@ -565,5 +607,6 @@ int main(void)
     test_exact_surfaces();
     test_untrimmed();
     test_public();
+    test_box_place();
     return bs_test_exit("test_classify");
 }
