@@ -196,6 +196,7 @@ void bs_locator_destroy(bs_locator *L)
     free(L->nodes);
     free(L->box);
     free(L->leaf_box);
+    free(L->wide);
     free(L->nscale);
     for (size_t i = 0; L->scaled && i < L->npatch; i++)
         bs_patch_destroy(L->scaled[i].copy);

@@ -34,6 +34,21 @@ typedef struct bsi_loc_node {
     uint32_t first, count;
 } bsi_loc_node;
 
+/* The rays' tree: the binary tree collapsed into nodes of up to four children, so that a ray
+ * tests four boxes at once (lib/query/locator_bvh.c, locator_ray.c). Slot k of a node has a box
+ * (lower corner lo[c][k], upper hi[c][k]; 3-D locators) and is a wide node (leaf[k] = 0, ref its
+ * index), a binary leaf node (BSI_WIDE_NODE, ref its index in L->nodes) or one sub-patch
+ * (BSI_WIDE_PATCH, ref its index in L->leaves; the box its own). */
+#define BSI_LOC_WIDE 4
+#define BSI_WIDE_NODE 1
+#define BSI_WIDE_PATCH 2
+typedef struct bsi_loc_wide {
+    double lo[3][BSI_LOC_WIDE], hi[3][BSI_LOC_WIDE];
+    uint32_t ref[BSI_LOC_WIDE];
+    unsigned char leaf[BSI_LOC_WIDE];
+    uint32_t n; /* slots used */
+} bsi_loc_wide;
+
 /* What a locator of a model's trimmed faces adds (bs_locator_create_model, lib/model/), which
  * this layer sees only through these calls: a ray's hit on patch `patch` at (u, v) counts only
  * where inside() says so (the walk goes on to later hits otherwise), and answers are reported by
@@ -75,6 +90,7 @@ struct bs_locator {
     bsi_loc_node *nodes; /* nodes[0] is the root */
     double *box;         /* node k: lower corner box[2*k*dim ...], upper corner right after */
     double *leaf_box;    /* leaf k's box, as node boxes: tested before its net is projected */
+    bsi_loc_wide *wide;  /* the rays' tree (3-D locators), wide[0] its root; NULL otherwise */
     bsi_nscale *nscale;  /* per patch, for its normals (3-D locators): bsi_normal_scale's once */
     bsi_loc_scaled *scaled; /* per patch; NULL when every patch lies within [2^-1000, 2^1000] */
     bsi_loc_trim *trim;  /* NULL, or the trimmed faces of a model's locator (owned) */
@@ -148,7 +164,7 @@ static inline void bsi_net_halve(const double *net, size_t m, size_t n, size_t n
 
 /* Build the hierarchy over L->nleaf leaves whose boxes are in leaf_box (2*dim doubles each, as
  * node boxes): fills L->nodes, L->nnode, L->box, reorders L->leaves and puts their boxes, in the
- * same order, in L->leaf_box. BS_ERR_NO_MEMORY. */
+ * same order, in L->leaf_box; for a 3-D locator also L->wide. BS_ERR_NO_MEMORY. */
 bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box);
 
 /* A ray in the frame it is tested in: origin o, unit direction d, and e1, e2 completing an

@@ -1,8 +1,11 @@
 /*
  * The locator's bounding-volume hierarchy: a binary tree over the sub-patches' boxes, built top
  * down by cutting each set at the median of the box centres along the axis whose two halves'
- * boxes have the least surface, down to at most two sub-patches per leaf node. The median cut keeps the tree balanced
- * (depth log2 of the sub-patches), so queries can walk it with a small fixed stack.
+ * boxes have the least surface, down to at most two sub-patches per leaf node. The median cut
+ * keeps the tree balanced (depth log2 of the sub-patches), so queries can walk it with a small
+ * fixed stack. Closest points walk it as it is; rays walk it collapsed into a wide tree of up to
+ * four children a node (their boxes side by side, for one vector test), whose slots reach down
+ * to single sub-patches where there is room.
  */
 #include "query/locator.h"
 
@@ -116,6 +119,90 @@ static void build_node(builder *b, size_t ni, size_t lo, size_t hi)
     build_node(b, child + 1, mid, hi);
 }
 
+/* A slot's candidate while a wide node is made: a binary node (inner or leaf node), or one
+ * sub-patch (BSI_WIDE_PATCH). */
+typedef struct slot_cand {
+    uint32_t ref;
+    unsigned char kind;
+} slot_cand;
+
+/* The box of a candidate: its node's, or its sub-patch's own. */
+static const double *cand_box(const bs_locator *L, slot_cand c)
+{
+    return c.kind == BSI_WIDE_PATCH ? L->leaf_box + 6 * (size_t)c.ref : L->box + 6 * (size_t)c.ref;
+}
+
+static double cand_surface(const bs_locator *L, slot_cand c)
+{
+    const double *b = cand_box(L, c);
+    double x = b[3] - b[0], y = b[4] - b[1], z = b[5] - b[2];
+    return x * y + y * z + z * x;
+}
+
+/* Wide node *next (then the ones below it) from inner binary node b: its two children, each
+ * node among them replaced by its own children (an inner node's two, a leaf node's sub-patches)
+ * while there is room, the largest box first (the one most rays enter); returns its index. */
+static uint32_t collapse(bs_locator *L, uint32_t b, uint32_t *next)
+{
+    uint32_t wi = (*next)++, n = 2;
+    slot_cand cand[BSI_LOC_WIDE] = {{L->nodes[b].first, 0}, {L->nodes[b].first + 1, 0}};
+    for (;;) {
+        int pick = -1;
+        for (uint32_t k = 0; k < n; k++) {
+            const bsi_loc_node *nd = &L->nodes[cand[k].ref];
+            uint32_t grow = nd->count == 0 ? 1 : nd->count - 1; /* slots the expansion adds */
+            if (cand[k].kind == 0 && n + grow <= BSI_LOC_WIDE &&
+                (pick < 0 || cand_surface(L, cand[k]) > cand_surface(L, cand[pick])))
+                pick = (int)k;
+        }
+        if (pick < 0)
+            break;
+        const bsi_loc_node *nd = &L->nodes[cand[pick].ref];
+        uint32_t first = nd->first, count = nd->count == 0 ? 2 : nd->count;
+        unsigned char kind = nd->count == 0 ? 0 : BSI_WIDE_PATCH;
+        cand[pick] = (slot_cand){first, kind};
+        for (uint32_t q = 1; q < count; q++)
+            cand[n++] = (slot_cand){first + q, kind};
+    }
+    bsi_loc_wide *w = &L->wide[wi];
+    w->n = n;
+    for (uint32_t k = 0; k < BSI_LOC_WIDE; k++)
+        for (int c = 0; c < 3; c++) { /* empty slots: a box no ray enters */
+            w->lo[c][k] = k < n ? cand_box(L, cand[k])[c] : INFINITY;
+            w->hi[c][k] = k < n ? cand_box(L, cand[k])[3 + c] : -INFINITY;
+        }
+    for (uint32_t k = 0; k < n; k++) {
+        int inner = cand[k].kind == 0 && L->nodes[cand[k].ref].count == 0;
+        w->ref[k] = inner ? collapse(L, cand[k].ref, next) : cand[k].ref;
+        w->leaf[k] = inner ? 0 : cand[k].kind == BSI_WIDE_PATCH ? BSI_WIDE_PATCH : BSI_WIDE_NODE;
+    }
+    return wi;
+}
+
+/* The rays' tree of a 3-D locator (L->wide): a root of one slot when the binary root is a leaf
+ * node. At most one wide node per inner binary node. */
+static bs_status build_wide(bs_locator *L)
+{
+    L->wide = malloc((L->nnode > 0 ? L->nnode : 1) * sizeof *L->wide);
+    if (L->wide == NULL)
+        return BS_ERR_NO_MEMORY;
+    uint32_t next = 0;
+    if (L->nodes[0].count == 0) {
+        (void)collapse(L, 0, &next);
+        return BS_OK;
+    }
+    bsi_loc_wide *w = &L->wide[0];
+    w->n = 1;
+    for (uint32_t k = 0; k < BSI_LOC_WIDE; k++)
+        for (int c = 0; c < 3; c++) {
+            w->lo[c][k] = k == 0 ? L->box[c] : INFINITY;
+            w->hi[c][k] = k == 0 ? L->box[3 + c] : -INFINITY;
+        }
+    w->ref[0] = 0;
+    w->leaf[0] = BSI_WIDE_NODE;
+    return BS_OK;
+}
+
 /* Nodes of the tree over n leaves: the median cut makes it a function of n alone. */
 static size_t node_count(size_t n)
 {
@@ -149,7 +236,7 @@ bs_status bsi_loc_build_bvh(bs_locator *L, const double *leaf_box)
         bsi_loc_leaf *old = L->leaves;
         L->leaves = sorted;
         sorted = old;
-        st = BS_OK;
+        st = dim == 3 ? build_wide(L) : BS_OK;
     }
     free(sorted);
     free(perm);

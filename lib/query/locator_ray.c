@@ -1,7 +1,7 @@
 /*
  * Rays against a locator (bs_locator_intersect): each ray is put in its own orthonormal frame,
- * the hierarchy is walked nearest box first, boxes beyond the best hit so far are skipped, and
- * the sub-patches reached are tested by ray_patch.c. The answer's point and normal are
+ * the hierarchy's wide tree is walked nearest box first (four boxes tested at once), boxes
+ * beyond the best hit so far are skipped, and the sub-patches reached are tested by ray_patch.c. The answer's point and normal are
  * bs_patch_eval_normal's (the same bits) on the locator's copy of the patch (limit normals at
  * poles), and t comes from that point.
  */
@@ -11,7 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#define STACK 128 /* twice the depth of a median-split tree of up to 2^32 leaves, and more */
+#define STACK 256 /* three pending boxes per level of a wide tree at most 64 deep, and more */
 
 /* The ray o + t d for t in range, in its frame; 0 (a NaN miss) if something is not finite or
  * d = 0. |d| = len[0] len[1] (the largest component and the length of d over it, a product that
@@ -72,19 +72,17 @@ static slab_ray slab_setup(const bsi_ray *ray)
     return r;
 }
 
-/* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not. In line in the
- * walk, which calls it at three places. */
-BSI_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
+/* Where the ray enters and leaves the box whose faces it enters by are near[c], leaves by far[c],
+ * cut to [*t0, *t1]: the entry into *tn, the exit into *t1 (the box is entered when *tn <= *t1).
+ * In line in slab() and in each lane of wide_slab(), so both give the same bits. */
+BSI_INLINE void slab_span(const double near[3], const double far[3], const slab_ray *r,
+                          const double *t0, double *t1, double *tn)
 {
-    if (r->flat) /* along a zero component: the origin must lie between the faces */
-        for (int c = 0; c < 3; c++)
-            if (r->zero[c] && (r->o[c] < lo[c] || r->o[c] > lo[3 + c]))
-                return 0;
     /* entry and exit per axis (where d is 0, -Inf and +Inf, or NaN); a NaN (0 * Inf: a zero or
      * subnormal component meeting a box face) narrows nothing */
-    double x0 = (lo[r->in[0]] - r->o[0]) * r->inv[0], y0 = (lo[r->out[0]] - r->o[0]) * r->inv[0];
-    double x1 = (lo[r->in[1]] - r->o[1]) * r->inv[1], y1 = (lo[r->out[1]] - r->o[1]) * r->inv[1];
-    double x2 = (lo[r->in[2]] - r->o[2]) * r->inv[2], y2 = (lo[r->out[2]] - r->o[2]) * r->inv[2];
+    double x0 = (near[0] - r->o[0]) * r->inv[0], y0 = (far[0] - r->o[0]) * r->inv[0];
+    double x1 = (near[1] - r->o[1]) * r->inv[1], y1 = (far[1] - r->o[1]) * r->inv[1];
+    double x2 = (near[2] - r->o[2]) * r->inv[2], y2 = (far[2] - r->o[2]) * r->inv[2];
     double a = x0 > -INFINITY ? x0 : -INFINITY, b = y0 < INFINITY ? y0 : INFINITY;
     a = x1 > a ? x1 : a;
     b = y1 < b ? y1 : b;
@@ -95,64 +93,118 @@ BSI_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, d
      * monotonic */
     a -= 4 * DBL_EPSILON * fabs(a);
     b += 4 * DBL_EPSILON * fabs(b);
-    t0 = a > t0 ? a : t0;
-    t1 = b < t1 ? b : t1;
-    *tnear = t0;
-    return t0 <= t1;
+    *tn = a > *t0 ? a : *t0;
+    *t1 = b < *t1 ? b : *t1;
 }
 
-/* The first hit of the ray: hit->t stays +Inf on a miss. */
+/* Where the ray enters box (lo, hi = lo + 3) within [t0, t1]; 0 if it does not (the sub-patches'
+ * own boxes of a leaf node that the wide tree keeps whole). */
+BSI_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, double *tnear)
+{
+    if (r->flat) /* along a zero component: the origin must lie between the faces */
+        for (int c = 0; c < 3; c++)
+            if (r->zero[c] && (r->o[c] < lo[c] || r->o[c] > lo[3 + c]))
+                return 0;
+    const double near[3] = {lo[r->in[0]], lo[r->in[1]], lo[r->in[2]]};
+    const double far[3] = {lo[r->out[0]], lo[r->out[1]], lo[r->out[2]]};
+    double t;
+    slab_span(near, far, r, &t0, &t1, &t);
+    *tnear = t;
+    return t <= t1;
+}
+
+/* slab() on the four boxes of a wide node at once, lane by lane with the same operations (so the
+ * same entries, the same boxes let through), in loops of fixed length that the compiler runs in
+ * vector registers; chosen per CPU at load time. in[k] for slots k < w->n only. */
+BSI_HOT static void wide_slab(const bsi_loc_wide *restrict w, const slab_ray *restrict r, double t0,
+                              double t1, double *restrict tn, int *restrict in)
+{
+    double tf[BSI_LOC_WIDE];
+    const double *near[3], *far[3];
+    for (int c = 0; c < 3; c++) { /* the faces entered by, as slab_setup's offsets */
+        near[c] = r->inv[c] > 0.0 ? w->lo[c] : w->hi[c];
+        far[c] = r->inv[c] > 0.0 ? w->hi[c] : w->lo[c];
+    }
+    for (size_t k = 0; k < BSI_LOC_WIDE; k++) {
+        const double nk[3] = {near[0][k], near[1][k], near[2][k]}, fk[3] = {far[0][k], far[1][k], far[2][k]};
+        tf[k] = t1;
+        slab_span(nk, fk, r, &t0, &tf[k], &tn[k]);
+    }
+    for (size_t k = 0; k < BSI_LOC_WIDE; k++)
+        in[k] = k < w->n && tn[k] <= tf[k];
+    if (r->flat) /* along a zero component: the origin must lie between the faces */
+        for (size_t k = 0; k < BSI_LOC_WIDE; k++)
+            for (int c = 0; c < 3; c++)
+                if (r->zero[c] && (r->o[c] < w->lo[c][k] || r->o[c] > w->hi[c][k]))
+                    in[k] = 0;
+}
+
+/* The sub-patches of binary leaf node nd: each one's own box first (most that the node's box
+ * lets through miss theirs); the nearer entered first, the other skipped if a hit comes before it. */
+static void visit_leaves(const bs_locator *L, const bsi_loc_node *nd, const bsi_ray *ray,
+                         const slab_ray *sr, double *scratch, bsi_ray_hit *hit)
+{
+    double tl[BSI_LOC_LEAF_MAX];
+    int inl[BSI_LOC_LEAF_MAX], order[BSI_LOC_LEAF_MAX] = {0, 1};
+    for (uint32_t q = 0; q < nd->count; q++) {
+        const double *box = L->leaf_box + 6 * (size_t)(nd->first + q);
+        inl[q] = slab(box, sr, ray->tmin, lesser(ray->tmax, hit->t), &tl[q]);
+    }
+    if (nd->count == 2 && inl[1] && (!inl[0] || tl[1] < tl[0])) {
+        order[0] = 1;
+        order[1] = 0;
+    }
+    for (uint32_t q = 0; q < nd->count; q++)
+        if (inl[order[q]] && tl[order[q]] <= hit->t) // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult,clang-analyzer-core.uninitialized.ArraySubscript): q < count <= BSI_LOC_LEAF_MAX, each set above
+            bsi_ray_leaf(L, nd->first + (uint32_t)order[q], ray, scratch, hit);
+}
+
+/* The first hit of the ray: hit->t stays +Inf on a miss. The wide tree is walked nearest box
+ * first; boxes entered beyond the best hit so far are skipped. At equal entries the earlier slot
+ * goes first, so the walk, and the hit kept at a tie of t, is the same for every run. */
 static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_ray_hit *hit)
 {
     struct {
-        uint32_t node;
+        uint32_t ref;
+        unsigned char leaf;
         double tnear;
     } stack[STACK];
     int top = 0;
-    size_t dim = L->dim;
-    double tn;
     slab_ray sr = slab_setup(ray);
     hit->t = INFINITY;
-    if (L->nnode == 0 || !slab(L->box, &sr, ray->tmin, ray->tmax, &tn))
+    if (L->nnode == 0)
         return;
-    stack[top].node = 0;
-    stack[top++].tnear = tn;
+    stack[top].ref = 0;
+    stack[top].leaf = 0;
+    stack[top++].tnear = -INFINITY;
     while (top > 0) {
         top--;
         if (stack[top].tnear > hit->t)
             continue;
-        const bsi_loc_node *nd = &L->nodes[stack[top].node];
-        if (nd->count > 0) {
-            /* each sub-patch's own box first: most that the node's box lets through miss
-             * theirs; the nearer entered first, the other skipped if a hit comes before it */
-            double tl[BSI_LOC_LEAF_MAX];
-            int inl[BSI_LOC_LEAF_MAX], order[BSI_LOC_LEAF_MAX] = {0, 1};
-            for (uint32_t q = 0; q < nd->count; q++) {
-                const double *box = L->leaf_box + 2 * dim * (nd->first + q);
-                inl[q] = slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tl[q]);
-            }
-            if (nd->count == 2 && inl[1] && (!inl[0] || tl[1] < tl[0])) {
-                order[0] = 1;
-                order[1] = 0;
-            }
-            for (uint32_t q = 0; q < nd->count; q++)
-                if (inl[order[q]] && tl[order[q]] <= hit->t) // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult,clang-analyzer-core.uninitialized.ArraySubscript): q < count <= BSI_LOC_LEAF_MAX, each set above
-                    bsi_ray_leaf(L, nd->first + (uint32_t)order[q], ray, scratch, hit);
+        if (stack[top].leaf == BSI_WIDE_PATCH) { /* its own box entered before the best hit */
+            bsi_ray_leaf(L, stack[top].ref, ray, scratch, hit);
             continue;
         }
-        double tc[2];
-        int in[2];
-        for (int c = 0; c < 2; c++) {
-            const double *box = L->box + 2 * dim * (nd->first + (uint32_t)c);
-            in[c] = slab(box, &sr, ray->tmin, lesser(ray->tmax, hit->t), &tc[c]);
+        if (stack[top].leaf == BSI_WIDE_NODE) {
+            visit_leaves(L, &L->nodes[stack[top].ref], ray, &sr, scratch, hit);
+            continue;
         }
-        int near = in[1] && (!in[0] || tc[1] < tc[0]);
-        for (int q = 0; q < 2; q++) { /* the farther child first, so the nearer is popped next */
-            int c = q == 0 ? !near : near;
-            if (in[c] && top < STACK) {
-                stack[top].node = nd->first + (uint32_t)c;
-                stack[top++].tnear = tc[c];
-            }
+        const bsi_loc_wide *w = &L->wide[stack[top].ref];
+        double tn[BSI_LOC_WIDE];
+        int in[BSI_LOC_WIDE], order[BSI_LOC_WIDE] = {0, 1, 2, 3}, nin = 0;
+        wide_slab(w, &sr, ray->tmin, lesser(ray->tmax, hit->t), tn, in);
+        for (int k = 0; k < BSI_LOC_WIDE; k++) { /* the boxes entered, nearest first */
+            if (!in[k])
+                continue;
+            int at = nin++;
+            for (; at > 0 && tn[order[at - 1]] > tn[k]; at--)
+                order[at] = order[at - 1];
+            order[at] = k;
+        }
+        for (int q = nin - 1; q >= 0 && top < STACK; q--) { /* the farthest first, so the nearest is popped next */
+            stack[top].ref = w->ref[order[q]];
+            stack[top].leaf = w->leaf[order[q]];
+            stack[top++].tnear = tn[order[q]];
         }
     }
 }
