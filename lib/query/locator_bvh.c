@@ -189,6 +189,8 @@ static bs_status build_wide(bs_locator *L)
     uint32_t next = 0;
     if (L->nodes[0].count == 0) {
         (void)collapse(L, 0, &next);
+        bsi_loc_wide *fit = realloc(L->wide, next * sizeof *L->wide); /* the nodes used */
+        L->wide = fit ? fit : L->wide;
         return BS_OK;
     }
     bsi_loc_wide *w = &L->wide[0];
