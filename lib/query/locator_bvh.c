@@ -190,7 +190,9 @@ static bs_status build_wide(bs_locator *L)
     if (L->nodes[0].count == 0) {
         (void)collapse(L, 0, &next);
         bsi_loc_wide *fit = realloc(L->wide, next * sizeof *L->wide); /* the nodes used */
-        L->wide = fit ? fit : L->wide;
+        if (fit == NULL)
+            return BS_ERR_NO_MEMORY; /* as any allocation of the locator (L->wide freed with it) */
+        L->wide = fit;
         return BS_OK;
     }
     bsi_loc_wide *w = &L->wide[0];
