@@ -149,9 +149,11 @@ static uint32_t collapse(bs_locator *L, uint32_t b, uint32_t *next)
     for (;;) {
         int pick = -1;
         for (uint32_t k = 0; k < n; k++) {
+            if (cand[k].kind != 0) /* a sub-patch: nothing below it */
+                continue;
             const bsi_loc_node *nd = &L->nodes[cand[k].ref];
             uint32_t grow = nd->count == 0 ? 1 : nd->count - 1; /* slots the expansion adds */
-            if (cand[k].kind == 0 && n + grow <= BSI_LOC_WIDE &&
+            if (n + grow <= BSI_LOC_WIDE &&
                 (pick < 0 || cand_surface(L, cand[k]) > cand_surface(L, cand[pick])))
                 pick = (int)k;
         }
