@@ -53,14 +53,14 @@ static void halve_piece(const double *h, size_t p, double *lo, double *hi)
     for (size_t r = 1; r <= p; r++) {
         for (size_t i = 0; i + r <= p; i++)
             for (size_t c = 0; c < 3; c++)
-                tmp[i * 3 + c] = (tmp[i * 3 + c] + tmp[(i + 1) * 3 + c]) * 0.5;
+                tmp[i * 3 + c] = (tmp[i * 3 + c] + tmp[(i + 1) * 3 + c]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
         memcpy(lo + r * 3, tmp, 3 * sizeof *tmp);
         memcpy(hi + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
     }
 }
 
 /* Pieces of a segment up to cubic waiting in seg_meets without a heap block. */
-#define LOCAL_PIECES ((CLEAR_DEPTH + 2) * 4 * 3)
+#define LOCAL_PIECES ((size_t)(CLEAR_DEPTH + 2) * 4 * 3)
 
 /* 1 when the degree-p segment may pass through nb: halved while its pieces' boxes meet it. The
  * pieces waiting are kept on the stack whole, and each is halved where it is taken, rather than
@@ -76,7 +76,7 @@ static int seg_meets(const double *seg, size_t p, const double nb[4], const doub
         return 1;
     size_t len = (p + 1) * 3, top = 0;
     double local[LOCAL_PIECES];
-    double *pieces = len * (CLEAR_DEPTH + 2) <= LOCAL_PIECES ? local : malloc((CLEAR_DEPTH + 2) * len * sizeof *pieces);
+    double *pieces = len * (CLEAR_DEPTH + 2) <= LOCAL_PIECES ? local : malloc((size_t)(CLEAR_DEPTH + 2) * len * sizeof *pieces);
     if (pieces == NULL)
         return 1;
     int depth[CLEAR_DEPTH + 2], found = 0;
