@@ -181,31 +181,21 @@ static uint32_t collapse(bs_locator *L, uint32_t b, uint32_t *next)
     return wi;
 }
 
-/* The rays' tree of a 3-D locator (L->wide): a root of one slot when the binary root is a leaf
- * node. At most one wide node per inner binary node. */
+/* The rays' tree of a 3-D locator (L->wide), at most one wide node per inner binary node. The
+ * binary root is always an inner node: every patch gives BSI_LOC_SPLIT^2 sub-patches, more than
+ * a leaf node holds. */
+typedef char bsi_root_is_inner[BSI_LOC_SPLIT * BSI_LOC_SPLIT > BSI_LOC_LEAF_MAX ? 1 : -1];
 static bs_status build_wide(bs_locator *L)
 {
-    L->wide = malloc((L->nnode > 0 ? L->nnode : 1) * sizeof *L->wide);
+    L->wide = malloc(L->nnode * sizeof *L->wide);
     if (L->wide == NULL)
         return BS_ERR_NO_MEMORY;
     uint32_t next = 0;
-    if (L->nodes[0].count == 0) {
-        (void)collapse(L, 0, &next);
-        bsi_loc_wide *fit = realloc(L->wide, next * sizeof *L->wide); /* the nodes used */
-        if (fit == NULL)
-            return BS_ERR_NO_MEMORY; /* as any allocation of the locator (L->wide freed with it) */
-        L->wide = fit;
-        return BS_OK;
-    }
-    bsi_loc_wide *w = &L->wide[0];
-    w->n = 1;
-    for (uint32_t k = 0; k < BSI_LOC_WIDE; k++)
-        for (int c = 0; c < 3; c++) {
-            w->lo[c][k] = k == 0 ? L->box[c] : INFINITY;
-            w->hi[c][k] = k == 0 ? L->box[3 + c] : -INFINITY;
-        }
-    w->ref[0] = 0;
-    w->leaf[0] = BSI_WIDE_NODE;
+    (void)collapse(L, 0, &next);
+    bsi_loc_wide *fit = realloc(L->wide, next * sizeof *L->wide); /* the nodes used */
+    if (fit == NULL)
+        return BS_ERR_NO_MEMORY; /* as any allocation of the locator (L->wide freed with it) */
+    L->wide = fit;
     return BS_OK;
 }
 

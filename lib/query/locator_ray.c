@@ -1,9 +1,9 @@
 /*
  * Rays against a locator (bs_locator_intersect): each ray is put in its own orthonormal frame,
  * the hierarchy's wide tree is walked nearest box first (four boxes tested at once), boxes
- * beyond the best hit so far are skipped, and the sub-patches reached are tested by ray_patch.c. The answer's point and normal are
- * bs_patch_eval_normal's (the same bits) on the locator's copy of the patch (limit normals at
- * poles), and t comes from that point.
+ * beyond the best hit so far are skipped, and the sub-patches reached are tested by ray_patch.c.
+ * The answer's point and normal are bs_patch_eval_normal's (the same bits) on the locator's copy
+ * of the patch (limit normals at poles), and t comes from that point.
  */
 #include "query/locator.h"
 
