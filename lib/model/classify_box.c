@@ -42,23 +42,6 @@ static int hull_meets(const double *h, size_t count, const double nb[4], const d
     return 0;
 }
 
-/* The halves of the degree-p piece h (homogeneous points) at its middle into lo and hi, which may
- * be h itself: one de Casteljau pass of midpoints gives both. */
-static void halve_piece(const double *h, size_t p, double *lo, double *hi)
-{
-    double tmp[BSI_SEG_MAX];
-    memcpy(tmp, h, (p + 1) * 3 * sizeof *tmp);
-    memcpy(lo, tmp, 3 * sizeof *tmp);
-    memcpy(hi + p * 3, tmp + p * 3, 3 * sizeof *tmp);
-    for (size_t r = 1; r <= p; r++) {
-        for (size_t i = 0; i + r <= p; i++)
-            for (size_t c = 0; c < 3; c++)
-                tmp[i * 3 + c] = (tmp[i * 3 + c] + tmp[(i + 1) * 3 + c]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
-        memcpy(lo + r * 3, tmp, 3 * sizeof *tmp);
-        memcpy(hi + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
-    }
-}
-
 /* Pieces of a segment up to cubic waiting in seg_meets without a heap block. */
 #define LOCAL_PIECES ((size_t)(CLEAR_DEPTH + 2) * 4 * 3)
 
@@ -81,7 +64,7 @@ static int seg_meets(const double *seg, size_t p, const double nb[4], const doub
         return 1;
     int depth[CLEAR_DEPTH + 2], found = 0;
     /* the segment's halves: the first half on top, taken first */
-    halve_piece(seg, p, pieces + len, pieces);
+    bsi_seg_halve(seg, p, pieces + len, pieces);
     depth[0] = depth[1] = 1;
     top = 2;
     while (top > 0 && !found) {
@@ -93,7 +76,7 @@ static int seg_meets(const double *seg, size_t p, const double nb[4], const doub
             found = 1;
             continue;
         }
-        halve_piece(h, p, h + len, h); /* the second half stays in place, the first goes on top */
+        bsi_seg_halve(h, p, h + len, h); /* the second half stays in place, the first goes on top */
         depth[top + 1] = ++depth[top];
         top += 2;
     }

@@ -6,6 +6,7 @@
 #include "model/classify_internal.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define NEAR_DEPTH 40
@@ -34,6 +35,23 @@ void bsi_seg_piece(const double *seg, size_t p, double s0, double s1, double *ou
                     tmp[i * 3 + c] = (1.0 - s) * tmp[i * 3 + c] + s * tmp[(i + 1) * 3 + c];
             memcpy(out + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
         }
+    }
+}
+
+/* The halves of the degree-p piece h (homogeneous points) at its middle into lo and hi, which may
+ * be h itself: one de Casteljau pass of midpoints gives both. */
+void bsi_seg_halve(const double *h, size_t p, double *lo, double *hi)
+{
+    double tmp[BSI_SEG_MAX];
+    memcpy(tmp, h, (p + 1) * 3 * sizeof *tmp);
+    memcpy(lo, tmp, 3 * sizeof *tmp);
+    memcpy(hi + p * 3, tmp + p * 3, 3 * sizeof *tmp);
+    for (size_t r = 1; r <= p; r++) {
+        for (size_t i = 0; i + r <= p; i++)
+            for (size_t c = 0; c < 3; c++)
+                tmp[i * 3 + c] = (tmp[i * 3 + c] + tmp[(i + 1) * 3 + c]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
+        memcpy(lo + r * 3, tmp, 3 * sizeof *tmp);
+        memcpy(hi + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
     }
 }
 
@@ -233,31 +251,57 @@ static double distance_at(const near_ctx *x, const double *seg, size_t p, double
     return dist3(x->p, q);
 }
 
+/* Pieces of a segment up to cubic waiting in seg_near without a heap block. */
+#define NEAR_LOCAL_PIECES ((size_t)(NEAR_DEPTH + 2) * 4 * 3)
+
 /* Within tol of P somewhere on the segment: each piece [s0, s1] is at least D - K / 2 from P, D
- * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1]. */
+ * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1]. The pieces
+ * waiting are kept whole beside the stack and halved where taken (one pass of midpoints); for
+ * higher degrees their block is allocated at the first halving, and without it each piece is cut
+ * from the segment instead (two passes), which gives the same answer. */
 static int seg_near(const near_ctx *x, const double *seg, size_t p)
 {
     struct { double s0, s1; int depth; } stack[NEAR_DEPTH + 2];
-    size_t top = 0, budget = NEAR_BUDGET;
+    size_t top = 0, budget = NEAR_BUDGET, len = (p + 1) * 3;
+    double local[NEAR_LOCAL_PIECES], cut[BSI_SEG_MAX];
+    int small = len * (NEAR_DEPTH + 2) <= NEAR_LOCAL_PIECES, asked = small, found = 0;
+    double *pieces = small ? local : NULL;
+    if (small)
+        memcpy(local, seg, len * sizeof *local);
     stack[top].s0 = 0.0;
     stack[top].s1 = 1.0;
     stack[top++].depth = 0;
-    while (top > 0 && budget-- > 0) {
+    while (top > 0 && budget-- > 0 && !found) {
         double s0 = stack[top - 1].s0, s1 = stack[top - 1].s1;
         int depth = stack[--top].depth;
-        double sm = 0.5 * (s0 + s1), pts[BSI_SEG_MAX], speed[2];
+        double sm = 0.5 * (s0 + s1), speed[2];
         double d = distance_at(x, seg, p, sm);
-        if (d <= x->tol)
-            return 1;
-        bsi_seg_piece(seg, p, s0, s1, pts);
-        curve_speed(pts, p, speed);
+        if (d <= x->tol) {
+            found = 1;
+            continue;
+        }
+        double *piece = pieces != NULL ? pieces + top * len : cut;
+        if (pieces == NULL)
+            bsi_seg_piece(seg, p, s0, s1, cut);
+        curve_speed(piece, p, speed);
         double reach = 0.5 * (x->lip[0] * speed[0] + x->lip[1] * speed[1]);
         if (!(d - reach <= x->tol) || reach <= 1e-3 * x->tol || depth >= NEAR_DEPTH)
             continue;
+        if (!asked && top == 0) { /* the first halving, of the whole segment */
+            asked = 1;
+            pieces = malloc((size_t)(NEAR_DEPTH + 2) * len * sizeof *pieces);
+            if (pieces != NULL)
+                memcpy(pieces, seg, len * sizeof *pieces);
+            piece = pieces;
+        }
+        if (pieces != NULL) /* the second half stays in place, the first goes on top */
+            bsi_seg_halve(piece, p, piece + len, piece);
         stack[top].s0 = sm, stack[top].s1 = s1, stack[top++].depth = depth + 1;
         stack[top].s0 = s0, stack[top].s1 = sm, stack[top++].depth = depth + 1;
     }
-    return 0;
+    if (pieces != local)
+        free(pieces);
+    return found;
 }
 
 /* Within tol of P somewhere on the trim: runs of segments are dropped together when the box of
