@@ -239,14 +239,14 @@ typedef struct near_ctx {
     double p[3], lip[2], tol;
 } near_ctx;
 
-/* |P - S(c(s))| with c(s) kept in the face's box; INFINITY where the surface is not found. */
-static double distance_at(const near_ctx *x, const double *seg, size_t p, double s)
+/* |P - S(c)| for the trim point c = (u, v) kept in the face's box; INFINITY where the surface is
+ * not found. */
+static double distance_at(const near_ctx *x, double u, double v)
 {
-    double uv[2], q[3];
-    bsi_seg_point(seg, p, s, uv);
-    uv[0] = bsi_dmin(bsi_dmax(uv[0], x->box[0]), x->box[1]);
-    uv[1] = bsi_dmin(bsi_dmax(uv[1], x->box[2]), x->box[3]);
-    if (!surface_point(x->m, x->f, uv[0], uv[1], q))
+    double q[3];
+    u = bsi_dmin(bsi_dmax(u, x->box[0]), x->box[1]);
+    v = bsi_dmin(bsi_dmax(v, x->box[2]), x->box[3]);
+    if (!surface_point(x->m, x->f, u, v, q))
         return INFINITY;
     return dist3(x->p, q);
 }
@@ -256,9 +256,10 @@ static double distance_at(const near_ctx *x, const double *seg, size_t p, double
 
 /* Within tol of P somewhere on the segment: each piece [s0, s1] is at least D - K / 2 from P, D
  * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1]. The pieces
- * waiting are kept whole beside the stack and halved where taken (one pass of midpoints); for
- * higher degrees their block is allocated at the first halving, and without it each piece is cut
- * from the segment instead (two passes), which gives the same answer. */
+ * waiting are kept whole beside the stack and halved where taken (one pass of midpoints, which
+ * also gives the middle); for higher degrees their block is allocated at the first halving, and
+ * without it each piece is cut from the segment and its middle evaluated (two passes and one),
+ * the same answer but for rounding. */
 static int seg_near(const near_ctx *x, const double *seg, size_t p)
 {
     struct { double s0, s1; int depth; } stack[NEAR_DEPTH + 2];
@@ -274,16 +275,22 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
     while (top > 0 && budget-- > 0 && !found) {
         double s0 = stack[top - 1].s0, s1 = stack[top - 1].s1;
         int depth = stack[--top].depth;
-        double sm = 0.5 * (s0 + s1), speed[2];
-        double d = distance_at(x, seg, p, sm);
-        if (d <= x->tol) {
-            found = 1;
-            continue;
-        }
+        double sm = 0.5 * (s0 + s1), speed[2], mid[2];
         double *piece = pieces != NULL ? pieces + top * len : cut;
         if (pieces == NULL)
             bsi_seg_piece(seg, p, s0, s1, cut);
         curve_speed(piece, p, speed);
+        if (pieces != NULL) { /* the second half stays in place, the first goes on top */
+            bsi_seg_halve(piece, p, piece + len, piece);
+            mid[0] = piece[0] / piece[2], mid[1] = piece[1] / piece[2];
+        } else {
+            bsi_seg_point(seg, p, sm, mid);
+        }
+        double d = distance_at(x, mid[0], mid[1]);
+        if (d <= x->tol) {
+            found = 1;
+            continue;
+        }
         double reach = 0.5 * (x->lip[0] * speed[0] + x->lip[1] * speed[1]);
         if (!(d - reach <= x->tol) || reach <= 1e-3 * x->tol || depth >= NEAR_DEPTH)
             continue;
@@ -291,11 +298,8 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
             asked = 1;
             pieces = malloc((size_t)(NEAR_DEPTH + 2) * len * sizeof *pieces);
             if (pieces != NULL)
-                memcpy(pieces, seg, len * sizeof *pieces);
-            piece = pieces;
+                bsi_seg_halve(seg, p, pieces + len, pieces);
         }
-        if (pieces != NULL) /* the second half stays in place, the first goes on top */
-            bsi_seg_halve(piece, p, piece + len, piece);
         stack[top].s0 = sm, stack[top].s1 = s1, stack[top++].depth = depth + 1;
         stack[top].s0 = s0, stack[top].s1 = sm, stack[top++].depth = depth + 1;
     }
