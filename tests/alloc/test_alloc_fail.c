@@ -499,6 +499,8 @@ static void grid_duct_faces(void)
 {
     for (size_t f = 0; f < bs_model_face_count(DUCT); f++) {
         bs_face_info info;
+        memset(&info, 0, sizeof info);
+        info.size = sizeof info;
         CHECK_STATUS(bs_model_face_info(DUCT, f, &info), BS_OK);
         for (int i = 0; i < CLASSIFY_SIDE; i++)
             for (int j = 0; j < CLASSIFY_SIDE && cls_n < CLASSIFY_MAX; j++, cls_n++) {
