@@ -42,8 +42,7 @@ static int hull_meets(const double *h, size_t count, const double nb[4], const d
     return 0;
 }
 
-/* Pieces of a segment up to cubic waiting in seg_meets without a heap block. */
-#define LOCAL_PIECES ((size_t)(CLEAR_DEPTH + 2) * 4 * 3)
+#define LOCAL_PIECES BSI_CUBIC_PIECES(CLEAR_DEPTH)
 
 /* 1 when the degree-p segment may pass through nb: halved while its pieces' boxes meet it. The
  * pieces waiting are kept on the stack whole, and each is halved where it is taken, rather than

@@ -31,6 +31,9 @@ static inline const double *bsi_trim_segment(const bsi_curve *c, size_t k)
 void bsi_seg_piece(const double *seg, size_t p, double s0, double s1, double *out);
 /* The halves of the degree-p piece h at its middle into lo and hi, either of which may be h. */
 void bsi_seg_halve(const double *h, size_t p, double *lo, double *hi);
+/* Room for the pieces of a segment up to cubic waiting in a halving search depth levels deep,
+ * which the searches keep on the C stack (higher degrees take a heap block). */
+#define BSI_CUBIC_PIECES(depth) ((size_t)((depth) + 2) * 4 * 3)
 /* The point at s of a degree-p segment: u and v. */
 void bsi_seg_point(const double *seg, size_t p, double s, double *xy);
 /* 1 when the point of face f at native (u, v) (in the face's box) is within tol in 3-D of a trim

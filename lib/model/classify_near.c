@@ -251,8 +251,7 @@ static double distance_at(const near_ctx *x, double u, double v)
     return dist3(x->p, q);
 }
 
-/* Pieces of a segment up to cubic waiting in seg_near without a heap block. */
-#define NEAR_LOCAL_PIECES ((size_t)(NEAR_DEPTH + 2) * 4 * 3)
+#define NEAR_LOCAL_PIECES BSI_CUBIC_PIECES(NEAR_DEPTH)
 
 /* Within tol of P somewhere on the segment: each piece [s0, s1] is at least D - K / 2 from P, D
  * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1]. The pieces

@@ -632,7 +632,7 @@ int main(void)
         printf("%-34s %3zu allocations, each failed once\n", ops[i].name, k - 1);
     }
     printf("allocation failures injected: %zu; done without the memory: %zu\n", total_failures, done_without);
-    CHECK(done_without > 0); /* the model's rays did reach the nearness test's allocation */
+    CHECK(done_without > 0); /* the model ops did reach the nearness test's allocation */
     remove(tmp_path);
     free(teapot_text);
     bs_locator_destroy(LOC);
