@@ -36,9 +36,11 @@
 #include "model/classify_internal.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define PARITY_DEPTH 50
+#define PARITY_LOCAL_PIECES BSI_CUBIC_PIECES(PARITY_DEPTH)
 #define MAX_SHIFTS 4 /* candidates per periodic direction */
 
 /* 1 when the chord a -> b crosses the ray (the same half-open rule as the pieces). */
@@ -56,11 +58,20 @@ typedef struct span {
     int depth;
 } span;
 
+/* Crossings of the ray with the degree-p segment, mod 2. The pieces waiting are kept whole beside
+ * the stack and halved where taken (one pass of midpoints gives both halves and their shared
+ * end); above cubic their block is allocated at the first halving, and without it each piece is
+ * cut from the segment and its end evaluated there (two passes and one), the same answer for
+ * points off the curve. */
 static int seg_parity(const double *seg, size_t p, double u, double v)
 {
     span stack[PARITY_DEPTH + 2];
-    size_t top = 0;
-    int parity = 0;
+    size_t top = 0, len = (p + 1) * 3;
+    double local[PARITY_LOCAL_PIECES], cut[BSI_SEG_MAX];
+    int small = len * (PARITY_DEPTH + 2) <= PARITY_LOCAL_PIECES, asked = small, parity = 0;
+    double *pieces = small ? local : NULL;
+    if (small)
+        memcpy(local, seg, len * sizeof *local);
     stack[top].s0 = 0.0;
     stack[top].s1 = 1.0;
     bsi_seg_point(seg, p, 0.0, stack[top].a);
@@ -68,8 +79,9 @@ static int seg_parity(const double *seg, size_t p, double u, double v)
     stack[top++].depth = 0;
     while (top > 0) {
         span sp = stack[--top];
-        double pts[BSI_SEG_MAX];
-        bsi_seg_piece(seg, p, sp.s0, sp.s1, pts);
+        const double *pts = pieces != NULL ? pieces + top * len : cut;
+        if (pieces == NULL)
+            bsi_seg_piece(seg, p, sp.s0, sp.s1, cut);
         /* the box of the control points and of the ends as computed: a piece judged above or
          * below the line has its ends on that side for its neighbours too */
         double xlo = bsi_dmin(sp.a[0], sp.b[0]), xhi = bsi_dmax(sp.a[0], sp.b[0]);
@@ -89,8 +101,19 @@ static int seg_parity(const double *seg, size_t p, double u, double v)
             parity ^= chord_crosses(sp.a, sp.b, u, v);
             continue;
         }
+        if (!asked) { /* the first halving, of the whole segment (top is 0) */
+            asked = 1;
+            if ((pieces = malloc((size_t)(PARITY_DEPTH + 2) * len * sizeof *pieces)) != NULL)
+                memcpy(pieces, seg, len * sizeof *pieces);
+        }
         double sm = 0.5 * (sp.s0 + sp.s1), mid[2];
-        bsi_seg_point(seg, p, sm, mid);
+        if (pieces != NULL) { /* the second half stays in place, the first goes on top */
+            double *h = pieces + top * len;
+            bsi_seg_halve(h, p, h + len, h);
+            mid[0] = h[0] / h[2], mid[1] = h[1] / h[2]; /* both halves' end there */
+        } else {
+            bsi_seg_point(seg, p, sm, mid);
+        }
         span left = sp, right = sp;
         left.s1 = right.s0 = sm;
         memcpy(left.b, mid, sizeof mid);
@@ -99,6 +122,8 @@ static int seg_parity(const double *seg, size_t p, double u, double v)
         stack[top++] = right;
         stack[top++] = left;
     }
+    if (pieces != local)
+        free(pieces);
     return parity;
 }
 
@@ -117,7 +142,8 @@ static int loops_parity(const bs_model *m, const bsi_face *face, double u, doubl
             size_t n = c->axis.n, p = c->degree;
             if (n == 0)
                 continue;
-            double head[2], tail[2], lo[2], hi[2];
+            double head[2], tail[2];
+            const double *lo = m->trims[t].lo, *hi = m->trims[t].hi;
             bsi_seg_point(bsi_trim_segment(c, 0), p, 0.0, m->trims[t].reversed ? tail : head);
             bsi_seg_point(bsi_trim_segment(c, n - 1), p, 1.0, m->trims[t].reversed ? head : tail);
             if (started)
@@ -125,7 +151,6 @@ static int loops_parity(const bs_model *m, const bsi_face *face, double u, doubl
             else
                 memcpy(first, head, sizeof head), started = 1;
             memcpy(prev, tail, sizeof tail);
-            bsi_curve_bounds(c, lo, hi);
             if (hi[1] < v || lo[1] >= v || hi[0] < u)
                 continue;
             for (size_t k = 0; k < n; k++) {

@@ -122,8 +122,8 @@ int bsi_face_box_place(const bs_model *m, size_t f, const double nb[4])
             size_t n = c->axis.n, p = c->degree;
             if (n == 0)
                 continue;
-            double lo[2], hi[2], su[3], sv[3], head[2], tail[2];
-            bsi_curve_bounds(c, lo, hi);
+            double su[3], sv[3], head[2], tail[2];
+            const double *lo = m->trims[t].lo, *hi = m->trims[t].hi;
             size_t nu = period_shifts(face->period[0], lo[0], hi[0], nb[0], nb[1], su);
             size_t nv = period_shifts(face->period[1], lo[1], hi[1], nb[2], nb[3], sv);
             bsi_seg_point(bsi_trim_segment(c, 0), p, 0.0, m->trims[t].reversed ? tail : head);

@@ -47,9 +47,8 @@ void bsi_seg_halve(const double *h, size_t p, double *lo, double *hi)
     memcpy(lo, tmp, 3 * sizeof *tmp);
     memcpy(hi + p * 3, tmp + p * 3, 3 * sizeof *tmp);
     for (size_t r = 1; r <= p; r++) {
-        for (size_t i = 0; i + r <= p; i++)
-            for (size_t c = 0; c < 3; c++)
-                tmp[i * 3 + c] = (tmp[i * 3 + c] + tmp[(i + 1) * 3 + c]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
+        for (size_t k = 0; k < (p + 1 - r) * 3; k++) /* point by point, coordinate by coordinate */
+            tmp[k] = (tmp[k] + tmp[k + 3]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
         memcpy(lo + r * 3, tmp, 3 * sizeof *tmp);
         memcpy(hi + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
     }

@@ -158,6 +158,8 @@ typedef struct bsi_trim {
     int reversed;     /* 1: the loop runs along it from its end to its start */
     uint32_t edge;    /* model edge, or BSI_NO_EDGE until sewn */
     int computed;     /* 1: projected from the 3-D edge (pcurve.c) */
+    double lo[2], hi[2]; /* bsi_curve_bounds of uv, set as the face is added (the tests of a
+                          * point against the loops ask for them at every point) */
 } bsi_trim;
 
 typedef struct bsi_loop {

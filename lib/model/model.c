@@ -154,7 +154,9 @@ bs_status bsi_model_add_face(bs_model *m, const bsi_face_spec *spec, size_t *fac
         t += spec->loop_len[l];
     }
     for (size_t t = 0; t < spec->ntrim; t++) {
-        m->trims[m->ntrim++] = spec->trims[t];
+        bsi_trim *added = &m->trims[m->ntrim++];
+        *added = spec->trims[t];
+        bsi_curve_bounds(&added->uv, added->lo, added->hi);
         memset(&spec->trims[t].uv, 0, sizeof spec->trims[t].uv);
     }
     if (spec->shell >= m->nshell)

@@ -237,6 +237,8 @@ static size_t hand_face(bs_model *m, bs_patch **patches, bsi_axis *au, bsi_axis 
         t += loop_len[l];
     }
     memcpy(m->trims + m->ntrim, trims, ntrim * sizeof *trims);
+    for (size_t k = m->ntrim; k < m->ntrim + ntrim; k++) /* as bsi_model_add_face */
+        bsi_curve_bounds(&m->trims[k].uv, m->trims[k].lo, m->trims[k].hi);
     m->ntrim += ntrim;
     m->faces[m->nface++] = face;
     m->face_cap = m->nface, m->loop_cap = m->nloop, m->trim_cap = m->ntrim;
