@@ -236,7 +236,60 @@ typedef struct near_ctx {
     size_t f;
     const double *box;
     double p[3], lip[2], tol;
+    int flat;                          /* the face is a parallelogram (flat_face) */
+    double uv[2], ju[3], jv[3], slack; /* P's native point, the map's partials, its twist */
 } near_ctx;
+
+/* 1 when face f is one polynomial bilinear patch over linear axes (a plane's face): its point at
+ * native (u, v) is then S(uv) + Ju (u - u_P) + Jv (v - v_P) to within the length of the twist
+ * P11 - P10 - P01 + P00 (the bilinear term s t times it, s and t in [0, 1]). */
+static int flat_face(const bs_model *m, const bsi_face *face, near_ctx *x)
+{
+    if (face->au.n != 1 || face->av.n != 1 || face->au.kind != BSI_AXIS_LINEAR ||
+        face->av.kind != BSI_AXIS_LINEAR)
+        return 0;
+    const bs_patch *pt = bs_surface_get(m->surface, face->first_patch);
+    if (pt->deg_u != 1 || pt->deg_v != 1 || pt->rational)
+        return 0;
+    const double *p00 = pt->ctrl, *p01 = pt->ctrl + 3, *p10 = pt->ctrl + 6, *p11 = pt->ctrl + 9;
+    double ws = face->au.breaks[1] - face->au.breaks[0], wt = face->av.breaks[1] - face->av.breaks[0];
+    double js[3], jt[3], twist = 0.0;
+    for (int c = 0; c < 3; c++) {
+        js[c] = (p10[c] - p00[c]) / ws;
+        jt[c] = (p01[c] - p00[c]) / wt;
+        double k = p11[c] - p10[c] - p01[c] + p00[c];
+        twist += k * k;
+    }
+    memcpy(x->ju, face->swap ? jt : js, sizeof js);
+    memcpy(x->jv, face->swap ? js : jt, sizeof jt);
+    x->slack = sqrt(twist);
+    return bsi_all_finite(x->ju, 3) && bsi_all_finite(x->jv, 3) && isfinite(x->slack);
+}
+
+/* On a flat face, the trim's image seen from P, Ju (u - u_P) + Jv (v - v_P), is the segment's
+ * piece h mapped linearly, so it lies in the box of the mapped points: d, its distance at the
+ * piece's first point (on the curve), and reach, such that d - reach is at most its distance
+ * anywhere on the piece (the box's), both widened by the twist. */
+static void flat_reach(const near_ctx *x, const double *h, size_t p, double *d, double *reach)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double first = 0.0, gap = 0.0;
+    for (size_t i = 0; i <= p; i++) {
+        double du = h[i * 3] / h[i * 3 + 2] - x->uv[0], dv = h[i * 3 + 1] / h[i * 3 + 2] - x->uv[1];
+        for (int c = 0; c < 3; c++) {
+            double q = x->ju[c] * du + x->jv[c] * dv;
+            lo[c] = bsi_dmin(lo[c], q), hi[c] = bsi_dmax(hi[c], q);
+            if (i == 0)
+                first += q * q;
+        }
+    }
+    for (int c = 0; c < 3; c++) {
+        double g = lo[c] > 0.0 ? lo[c] : hi[c] < 0.0 ? -hi[c] : 0.0;
+        gap += g * g;
+    }
+    *d = sqrt(first) + x->slack;
+    *reach = *d - (sqrt(gap) - x->slack);
+}
 
 /* |P - S(c)| for the trim point c = (u, v) kept in the face's box; INFINITY where the surface is
  * not found. */
@@ -253,7 +306,8 @@ static double distance_at(const near_ctx *x, double u, double v)
 #define NEAR_LOCAL_PIECES BSI_CUBIC_PIECES(NEAR_DEPTH)
 
 /* Within tol of P somewhere on the segment: each piece [s0, s1] is at least D - K / 2 from P, D
- * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1]. The pieces
+ * the distance at its middle, K the bound of the piece's 3-D speed over its own [0, 1] (on a flat
+ * face, D - reach of flat_reach, without evaluating the surface). The pieces
  * waiting are kept whole beside the stack and halved where taken (one pass of midpoints, which
  * also gives the middle); for higher degrees their block is allocated at the first halving, and
  * without it each piece is cut from the segment and its middle evaluated (two passes and one),
@@ -273,23 +327,30 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
     while (top > 0 && budget-- > 0 && !found) {
         double s0 = stack[top - 1].s0, s1 = stack[top - 1].s1;
         int depth = stack[--top].depth;
-        double sm = 0.5 * (s0 + s1), speed[2], mid[2];
+        double sm = 0.5 * (s0 + s1), d, reach;
         double *piece = pieces != NULL ? pieces + top * len : cut;
+        int halved = 0; /* the second half in place, the first on top */
         if (pieces == NULL)
             bsi_seg_piece(seg, p, s0, s1, cut);
-        curve_speed(piece, p, speed);
-        if (pieces != NULL) { /* the second half stays in place, the first goes on top */
-            bsi_seg_halve(piece, p, piece + len, piece);
-            mid[0] = piece[0] / piece[2], mid[1] = piece[1] / piece[2];
+        if (x->flat) {
+            flat_reach(x, piece, p, &d, &reach);
         } else {
-            bsi_seg_point(seg, p, sm, mid);
+            double speed[2], mid[2];
+            curve_speed(piece, p, speed);
+            if (pieces != NULL) {
+                bsi_seg_halve(piece, p, piece + len, piece);
+                halved = 1;
+                mid[0] = piece[0] / piece[2], mid[1] = piece[1] / piece[2];
+            } else {
+                bsi_seg_point(seg, p, sm, mid);
+            }
+            d = distance_at(x, mid[0], mid[1]);
+            reach = 0.5 * (x->lip[0] * speed[0] + x->lip[1] * speed[1]);
         }
-        double d = distance_at(x, mid[0], mid[1]);
         if (d <= x->tol) {
             found = 1;
             continue;
         }
-        double reach = 0.5 * (x->lip[0] * speed[0] + x->lip[1] * speed[1]);
         if (!(d - reach <= x->tol) || reach <= 1e-3 * x->tol || depth >= NEAR_DEPTH)
             continue;
         if (!asked && top == 0) { /* the first halving, of the whole segment */
@@ -297,6 +358,8 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
             pieces = malloc((size_t)(NEAR_DEPTH + 2) * len * sizeof *pieces);
             if (pieces != NULL)
                 bsi_seg_halve(seg, p, pieces + len, pieces);
+        } else if (pieces != NULL && !halved) {
+            bsi_seg_halve(piece, p, piece + len, piece);
         }
         stack[top].s0 = sm, stack[top].s1 = s1, stack[top++].depth = depth + 1;
         stack[top].s0 = s0, stack[top].s1 = sm, stack[top++].depth = depth + 1;
@@ -368,6 +431,8 @@ int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, doub
     if (!surface_point(m, f, u, v, x.p))
         return 0;
     face_speed(m, face, x.lip);
+    x.flat = flat_face(m, face, &x) && x.slack <= 1e-4 * tol; /* a parallelogram to rounding */
+    x.uv[0] = u, x.uv[1] = v;
     for (size_t l = face->first_loop; l < face->first_loop + face->loop_count; l++) {
         const bsi_loop *loop = &m->loops[l];
         for (size_t t = loop->first_trim; t < loop->first_trim + loop->trim_count; t++) {

@@ -1,6 +1,6 @@
 /* Classification of native face parameters against trim loops (lib/model/classify.c): a square
  * loop with a circular hole and a closed B-spline loop on a flat patch (S(u,v) = (2u, 3v, 0), so
- * 3-D distances are known), a cylinder whose hole crosses the seam and whose loop lies over
+ * 3-D distances are known), a square on a twisted bilinear patch, a cylinder whose hole crosses the seam and whose loop lies over
  * [-0.5, 5.5], a full cylinder with its seams, a hemisphere with its pole, an untrimmed face, and
  * bs_model_classify on the model of a surface. Points at 1e-10 from the exact curves (tol 0)
  * must fall on their exact side, points within tol in 3-D must be ON. */
@@ -151,6 +151,67 @@ static void test_square_hole(void)
     CHECK_STATUS(bs_model_classify(m, 3, faces, &cu, &cv, -1.0, where), BS_ERR_DOMAIN);
     CHECK_STATUS(bs_model_classify(m, 3, faces, &cu, &cv, NAN, where), BS_ERR_DOMAIN);
     CHECK_STATUS(bs_model_classify(m, 3, faces, &cu, &cv, 0.0, NULL), BS_ERR_INVALID_ARG);
+    bs_patch_destroy(patch);
+    bs_model_destroy(m);
+}
+
+/* A face of the patch trimmed by the square [0.2, 0.8]^2. */
+static size_t square_face(bs_model *m, bs_patch *patch)
+{
+    bsi_trim trims[4] = {line_trim(0.2, 0.2, 0.8, 0.2), line_trim(0.8, 0.2, 0.8, 0.8),
+                         line_trim(0.8, 0.8, 0.2, 0.8), line_trim(0.2, 0.8, 0.2, 0.2)};
+    size_t four = 4;
+    size_t f = add_bezier_face(m, patch, trims, 4, &four, 1);
+    return f;
+}
+
+/* ---- a twisted bilinear face: its map is not affine, so ON is judged on the surface ---- */
+static void twisted_point(double u, double v, double *p)
+{
+    p[0] = 2 * u, p[1] = 3 * v, p[2] = 1.5 * u * v;
+}
+
+/* The distance from the point at (u, v) to the side u = 0.2, 0.2 <= v' <= 0.8, in 3-D: sampled,
+ * then narrowed around the nearest sample (the squared distance is a quartic in v'). */
+static double twisted_side_distance(double u, double v)
+{
+    double p[3], q[3], best = INFINITY, at = 0.2;
+    twisted_point(u, v, p);
+    for (int k = 0; k <= 6000; k++) {
+        double w = 0.2 + 0.6 * k / 6000.0;
+        twisted_point(0.2, w, q);
+        double d = hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]);
+        if (d < best)
+            best = d, at = w;
+    }
+    for (double h = 1e-4; h > 1e-16; h *= 0.5)
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double w = fmin(0.8, fmax(0.2, at + sgn * h));
+            twisted_point(0.2, w, q);
+            double d = hypot(hypot(p[0] - q[0], p[1] - q[1]), p[2] - q[2]);
+            if (d < best)
+                best = d, at = w;
+        }
+    return best;
+}
+
+static void test_twisted(void)
+{
+    bs_model *m = NULL;
+    CHECK_STATUS(bsi_model_create(&m), BS_OK);
+    double ctrl[12] = {0, 0, 0, 0, 3, 0, 2, 0, 0, 2, 3, 1.5};
+    bs_patch *patch = NULL;
+    CHECK_STATUS(bs_patch_create(1, 1, 3, ctrl, NULL, &patch), BS_OK);
+    size_t f = square_face(m, patch);
+    for (int k = 0; k < 7; k++) { /* inside, near the side u = 0.2, nearer to it than to the others */
+        double v = 0.3 + 0.4 * k / 6.0, e = k % 2 ? 1e-5 : 1e-3;
+        double d = twisted_side_distance(0.2 + e, v);
+        EXPECT(m, f, 0.2 + e, v, 1.02 * d, BS_TRIM_ON);
+        EXPECT(m, f, 0.2 + e, v, 0.98 * d, BS_TRIM_INSIDE);
+        d = twisted_side_distance(0.2 - e, v);
+        EXPECT(m, f, 0.2 - e, v, 1.02 * d, BS_TRIM_ON);
+        EXPECT(m, f, 0.2 - e, v, 0.98 * d, BS_TRIM_OUTSIDE);
+    }
     bs_patch_destroy(patch);
     bs_model_destroy(m);
 }
@@ -384,10 +445,7 @@ static void test_degenerate_surface(void)
     double ctrl[6] = {0, 0, 0, 2, 0, 0};
     bs_patch *patch = NULL;
     CHECK_STATUS(bs_patch_create(1, 0, 3, ctrl, NULL, &patch), BS_OK);
-    bsi_trim trims[4] = {line_trim(0.2, 0.2, 0.8, 0.2), line_trim(0.8, 0.2, 0.8, 0.8),
-                         line_trim(0.8, 0.8, 0.2, 0.8), line_trim(0.2, 0.8, 0.2, 0.2)};
-    size_t four = 4;
-    size_t f = add_bezier_face(m, patch, trims, 4, &four, 1);
+    size_t f = square_face(m, patch);
     EXPECT(m, f, 0.5, 0.5, 1e-9, BS_TRIM_ON);
     EXPECT(m, f, 0.1, 0.5, 1e-9, BS_TRIM_OUTSIDE);
     bs_patch_destroy(patch);
@@ -600,6 +658,7 @@ static void test_box_place(void)
 int main(void)
 {
     test_square_hole();
+    test_twisted();
     spline_loop(0);
     spline_loop(1);
     test_cylinder_seam();

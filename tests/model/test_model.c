@@ -1,10 +1,12 @@
 /* Models of surfaces (bs_model_from_surface): faces, edges and shells from the surface's
  * topology; face evaluation and the native map against the patch evaluators; the argument rules
- * of the model accessors and evaluators. */
+ * of the model accessors and evaluators; classification beside a trim of a flat and of a twisted
+ * bilinear face (an OBJ model) against closed-form distances. */
 #include "harness.h"
 
 #include <bezsurf.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 /* A unit cube of six bilinear patches, each with its normal S_u x S_v pointing out; `skip` leaves
@@ -188,10 +190,70 @@ static void test_errors(void)
     bs_model_destroy(m);
 }
 
+/* Points beside a trim of a flat face, S = (2u, 3v, 0), and of a twisted one, S = (2u, 3v, 1.5uv),
+ * both trimmed to the square [0.2, 0.8]^2: ON within tol of the side u = 0.2, else on their side
+ * of it. The distances in closed form: 2 |e| on the flat face; on the twisted one, from
+ * (0.2 + e, v) to the side's point (0.2, v - d), sqrt(4 e^2 + 9 c^2 / 9.09) with c = 1.5 e v, the
+ * least over d of 4 e^2 + 9 d^2 + (0.3 d + c)^2. A third face, S = (2u, 2v, 0) trimmed by a
+ * circle, has its points 2 |e| from it at radius 0.25 + e. */
+static void test_classify_near_side(void)
+{
+    static const char obj[] =
+        "v 0 0 0\nv 2 0 0\nv 0 3 0\nv 2 3 0\nv 2 3 1.5\n"
+        "vp 0.2 0.2\nvp 0.8 0.2\nvp 0.8 0.8\nvp 0.2 0.8\nvp 0.2 0.2\n"
+        "cstype bezier\ndeg 1\ncurv2 1 2 3 4 5\nparm u 0 1 2 3 4\nend\n"
+        "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 3 4\nparm u 0 1\nparm v 0 1\ntrim 0 4 1\nend\n"
+        "surf 0 1 0 1 1 2 3 5\nparm u 0 1\nparm v 0 1\ntrim 0 4 1\nend\n"
+        /* the circle of centre (0.5, 0.5) and radius 0.25 on S = (2u, 2v, 0) */
+        "v 0 2 0\nv 2 2 0\n"
+        "vp 0.75 0.5 1\nvp 0.75 0.75 0.70710678118654757\nvp 0.5 0.75 1\n"
+        "vp 0.25 0.75 0.70710678118654757\nvp 0.25 0.5 1\nvp 0.25 0.25 0.70710678118654757\n"
+        "vp 0.5 0.25 1\nvp 0.75 0.25 0.70710678118654757\nvp 0.75 0.5 1\n"
+        "cstype rat bspline\ndeg 2\ncurv2 6 7 8 9 10 11 12 13 14\nparm u 0 0 0 1 1 2 2 3 3 4 4 4\nend\n"
+        "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 6 7\nparm u 0 1\nparm v 0 1\ntrim 0 4 2\nend\n";
+    bs_model *m = NULL;
+    CHECK_STATUS(bs_model_read_obj(obj, sizeof obj - 1, NULL, &m), BS_OK);
+    if (m == NULL)
+        return;
+    CHECK(bs_model_face_count(m) == 3);
+    for (uint32_t face = 0; face < 2; face++) {
+        double u = 0.5, v = 0.25, p[3];
+        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+        bs_view pos[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
+        CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, &cv, pos, NULL, NULL), BS_OK);
+        CHECKF(p[0] == 1.0 && p[1] == 0.75 && p[2] == (face ? 0.1875 : 0.0),
+               "face %u at (0.5, 0.25): %g %g %g", (unsigned)face, p[0], p[1], p[2]);
+        for (int k = 0; k < 28; k++) {
+            double e = (k % 2 ? 1e-5 : 1e-3) * (k % 4 < 2 ? 1.0 : -1.0), c = 1.5 * e * (0.3 + 0.4 * (double)(k / 4) / 6.0);
+            double d = face ? sqrt(4 * e * e + 9 * c * c / 9.09) : 2 * fabs(e);
+            u = 0.2 + e, v = 0.3 + 0.4 * (double)(k / 4) / 6.0;
+            unsigned char near = 9, far = 9;
+            CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, 1.02 * d, &near), BS_OK);
+            CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, 0.98 * d, &far), BS_OK);
+            CHECKF(near == BS_TRIM_ON && far == (e > 0 ? BS_TRIM_INSIDE : BS_TRIM_OUTSIDE),
+                   "face %u at (%.17g, %.17g), distance %g: %d within 1.02, %d within 0.98", (unsigned)face,
+                   u, v, d, near, far);
+        }
+    }
+    uint32_t disc = 2;
+    for (int k = 0; k < 40; k++) { /* beside the circle: 2 |e| from it */
+        double a = 0.157 * k, e = (k % 2 ? 1e-5 : 1e-3) * (k % 4 < 2 ? 1.0 : -1.0), d = 2 * fabs(e);
+        double u = 0.5 + (0.25 + e) * cos(a), v = 0.5 + (0.25 + e) * sin(a);
+        bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
+        unsigned char near = 9, far = 9;
+        CHECK_STATUS(bs_model_classify(m, 1, &disc, &cu, &cv, 1.02 * d, &near), BS_OK);
+        CHECK_STATUS(bs_model_classify(m, 1, &disc, &cu, &cv, 0.98 * d, &far), BS_OK);
+        CHECKF(near == BS_TRIM_ON && far == (e > 0 ? BS_TRIM_OUTSIDE : BS_TRIM_INSIDE),
+               "circle at angle %g, distance %g: %d within 1.02, %d within 0.98", a, d, near, far);
+    }
+    bs_model_destroy(m);
+}
+
 int main(void)
 {
     test_cube();
     test_teapot();
     test_errors();
+    test_classify_near_side();
     return bs_test_exit("test_model");
 }
