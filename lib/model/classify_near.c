@@ -192,42 +192,60 @@ int bsi_trim_is_seam(const bs_model *m, size_t f, size_t t)
     return 0;
 }
 
-/* The Bernstein polynomials of degree n at s. */
+/* The Bernstein polynomials of degree n at s: by the recurrence of de Casteljau (n^2 / 2 steps)
+ * up to cubics, else as binomial(n, i) s^i (1 - s)^(n - i) (3n products and n divisions; the
+ * binomials exact in doubles up to degree 56, within a few units of rounding above). */
 static void bernstein(size_t n, double s, double *b)
 {
     b[0] = 1.0;
-    for (size_t j = 1; j <= n; j++) {
-        double carry = 0.0;
-        for (size_t k = 0; k < j; k++) {
-            double t = b[k];
-            b[k] = carry + (1.0 - s) * t;
-            carry = s * t;
+    if (n <= 3) {
+        for (size_t j = 1; j <= n; j++) {
+            double carry = 0.0;
+            for (size_t k = 0; k < j; k++) {
+                double t = b[k];
+                b[k] = carry + (1.0 - s) * t;
+                carry = s * t;
+            }
+            b[j] = carry;
         }
-        b[j] = carry;
+        return;
+    }
+    double up[BS_MAX_DEGREE + 1], down = 1.0, binom = 1.0;
+    up[0] = 1.0;
+    for (size_t i = 1; i <= n; i++)
+        up[i] = up[i - 1] * s;
+    for (size_t i = n + 1; i-- > 0;) { /* binom = binomial(n, i), down = (1 - s)^(n - i) */
+        b[i] = binom * up[i] * down;
+        binom = binom * (double)i / (double)(n - i + 1);
+        down *= 1.0 - s;
     }
 }
 
 /* The point of face f at native (u, v) from its patch's homogeneous net (one point: cheaper than
- * the block evaluator); 0 outside the face's patches. */
+ * the block evaluator), contracted row by row in each plane; 0 outside the face's patches. */
 static int surface_point(const bs_model *m, size_t f, double u, double v, double *q)
 {
     uint32_t id;
-    double st[2], bu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], acc[4] = {0.0, 0.0, 0.0, 0.0};
+    double st[2], bu[BS_MAX_DEGREE + 1], bv[BS_MAX_DEGREE + 1], acc[4] = {0.0, 0.0, 0.0, 1.0};
     if (!bsi_face_locate(m, f, u, v, &id, st))
         return 0;
     const bs_patch *pt = bs_surface_get(m->surface, id);
     size_t nv = pt->deg_v + 1, nctrl = pt->nctrl;
     bernstein(pt->deg_u, st[0], bu);
     bernstein(pt->deg_v, st[1], bv);
-    for (size_t i = 0; i <= pt->deg_u; i++)
-        for (size_t j = 0; j < nv; j++) {
-            double b = bu[i] * bv[j];
-            for (size_t c = 0; c < pt->ncoord; c++)
-                acc[c] += b * pt->hom[c * nctrl + i * nv + j];
+    for (size_t c = 0; c < pt->ncoord; c++) {
+        const double *plane = pt->hom + c * nctrl;
+        double sum = 0.0;
+        for (size_t i = 0; i <= pt->deg_u; i++, plane += nv) {
+            double row = 0.0;
+            for (size_t j = 0; j < nv; j++)
+                row += bv[j] * plane[j];
+            sum += bu[i] * row;
         }
-    double w = pt->rational ? acc[3] : 1.0;
+        acc[c] = sum;
+    }
     for (int c = 0; c < 3; c++)
-        q[c] = acc[c] / w;
+        q[c] = acc[c] / acc[3];
     return 1;
 }
 

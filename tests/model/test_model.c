@@ -195,7 +195,7 @@ static void test_errors(void)
  * of it. The distances in closed form: 2 |e| on the flat face; on the twisted one, from
  * (0.2 + e, v) to the side's point (0.2, v - d), sqrt(4 e^2 + 9 c^2 / 9.09) with c = 1.5 e v, the
  * least over d of 4 e^2 + 9 d^2 + (0.3 d + c)^2. A third face, S = (2u, 2v, 0) trimmed by a
- * circle, has its points 2 |e| from it at radius 0.25 + e. */
+ * circle, has its points 2 |e| from it at radius 0.25 + e; a fourth is the first of degree 4. */
 static void test_classify_near_side(void)
 {
     static const char obj[] =
@@ -210,22 +210,27 @@ static void test_classify_near_side(void)
         "vp 0.25 0.75 0.70710678118654757\nvp 0.25 0.5 1\nvp 0.25 0.25 0.70710678118654757\n"
         "vp 0.5 0.25 1\nvp 0.75 0.25 0.70710678118654757\nvp 0.75 0.5 1\n"
         "cstype rat bspline\ndeg 2\ncurv2 6 7 8 9 10 11 12 13 14\nparm u 0 0 0 1 1 2 2 3 3 4 4 4\nend\n"
-        "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 6 7\nparm u 0 1\nparm v 0 1\ntrim 0 4 2\nend\n";
+        "cstype bezier\ndeg 1 1\nsurf 0 1 0 1 1 2 6 7\nparm u 0 1\nparm v 0 1\ntrim 0 4 2\nend\n"
+        /* S = (2u, 3v, 0) again, of degree 4 along u: judged on the surface, not as flat */
+        "v 0 0 0\nv 0.5 0 0\nv 1 0 0\nv 1.5 0 0\nv 2 0 0\nv 0 3 0\nv 0.5 3 0\nv 1 3 0\nv 1.5 3 0\nv 2 3 0\n"
+        "deg 4 1\nsurf 0 1 0 1 8 9 10 11 12 13 14 15 16 17\nparm u 0 1\nparm v 0 1\ntrim 0 4 1\nend\n";
     bs_model *m = NULL;
     CHECK_STATUS(bs_model_read_obj(obj, sizeof obj - 1, NULL, &m), BS_OK);
     if (m == NULL)
         return;
-    CHECK(bs_model_face_count(m) == 3);
-    for (uint32_t face = 0; face < 2; face++) {
+    CHECK(bs_model_face_count(m) == 4);
+    static const uint32_t beside[3] = {0, 1, 3};
+    for (int which = 0; which < 3; which++) {
+        uint32_t face = beside[which];
         double u = 0.5, v = 0.25, p[3];
         bs_cview cu = {&u, 1, 0}, cv = {&v, 1, 0};
         bs_view pos[3] = {{&p[0], 1, 0}, {&p[1], 1, 0}, {&p[2], 1, 0}};
         CHECK_STATUS(bs_model_face_eval(m, 1, &face, &cu, &cv, pos, NULL, NULL), BS_OK);
-        CHECKF(p[0] == 1.0 && p[1] == 0.75 && p[2] == (face ? 0.1875 : 0.0),
+        CHECKF(p[0] == 1.0 && p[1] == 0.75 && p[2] == (face == 1 ? 0.1875 : 0.0),
                "face %u at (0.5, 0.25): %g %g %g", (unsigned)face, p[0], p[1], p[2]);
         for (int k = 0; k < 28; k++) {
             double e = (k % 2 ? 1e-5 : 1e-3) * (k % 4 < 2 ? 1.0 : -1.0), c = 1.5 * e * (0.3 + 0.4 * (double)(k / 4) / 6.0);
-            double d = face ? sqrt(4 * e * e + 9 * c * c / 9.09) : 2 * fabs(e);
+            double d = face == 1 ? sqrt(4 * e * e + 9 * c * c / 9.09) : 2 * fabs(e);
             u = 0.2 + e, v = 0.3 + 0.4 * (double)(k / 4) / 6.0;
             unsigned char near = 9, far = 9;
             CHECK_STATUS(bs_model_classify(m, 1, &face, &cu, &cv, 1.02 * d, &near), BS_OK);
