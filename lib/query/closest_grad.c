@@ -32,12 +32,12 @@ static void ranges(const bsi_cl *w, const double *co, double err, double rel, in
     for (size_t k = 0; k <= K; k++)
         for (size_t l = 0; l <= L; l++) {
             double x = co[k * n2 + l] / (b2m[k] * b2n[l]);
-            lo = fmin(lo, x), hi = fmax(hi, x), big = fmax(big, fabs(x));
+            lo = lesser(lo, x), hi = greater(hi, x), big = greater(big, fabs(x));
             size_t kk = dir == BS_DIR_U ? k + 1 : k, ll = dir == BS_DIR_U ? l : l + 1;
             if (kk > K || ll > L)
                 continue;
             double y = co[kk * n2 + ll] / (b2m[kk] * b2n[ll]), d = (double)deg * (y - x);
-            dlo = fmin(dlo, d), dhi = fmax(dhi, d);
+            dlo = lesser(dlo, d), dhi = greater(dhi, d);
         }
     double e = err + rel * big + 4.0 * DBL_EPSILON * big; /* each coefficient's error */
     double de = (double)deg * (2.0 * e + 4.0 * DBL_EPSILON * big);
@@ -48,8 +48,8 @@ static void ranges(const bsi_cl *w, const double *co, double err, double rel, in
 static void product(const double *a, const double *b, double *out)
 {
     double p[4] = {a[0] * b[0], a[0] * b[1], a[1] * b[0], a[1] * b[1]};
-    out[0] = fmin(fmin(p[0], p[1]), fmin(p[2], p[3]));
-    out[1] = fmax(fmax(p[0], p[1]), fmax(p[2], p[3]));
+    out[0] = lesser(lesser(p[0], p[1]), lesser(p[2], p[3]));
+    out[1] = greater(greater(p[0], p[1]), greater(p[2], p[3]));
 }
 
 /* The sign of f's derivative along dir over the box of the last bsi_cl_fbound (b), 0 when not

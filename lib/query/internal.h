@@ -7,6 +7,11 @@
 
 #include "surface/internal.h"
 
+/* min and max without the NaN rules of fmin and fmax, which keep them out of line (the ray test,
+ * the walk, the closest-point bounds); a NaN in b is passed on, not dropped. */
+static inline double lesser(double a, double b) { return a < b ? a : b; }
+static inline double greater(double a, double b) { return a > b ? a : b; }
+
 static inline double bsi_dot3(const double *a, const double *b)
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

@@ -8,11 +8,6 @@
 
 #include "query/internal.h"
 
-/* min and max without the NaN rules of fmin and fmax, which keep them out of line (the ray test
- * and the walk). */
-static inline double lesser(double a, double b) { return a < b ? a : b; }
-static inline double greater(double a, double b) { return a > b ? a : b; }
-
 /* Every patch is cut into BSI_LOC_SPLIT x BSI_LOC_SPLIT sub-patches by halving its net twice in
  * each direction; each sub-patch is a leaf of the hierarchy. */
 #define BSI_LOC_SPLIT 4
