@@ -8,6 +8,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* tan(a / 2) of piece k of an ANGULAR axis, a its half angle: kept, or computed alike. */
+static double quarter_tan(const bsi_axis *a, size_t k)
+{
+    if (a->quarter != NULL)
+        return a->quarter[k];
+    double half = 0.5 * a->radians * (a->breaks[k + 1] - a->breaks[k]);
+    return tan(0.5 * half);
+}
+
 int bsi_axis_locate(const bsi_axis *a, double x, size_t *piece, double *s)
 {
     if (a->n == 0 || !(x >= a->breaks[0] && x <= a->breaks[a->n]))
@@ -25,7 +34,7 @@ int bsi_axis_locate(const bsi_axis *a, double x, size_t *piece, double *s)
     double local;
     if (a->kind == BSI_AXIS_ANGULAR) {
         double half = 0.5 * a->radians * (b1 - b0), phi = a->radians * (x - b0);
-        local = 0.5 * (1.0 + tan(0.5 * (phi - half)) / tan(0.5 * half));
+        local = 0.5 * (1.0 + tan(0.5 * (phi - half)) / quarter_tan(a, lo));
     } else {
         local = (x - b0) / (b1 - b0);
     }
@@ -44,7 +53,7 @@ double bsi_axis_native(const bsi_axis *a, size_t k, double s)
         return b1;
     if (a->kind == BSI_AXIS_ANGULAR) {
         double half = 0.5 * a->radians * (b1 - b0);
-        double phi = half + 2.0 * atan((2.0 * s - 1.0) * tan(0.5 * half));
+        double phi = half + 2.0 * atan((2.0 * s - 1.0) * quarter_tan(a, k));
         return b0 + phi / a->radians;
     }
     return b0 + s * (b1 - b0);
@@ -57,7 +66,7 @@ double bsi_axis_rate(const bsi_axis *a, size_t k, double x)
         return 1.0 / (b1 - b0);
     double half = 0.5 * a->radians * (b1 - b0), phi = a->radians * (x - b0);
     double c = cos(0.5 * (phi - half));
-    return a->radians / (4.0 * tan(0.5 * half) * c * c);
+    return a->radians / (4.0 * quarter_tan(a, k) * c * c);
 }
 
 bs_status bsi_axis_make(int kind, double radians, double x0, double x1, const double *inner,
@@ -81,7 +90,7 @@ bs_status bsi_axis_make(int kind, double radians, double x0, double x1, const do
         for (size_t i = 0; i < ninner; i++)
             n += inner[i] > x0 && inner[i] < x1 && (i == 0 || inner[i] > inner[i - 1]);
     }
-    a->breaks = malloc((n + 1) * sizeof *a->breaks);
+    a->breaks = malloc((kind == BSI_AXIS_ANGULAR ? 2 * n + 1 : n + 1) * sizeof *a->breaks);
     if (a->breaks == NULL)
         return BS_ERR_NO_MEMORY;
     a->kind = kind;
@@ -98,27 +107,37 @@ bs_status bsi_axis_make(int kind, double radians, double x0, double x1, const do
                 a->breaks[k++] = inner[i];
     }
     a->breaks[n] = x1;
+    if (kind == BSI_AXIS_ANGULAR) {
+        for (size_t k = 0; k < n; k++)
+            a->breaks[n + 1 + k] = quarter_tan(a, k);
+        a->quarter = a->breaks + n + 1;
+    }
     return BS_OK;
 }
 
 bs_status bsi_axis_copy(const bsi_axis *src, bsi_axis *dst)
 {
     *dst = *src;
-    dst->breaks = NULL;
+    dst->breaks = dst->quarter = NULL;
     if (src->n == 0)
         return BS_OK;
-    dst->breaks = malloc((src->n + 1) * sizeof *dst->breaks);
+    size_t count = src->n + 1 + (src->quarter != NULL ? src->n : 0);
+    dst->breaks = malloc(count * sizeof *dst->breaks);
     if (dst->breaks == NULL) {
         dst->n = 0;
         return BS_ERR_NO_MEMORY;
     }
     memcpy(dst->breaks, src->breaks, (src->n + 1) * sizeof *dst->breaks);
+    if (src->quarter != NULL) {
+        memcpy(dst->breaks + src->n + 1, src->quarter, src->n * sizeof *dst->breaks);
+        dst->quarter = dst->breaks + src->n + 1;
+    }
     return BS_OK;
 }
 
 void bsi_axis_free(bsi_axis *a)
 {
     free(a->breaks);
-    a->breaks = NULL;
+    a->breaks = a->quarter = NULL;
     a->n = 0;
 }

@@ -73,6 +73,7 @@ bs_status bsi_curve_repeat(const bsi_curve *src, bsi_curve *out)
     double period = src->axis.breaks[n] - src->axis.breaks[0];
     bsi_axis a = src->axis;
     a.n = 3 * n;
+    a.quarter = NULL; /* computed when asked: the breaks are new */
     a.breaks = malloc((a.n + 1) * sizeof *a.breaks);
     if (a.breaks == NULL)
         return BS_ERR_NO_MEMORY;

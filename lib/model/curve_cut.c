@@ -48,6 +48,7 @@ bs_status bsi_curve_cut(const bsi_curve *src, double t0, double t1, bsi_curve *o
     size_t n = k1 - k0 + 1, k = src->dim + 1, np = src->degree + 1;
     out->axis = *a;
     out->axis.n = n;
+    out->axis.quarter = NULL; /* computed when asked: the breaks are new */
     out->axis.breaks = malloc((n + 1) * sizeof *out->axis.breaks);
     out->hom = malloc(n * np * k * sizeof *out->hom);
     if (out->axis.breaks == NULL || out->hom == NULL) {

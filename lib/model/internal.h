@@ -37,6 +37,8 @@ typedef struct bsi_axis {
     int kind;        /* BSI_AXIS_* */
     size_t n;        /* pieces (0: an empty axis) */
     double *breaks;  /* n + 1 increasing native values, owned */
+    double *quarter; /* ANGULAR: tan(a / 2) of each piece, kept after the breaks in their block
+                      * (the maps ask for it at every point); NULL: computed when asked */
     double radians;  /* ANGULAR: radians per native unit (1 when native angles are radians) */
 } bsi_axis;
 
