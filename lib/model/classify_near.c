@@ -47,8 +47,15 @@ void bsi_seg_halve(const double *h, size_t p, double *lo, double *hi)
     memcpy(lo, tmp, 3 * sizeof *tmp);
     memcpy(hi + p * 3, tmp + p * 3, 3 * sizeof *tmp);
     for (size_t r = 1; r <= p; r++) {
-        for (size_t k = 0; k < (p + 1 - r) * 3; k++) /* point by point, coordinate by coordinate */
-            tmp[k] = (tmp[k] + tmp[k + 3]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
+        /* point by point, coordinate by coordinate, two at a time (one vector operation) */
+        size_t count = (p + 1 - r) * 3, k = 0;
+        for (; k + 2 <= count; k += 2) {
+            double a = (tmp[k] + tmp[k + 3]) * 0.5, b = (tmp[k + 1] + tmp[k + 4]) * 0.5; // NOLINT(clang-analyzer-core.UndefinedBinaryOperatorResult): tmp holds the piece's (p+1) points
+            tmp[k] = a;
+            tmp[k + 1] = b;
+        }
+        if (k < count)
+            tmp[k] = (tmp[k] + tmp[k + 3]) * 0.5;
         memcpy(lo + r * 3, tmp, 3 * sizeof *tmp);
         memcpy(hi + (p - r) * 3, tmp + (p - r) * 3, 3 * sizeof *tmp);
     }
