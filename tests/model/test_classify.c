@@ -1,6 +1,7 @@
 /* Classification of native face parameters against trim loops (lib/model/classify.c): a square
  * loop with a circular hole and a closed B-spline loop on a flat patch (S(u,v) = (2u, 3v, 0), so
- * 3-D distances are known), a square on a twisted bilinear patch, a cylinder whose hole crosses the seam and whose loop lies over
+ * 3-D distances are known), a square on a twisted bilinear patch, ellipses on planes of every
+ * scale (as flat faces and raised to degree 2) against sampled distances, a cylinder whose hole crosses the seam and whose loop lies over
  * [-0.5, 5.5], a full cylinder with its seams, a hemisphere with its pole, an untrimmed face, and
  * bs_model_classify on the model of a surface. Points at 1e-10 from the exact curves (tol 0)
  * must fall on their exact side, points within tol in 3-D must be ON. */
@@ -214,6 +215,107 @@ static void test_twisted(void)
     }
     bs_patch_destroy(patch);
     bs_model_destroy(m);
+}
+
+/* ---- planes at every scale: the flat path against the surface's, and both against the truth ----
+ * A parallelogram S = O + u Ju + v Jv over [0,1]^2, once as its bilinear patch (judged as flat,
+ * by the box of each trim piece mapped into 3-D) and once raised to degree (2, 2) (judged on the
+ * surface), trimmed by an ellipse of the parameters. Points beside the ellipse get tolerances
+ * 1% and 10% either side of their true 3-D distance to it (sampled along the ellipse, then
+ * narrowed), so both faces must say ON, or the side of the ellipse the point lies on. */
+static void ellipse_uv(const double *c, const double *x, const double *y, double t, double *uv)
+{
+    uv[0] = c[0] + 0.3 * cos(t) * x[0] + 0.2 * sin(t) * y[0];
+    uv[1] = c[1] + 0.3 * cos(t) * x[1] + 0.2 * sin(t) * y[1];
+}
+
+static double plane_gap(const double *ju, const double *jv, const double *p, const double *q)
+{
+    double d[3];
+    for (int k = 0; k < 3; k++)
+        d[k] = ju[k] * (p[0] - q[0]) + jv[k] * (p[1] - q[1]);
+    return hypot(hypot(d[0], d[1]), d[2]);
+}
+
+static double ellipse_distance(const double *c, const double *x, const double *y, const double *ju,
+                               const double *jv, const double *p)
+{
+    double best = INFINITY, at = 0.0, q[2];
+    for (int k = 0; k < 4096; k++) {
+        double t = 2 * PI * k / 4096.0, d;
+        ellipse_uv(c, x, y, t, q);
+        if ((d = plane_gap(ju, jv, p, q)) < best)
+            best = d, at = t;
+    }
+    for (double h = 2 * PI / 4096.0; h > 1e-15; h *= 0.5)
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double d;
+            ellipse_uv(c, x, y, at + sgn * h, q);
+            if ((d = plane_gap(ju, jv, p, q)) < best)
+                best = d, at += sgn * h;
+        }
+    return best;
+}
+
+static void test_planes_any_scale(void)
+{
+    unsigned long long seed = 31;
+    int wrong = 0, checked = 0;
+    for (int trial = 0; trial < 12; trial++) {
+        double scale = trial % 3 == 0 ? 1e-3 : trial % 3 == 1 ? 1.0 : 1e3, o[3], ju[3], jv[3];
+        for (int k = 0; k < 3; k++) {
+            o[k] = bs_test_rand(&seed, -scale, scale);
+            ju[k] = bs_test_rand(&seed, -scale, scale);
+            jv[k] = bs_test_rand(&seed, -scale, scale);
+        }
+        double ctrl1[12], ctrl2[27];
+        for (int i = 0; i <= 2; i++)
+            for (int j = 0; j <= 2; j++)
+                for (int k = 0; k < 3; k++) {
+                    double at = o[k] + 0.5 * i * ju[k] + 0.5 * j * jv[k];
+                    ctrl2[(i * 3 + j) * 3 + k] = at;
+                    if (i % 2 == 0 && j % 2 == 0)
+                        ctrl1[((i / 2) * 2 + j / 2) * 3 + k] = at;
+                }
+        double a = bs_test_rand(&seed, 0.0, PI), c[2] = {0.5, 0.5};
+        double x[2] = {cos(a), sin(a)}, y[2] = {-sin(a), cos(a)};
+        bs_model *m = NULL;
+        bs_patch *flat = NULL, *raised = NULL;
+        CHECK_STATUS(bsi_model_create(&m), BS_OK);
+        CHECK_STATUS(bs_patch_create(1, 1, 3, ctrl1, NULL, &flat), BS_OK);
+        CHECK_STATUS(bs_patch_create(2, 2, 3, ctrl2, NULL, &raised), BS_OK);
+        size_t one = 1, f[2];
+        for (int g = 0; g < 2; g++) {
+            bsi_trim t;
+            memset(&t, 0, sizeof t);
+            t.edge = BSI_NO_EDGE;
+            CHECK_STATUS(bsi_curve_conic(2, c, x, y, 0.3, 0.2, 1.0, 0.0, 2 * PI, &t.uv), BS_OK);
+            f[g] = add_bezier_face(m, g ? raised : flat, &t, 1, &one, 1);
+        }
+        for (int k = 0; k < 40; k++) {
+            double t = bs_test_rand(&seed, 0.0, 2 * PI), off = (k % 2 ? 1.0 : -1.0) * (k % 4 < 2 ? 1e-3 : 3e-2);
+            double e[2], p[2];
+            ellipse_uv(c, x, y, t, e);
+            p[0] = c[0] + (1.0 + off) * (e[0] - c[0]);
+            p[1] = c[1] + (1.0 + off) * (e[1] - c[1]);
+            double d = ellipse_distance(c, x, y, ju, jv, p);
+            int side = off > 0 ? BS_TRIM_OUTSIDE : BS_TRIM_INSIDE;
+            static const double factor[4] = {0.9, 0.99, 1.01, 1.1};
+            for (int g = 0; g < 2; g++)
+                for (int q = 0; q < 4; q++) {
+                    int want = factor[q] > 1.0 ? BS_TRIM_ON : side;
+                    int got = bsi_face_classify(m, f[g], p[0], p[1], factor[q] * d);
+                    checked++;
+                    if (got != want && wrong++ < 5)
+                        CHECKF(0, "scale %g, %s face, (%.17g, %.17g) at %g from the ellipse, tol %g times that: %s",
+                               scale, g ? "raised" : "flat", p[0], p[1], d, factor[q], name(got));
+                }
+        }
+        bs_patch_destroy(flat);
+        bs_patch_destroy(raised);
+        bs_model_destroy(m);
+    }
+    CHECKF(wrong == 0, "%d of %d classifications beside ellipses on planes wrong", wrong, checked);
 }
 
 /* ---- a closed periodic cubic B-spline loop (rational or not) ---- */
@@ -659,6 +761,7 @@ int main(void)
 {
     test_square_hole();
     test_twisted();
+    test_planes_any_scale();
     spline_loop(0);
     spline_loop(1);
     test_cylinder_seam();
