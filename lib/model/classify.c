@@ -16,6 +16,9 @@
  * way from its control points. A piece is dropped when D - K / 2 > tol: only the parts of the
  * boundary that can come within tol in 3-D are refined, wherever they lie in parameter space (a
  * pole: a degenerate trim along v = pi / 2 maps to one 3-D point; a seam: far in u, near in 3-D).
+ * On a flat face (one polynomial parallelogram over linear axes, a plane's face) S is affine in
+ * (u, v), so the piece's image seen from P is its control points mapped into 3-D, and the box of
+ * those points bounds it from below instead (no surface point is evaluated).
  * Refinement stops when K / 2 is a thousandth of tol (the piece is then farther than 0.999 tol:
  * a point that near is left to the parity below, which is exact) or after a fixed number of
  * evaluations per segment. Seam trims (a constant u, or v, of a periodic
