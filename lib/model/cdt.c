@@ -175,6 +175,29 @@ int bsi_cdt_collect_boundary(bsi_cdt *c)
     return 1;
 }
 
+/* Side i = (x, y) of the fresh triangle tk against the boundary edge (x, y) of the cavity: the
+ * triangle behind it becomes its neighbour, and its own link is turned to tk. 0 when no boundary
+ * edge is (x, y). */
+static int link_behind(bsi_cdt *c, uint32_t tk, int i, uint32_t x, uint32_t y)
+{
+    bsi_cdt_tri *T = &c->t[tk];
+    for (size_t e = 0; e < c->nedge; e++) {
+        const uint32_t *E = c->edge + 4 * e;
+        if (E[0] != x || E[1] != y)
+            continue;
+        T->nb[i] = E[2];
+        T->fixed[i] = (unsigned char)E[3];
+        if (E[2] != BSI_CDT_NONE) {
+            bsi_cdt_tri *O = &c->t[E[2]];
+            int b = bsi_cdt_slot_of(O, y);
+            if (b < 3 && O->v[NEXT(b)] == x)
+                O->nb[PREV(b)] = tk;
+        }
+        return 1;
+    }
+    return 0;
+}
+
 /* Neighbours of the triangles c->fresh: among themselves where they share an edge, else the
  * outer triangle of the boundary edge they stand on (whose own link is turned to them). */
 void bsi_cdt_link_fresh(bsi_cdt *c)
@@ -197,21 +220,39 @@ void bsi_cdt_link_fresh(bsi_cdt *c)
                     found = 1;
                 }
             }
-            for (size_t e = 0; e < c->nedge && !found; e++) {
-                const uint32_t *E = c->edge + 4 * e;
-                if (E[0] != x || E[1] != y)
-                    continue;
-                found = 1;
-                T->nb[i] = E[2];
-                T->fixed[i] = (unsigned char)E[3];
-                if (E[2] != BSI_CDT_NONE) {
-                    bsi_cdt_tri *O = &c->t[E[2]];
-                    int b = bsi_cdt_slot_of(O, y);
-                    if (b < 3 && O->v[NEXT(b)] == x)
-                        O->nb[PREV(b)] = tk;
-                }
-            }
+            if (!found)
+                link_behind(c, tk, i, x, y);
         }
+        for (int i = 0; i < 3; i++)
+            c->vtri[T->v[i]] = tk;
+    }
+}
+
+/* bsi_cdt_link_fresh for the fan of an insertion: fresh[k] = (from, to, p) stands on boundary
+ * edge k, so its neighbour across (to, p) is the fan's triangle starting at to, across (p, from)
+ * the one ending at from, and across (from, to) the triangle behind that edge: the same links,
+ * found by comparing one vertex rather than searching each triangle for the edge's ends. */
+static void link_fan(bsi_cdt *c)
+{
+    for (size_t k = 0; k < c->nfresh; k++) {
+        uint32_t tk = c->fresh[k];
+        bsi_cdt_tri *T = &c->t[tk];
+        uint32_t from = T->v[0], to = T->v[1];
+        T->nb[0] = T->nb[1] = T->nb[2] = BSI_CDT_NONE;
+        int found[3] = {0, 0, 0};
+        for (size_t j = 0; j < c->nfresh; j++) {
+            const bsi_cdt_tri *U = &c->t[c->fresh[j]];
+            if (j == k)
+                continue;
+            if (!found[0] && U->v[0] == to) /* (to, next, p) */
+                T->nb[0] = c->fresh[j], T->fixed[0] = U->fixed[1], found[0] = 1;
+            if (!found[1] && U->v[1] == from) /* (before, from, p) */
+                T->nb[1] = c->fresh[j], T->fixed[1] = U->fixed[0], found[1] = 1;
+            if (!found[2] && U->v[0] == to && U->v[1] == from) /* the edge run back: a spike */
+                T->nb[2] = c->fresh[j], T->fixed[2] = U->fixed[2], found[2] = 1;
+        }
+        if (!found[2])
+            link_behind(c, tk, 2, from, to);
         for (int i = 0; i < 3; i++)
             c->vtri[T->v[i]] = tk;
     }
@@ -349,7 +390,7 @@ bs_status bsi_cdt_insert(bsi_cdt *c, int64_t x, int64_t y, int mode, uint32_t hi
         T->inside = inside;
         c->fresh[c->nfresh++] = t;
     }
-    bsi_cdt_link_fresh(c);
+    link_fan(c);
     c->last = c->fresh[0];
     *id = pid;
     return *outcome = BSI_CDT_ADDED, BS_OK;
