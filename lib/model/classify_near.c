@@ -354,7 +354,7 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
         int depth = stack[--top].depth;
         double sm = 0.5 * (s0 + s1), d, reach;
         double *piece = pieces != NULL ? pieces + top * len : cut;
-        int halved = 0; /* the second half in place, the first on top */
+        int halved = 0, root_halved = 0; /* the second half in place, the first on top */
         if (pieces == NULL)
             bsi_seg_piece(seg, p, s0, s1, cut);
         if (x->flat) {
@@ -366,6 +366,12 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
                 bsi_seg_halve(piece, p, piece + len, piece);
                 halved = 1;
                 mid[0] = piece[0] / piece[2], mid[1] = piece[1] / piece[2];
+            } else if (!asked && 2 * len <= NEAR_LOCAL_PIECES) {
+                /* the whole segment above cubic, before its block: halved into local (unused
+                 * then), kept for the block; its middle has the bits of the point at 1/2 */
+                bsi_seg_halve(seg, p, local + len, local);
+                root_halved = 1;
+                mid[0] = local[0] / local[2], mid[1] = local[1] / local[2];
             } else {
                 bsi_seg_point(seg, p, sm, mid);
             }
@@ -381,7 +387,9 @@ static int seg_near(const near_ctx *x, const double *seg, size_t p)
         if (!asked && top == 0) { /* the first halving, of the whole segment */
             asked = 1;
             pieces = malloc((size_t)(NEAR_DEPTH + 2) * len * sizeof *pieces);
-            if (pieces != NULL)
+            if (pieces != NULL && root_halved)
+                memcpy(pieces, local, 2 * len * sizeof *pieces);
+            else if (pieces != NULL)
                 bsi_seg_halve(seg, p, pieces + len, pieces);
         } else if (pieces != NULL && !halved) {
             bsi_seg_halve(piece, p, piece + len, piece);
