@@ -186,8 +186,7 @@ static bs_status face_box(igm *m, size_t s, igm_surface *sf, const igm_acc *a, d
         double k = floor((mid - c) / turn + 0.5);
         for (size_t i = 0; k != 0.0 && i <= ax->n; i++)
             ax->breaks[i] += k * turn;
-        if (k != 0.0) /* the tangents kept were those of the widths before the shift */
-            ax->quarter = NULL;
+        bsi_axis_refresh(ax); /* the widths moved with the breaks by rounding */
         sf->box[0] = ax->breaks[0];
         sf->box[1] = ax->breaks[ax->n];
     }

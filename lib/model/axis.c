@@ -17,6 +17,16 @@ static double quarter_tan(const bsi_axis *a, size_t k)
     return tan(0.5 * half);
 }
 
+/* The tangents of an ANGULAR axis computed from its breaks into the room after them. */
+static void keep_quarters(bsi_axis *a)
+{
+    double *kept = a->breaks + a->n + 1;
+    a->quarter = NULL; /* quarter_tan computes them from the breaks as they are now */
+    for (size_t k = 0; k < a->n; k++)
+        kept[k] = quarter_tan(a, k);
+    a->quarter = kept;
+}
+
 int bsi_axis_locate(const bsi_axis *a, double x, size_t *piece, double *s)
 {
     if (a->n == 0 || !(x >= a->breaks[0] && x <= a->breaks[a->n]))
@@ -107,12 +117,15 @@ bs_status bsi_axis_make(int kind, double radians, double x0, double x1, const do
                 a->breaks[k++] = inner[i];
     }
     a->breaks[n] = x1;
-    if (kind == BSI_AXIS_ANGULAR) {
-        for (size_t k = 0; k < n; k++)
-            a->breaks[n + 1 + k] = quarter_tan(a, k);
-        a->quarter = a->breaks + n + 1;
-    }
+    if (kind == BSI_AXIS_ANGULAR)
+        keep_quarters(a);
     return BS_OK;
+}
+
+void bsi_axis_refresh(bsi_axis *a)
+{
+    if (a->quarter != NULL)
+        keep_quarters(a);
 }
 
 bs_status bsi_axis_copy(const bsi_axis *src, bsi_axis *dst)

@@ -54,6 +54,8 @@ double bsi_axis_rate(const bsi_axis *a, size_t k, double x);
  * BS_ERR_NO_MEMORY (a left empty) or BS_ERR_DOMAIN for x0 >= x1 or non-finite ends. */
 bs_status bsi_axis_make(int kind, double radians, double x0, double x1, const double *inner,
                         size_t ninner, bsi_axis *a);
+/* After the breaks were moved in place: the kept tangents made again from them (if kept). */
+void bsi_axis_refresh(bsi_axis *a);
 bs_status bsi_axis_copy(const bsi_axis *src, bsi_axis *dst);
 void bsi_axis_free(bsi_axis *a);
 
