@@ -59,7 +59,8 @@ static bs_status reserve(void **data, size_t *cap, size_t n, size_t more, size_t
     return BS_OK;
 }
 
-/* The native box of a face: given, the unit square of a Bezier face, or the loops' bounds. */
+/* The native box of a face: given, the unit square of a Bezier face, or the loops' bounds (the
+ * trims' lo and hi, set by bsi_model_add_face). */
 static bs_status face_box(const bsi_face_spec *spec, double *box)
 {
     if (spec->box != NULL) {
@@ -73,8 +74,7 @@ static bs_status face_box(const bsi_face_spec *spec, double *box)
         box[0] = box[2] = INFINITY;
         box[1] = box[3] = -INFINITY;
         for (size_t t = 0; t < spec->ntrim; t++) {
-            double lo[2], hi[2];
-            bsi_curve_bounds(&spec->trims[t].uv, lo, hi);
+            const double *lo = spec->trims[t].lo, *hi = spec->trims[t].hi;
             box[0] = fmin(box[0], lo[0]);
             box[1] = fmax(box[1], hi[0]);
             box[2] = fmin(box[2], lo[1]);
@@ -131,6 +131,8 @@ bs_status bsi_model_add_face(bs_model *m, const bsi_face_spec *spec, size_t *fac
         st = looped != spec->ntrim ? BS_ERR_INVALID_ARG : BS_ERR_SIZE;
         goto fail;
     }
+    for (size_t t = 0; t < spec->ntrim; t++) /* once: the box below and every later point test */
+        bsi_curve_bounds(&spec->trims[t].uv, spec->trims[t].lo, spec->trims[t].hi);
     if ((st = face_box(spec, face.box)) != BS_OK ||
         (st = reserve((void **)&m->faces, &m->face_cap, m->nface, 1, sizeof *m->faces)) != BS_OK ||
         (st = reserve((void **)&m->loops, &m->loop_cap, m->nloop, spec->nloop, sizeof *m->loops)) != BS_OK ||
@@ -154,9 +156,7 @@ bs_status bsi_model_add_face(bs_model *m, const bsi_face_spec *spec, size_t *fac
         t += spec->loop_len[l];
     }
     for (size_t t = 0; t < spec->ntrim; t++) {
-        bsi_trim *added = &m->trims[m->ntrim++];
-        *added = spec->trims[t];
-        bsi_curve_bounds(&added->uv, added->lo, added->hi);
+        m->trims[m->ntrim++] = spec->trims[t];
         memset(&spec->trims[t].uv, 0, sizeof spec->trims[t].uv);
     }
     if (spec->shell >= m->nshell)
