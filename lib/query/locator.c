@@ -75,6 +75,10 @@ static void cut_patch(bs_locator *L, uint32_t i, size_t *leaf, size_t *net_at, d
                     hi[c] = nextafter(hi[c] / sig, INFINITY);
                 }
             }
+            if (dim == 3)
+                bsi_ray_leaf_cone(out, m, n, p->rational, &lf->cone);
+            else
+                lf->cone = (bsi_leaf_cone){{0.0, 0.0, 0.0}, 2.0, INFINITY};
             *net_at += len;
             ++*leaf;
         }

@@ -12,12 +12,25 @@
  * each direction; each sub-patch is a leaf of the hierarchy. */
 #define BSI_LOC_SPLIT 4
 
-/* One sub-patch: its patch, the corner (u0, v0) of its domain (side 1/BSI_LOC_SPLIT), and where
- * its net is: (deg_u+1)(deg_v+1) points of dim+1 doubles, the Cartesian point then its weight. */
+/* The normals of a polynomial 3-D sub-patch's net: every cross product a x b of a difference a
+ * along u with one b along v lies within the angle whose sine is spread - 1e-3 of axis (unit),
+ * and no difference is shorter than least. A ray of unit direction d with |d.axis| > spread
+ * sees the net's projection one to one (the partials' cross product along d keeps its sign), if
+ * the net lies within 2^24 least of its origin, so that the projection's rounding cannot turn
+ * it. spread = 2 when no such cone was found (rational, degree 0, nearly parallel partials, a
+ * net of over 64 points). */
+typedef struct bsi_leaf_cone {
+    double axis[3], spread, least;
+} bsi_leaf_cone;
+
+/* One sub-patch: its patch, the corner (u0, v0) of its domain (side 1/BSI_LOC_SPLIT), where
+ * its net is: (deg_u+1)(deg_v+1) points of dim+1 doubles, the Cartesian point then its weight,
+ * and the cone of its normals (3-D locators; spread 2 otherwise). */
 typedef struct bsi_loc_leaf {
     uint32_t patch;
     double u0, v0;
     size_t net;
+    bsi_leaf_cone cone;
 } bsi_loc_leaf;
 
 /* Sub-patches per leaf node of the hierarchy at most (two: the walk orders them by entry). */
@@ -176,6 +189,10 @@ typedef struct bsi_ray_hit {
     double t, s, r;
     size_t leaf;
 } bsi_ray_hit;
+
+/* The cone of normals of a sub-patch's net of (m+1) x (n+1) points of 4 doubles (x, y, z, w;
+ * rat: the weights are not all 1). */
+void bsi_ray_leaf_cone(const double *net, size_t m, size_t n, int rat, bsi_leaf_cone *cone);
 
 /* Doubles of scratch bsi_ray_leaf needs for nets of up to max_ctrl points. */
 size_t bsi_ray_leaf_scratch(size_t max_ctrl);

@@ -106,6 +106,53 @@ static int one_to_one(const double *net, size_t m, size_t n, double *work)
     return pos == 4 || neg == 4;
 }
 
+void bsi_ray_leaf_cone(const double *net, size_t m, size_t n, int rat, bsi_leaf_cone *cone)
+{
+    *cone = (bsi_leaf_cone){{0.0, 0.0, 0.0}, 2.0, INFINITY};
+    size_t np = (m + 1) * (n + 1), row = (n + 1) * NC;
+    if (rat || m == 0 || n == 0 || np > 64) /* pairs of differences: (mn)^2 cross products */
+        return;
+    double su[3] = {0.0, 0.0, 0.0}, sv[3] = {0.0, 0.0, 0.0}, least = INFINITY;
+    for (size_t k = 0; k < np; k++)
+        for (size_t c = 0; c < 3; c++) {
+            su[c] += k + row / NC < np ? net[k * NC + row + c] - net[k * NC + c] : 0.0;
+            sv[c] += k % (n + 1) < n ? net[k * NC + NC + c] - net[k * NC + c] : 0.0;
+        }
+    double axis[3];
+    bsi_cross3(su, sv, axis);
+    double alen = sqrt(bsi_dot3(axis, axis)), cmin = 1.0;
+    if (!(alen > 0.0) || !isfinite(alen))
+        return;
+    for (size_t i = 0; i < m; i++) /* a: from point (i, j) along u; b: from (k, l) along v */
+        for (size_t j = 0; j <= n; j++)
+            for (size_t k = 0; k <= m; k++)
+                for (size_t l = 0; l < n; l++) {
+                    const double *p = net + i * row + j * NC, *q = net + k * row + l * NC;
+                    double a[3] = {p[row] - p[0], p[row + 1] - p[1], p[row + 2] - p[2]};
+                    double b[3] = {q[NC] - q[0], q[NC + 1] - q[1], q[NC + 2] - q[2]}, x[3];
+                    bsi_cross3(a, b, x);
+                    double la = sqrt(bsi_dot3(a, a)), lb = sqrt(bsi_dot3(b, b));
+                    double lx = sqrt(bsi_dot3(x, x));
+                    if (!(lx >= 1e-3 * la * lb) || !(la * lb < INFINITY)) /* nearly parallel, or huge */
+                        return;
+                    cmin = lesser(cmin, bsi_dot3(x, axis) / (lx * alen));
+                    least = lesser(least, lesser(la, lb));
+                }
+    if (!(cmin > 0.0))
+        return;
+    double spread = sqrt(1.0 - cmin * cmin) + 1e-3;
+    if (!(spread < 1.0))
+        return;
+    *cone = (bsi_leaf_cone){{axis[0] / alen, axis[1] / alen, axis[2] / alen}, spread, least};
+}
+
+/* 1 if the ray sees the leaf one to one by its cone of normals (bsi_leaf_cone), big being the
+ * largest coordinate of the leaf's net seen from the ray's origin. */
+static int cone_clear(const bsi_leaf_cone *cone, const bsi_ray *ray, double big)
+{
+    return fabs(bsi_dot3(cone->axis, ray->d)) > cone->spread && big <= 0x1p24 * cone->least;
+}
+
 /* 1 if the origin lies within tol of the box (lo, hi) in X1, X2 */
 static inline int box_near(const double lo[3], const double hi[3], double tol)
 {
@@ -316,6 +363,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         memcpy(o, ray->o, sizeof o);
     }
     double rbox[6], big = project(net0, np, rat, ray, o, root, rbox);
+    int clear = cone_clear(&leaf->cone, ray, big); /* every piece is one to one */
     /* the leaf's frame scaled by sig at extreme distances: lengths below are the ray's times
      * ps sig, t as well (t / sig / ps is the ray's) */
     double sig = leaf_scale(big), diag = fmin(DBL_MAX, L->diag * ps);
@@ -372,7 +420,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         }
         /* done: a zero shown to be the only one; no zero; a piece wholly within the accepted
          * distance of the ray (seen from far away), where Newton's point is as good a hit as any */
-        if ((found && one_to_one(net, m, n, half[1])) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
+        if ((found && (clear || one_to_one(net, m, n, half[1]))) || (!found && sep < 0 && separated(net, np, rat, g, tol, half[1]) > 0) ||
             within <= accept || e.level >= POLE_DEPTH)
             continue;
         int dir = pole_split(net, m, n, rat, lo, hi);

@@ -229,8 +229,51 @@ static void closed_range(void)
     bs_patch_destroy(p);
 }
 
+/* The parabolic cylinder z = -8 x^2 + 6 x - 1/8 over the unit square (a patch of degree (2, 1)
+ * with exact control points), its top at x = 3/8, inside the sub-patches of x in [1/4, 1/2]. A
+ * line meets it at most twice: chords through two of its points in those sub-patches must hit
+ * the nearer one (t within 1e-9 of the exact root), which a search that took
+ * a piece holding both for one to one could miss. The chords' directions run from nearly along
+ * the top (both points close together) to steep. */
+static void chords(void)
+{
+    double ctrl[18] = {0, 0, -0.125, 0, 1, -0.125, 0.5, 0, 2.875, 0.5, 1, 2.875, 1, 0, -2.125, 1, 1, -2.125};
+    bs_patch *p = NULL;
+    CHECK_STATUS(bs_patch_create(2, 1, 3, ctrl, NULL, &p), BS_OK);
+    bs_locator *L = p ? shape_locator(p) : NULL;
+    int bad = 0, n = 0;
+    for (int k = 0; L != NULL && k < 4000; k++) {
+        double a[3], b[3], o[3], d[3];
+        for (int e = 0; e < 2; e++) {
+            double *q = e ? b : a, x = bs_test_rand(&rng, 0.25, 0.5);
+            q[0] = x;
+            q[1] = bs_test_rand(&rng, 0.25, 0.5);
+            q[2] = (-8.0 * x + 6.0) * x - 0.125;
+        }
+        for (int c = 0; c < 3; c++) { /* from 1.5 chords before a, along a -> b */
+            d[c] = b[c] - a[c];
+            o[c] = a[c] - 1.5 * d[c];
+        }
+        if (!(fabs(d[0]) > 1e-3))
+            continue;
+        ray_out r;
+        CHECK_STATUS(shoot(L, o, d, NULL, &r), BS_OK);
+        n++;
+        /* the nearer point is a, at t = 1.5 exactly */
+        if (!(r.id == 0 && fabs(r.t - 1.5) <= 1e-9 * 2.5)) {
+            if (bad++ < 5)
+                printf("chord %d: patch %u t %.17g (1.5), d (%g %g %g)\n", k, r.id, r.t, d[0], d[1], d[2]);
+        }
+    }
+    CHECKF(bad == 0, "%d of %d chords did not hit their nearer point", bad, n);
+    printf("chords of a parabolic cylinder: %d rays, %d wrong\n", n, bad);
+    bs_locator_destroy(L);
+    bs_patch_destroy(p);
+}
+
 int main(void)
 {
+    chords();
     lengths();
     closed_range();
     far_origins();
