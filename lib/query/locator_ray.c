@@ -236,9 +236,14 @@ static void put(const bs_locator *L, size_t k, const bsi_ray *ray, const double 
         u = leaf->u0 + hit->s * side;
         v = leaf->v0 + hit->r * side;
         /* bs_patch_eval_normal's bits, with the patch's normal scale made once (of its scaled
-         * copy beyond 2^512 or below 2^-900, and pos that copy's) */
+         * copy beyond 2^512 or below 2^-900, and pos that copy's); without normals and kinds the
+         * position alone, whose bits are the same (bs_patch_eval's) */
         double sig;
-        bsi_eval_normal_one(bsi_loc_patch(L, id, &sig), &L->nscale[id], u, v, pos, nv, &kd);
+        const bs_patch *p = bsi_loc_patch(L, id, &sig);
+        if (nrm || kind)
+            bsi_eval_normal_one(p, &L->nscale[id], u, v, pos, nv, &kd);
+        else
+            bsi_eval_point(p, u, v, pos);
         /* t of the point reported, kept within the range the hit was found in */
         tt = fmin(DBL_MAX, fmin(ray->tmax, fmax(ray->tmin, hit_t(ray, pos, sig))) / len[0] / len[1]);
         if (L->trim) { /* a model's: its face, native parameters and outward normal */

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 static unsigned long long rng = 777;
 
@@ -271,9 +272,62 @@ static void chords(void)
     bs_patch_destroy(p);
 }
 
+/* The teapot as given, with weights 1 + 0.5 (k % 3), and scaled by 2^600 and 2^-950 (the
+ * locator's scaled copies): rays from a camera answer the same with and without normals asked
+ * for (patch, t, u and v bit for bit), since the position is bs_patch_eval's either way. */
+static void without_normals(void)
+{
+    bs_surface *tea = NULL;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &tea), BS_OK);
+    const double scale[3] = {1.0, 0x1p600, 0x1p-950};
+    for (int kind = 0; tea != NULL && kind < 4; kind++) {
+        double sc = kind < 3 ? scale[kind] : 1.0;
+        bs_surface *s = NULL;
+        CHECK_STATUS(bs_surface_create(&s), BS_OK);
+        for (size_t i = 0; s != NULL && i < bs_surface_count(tea); i++) {
+            double ctrl[48], w[16];
+            bs_patch *p = NULL;
+            CHECK_STATUS(bs_patch_get_ctrl(bs_surface_get(tea, i), ctrl, 48, w, 16), BS_OK);
+            for (int k = 0; k < 48; k++)
+                ctrl[k] *= sc;
+            for (int k = 0; k < 16; k++)
+                w[k] = 1.0 + 0.5 * (k % 3);
+            CHECK_STATUS(bs_patch_create(3, 3, 3, ctrl, kind == 3 ? w : NULL, &p), BS_OK);
+            CHECK_STATUS(bs_surface_add(s, p, NULL), BS_OK);
+            bs_patch_destroy(p);
+        }
+        bs_locator *L = NULL;
+        CHECK_STATUS(bs_locator_create(s, &L), BS_OK);
+        int differ = 0, hits = 0;
+        for (int k = 0; L != NULL && k < 1024; k++) {
+            double o[3] = {6.0 * sc, -8.0 * sc, 5.5 * sc}, d[3];
+            for (int c = 0; c < 3; c++)
+                d[c] = (c == 2 ? 1.4 : 0.2) * sc - o[c] + bs_test_rand(&rng, -1.5, 1.5) * sc;
+            ray_out a, b;
+            CHECK_STATUS(shoot(L, o, d, NULL, &a), BS_OK);
+            double t = 0.0, u = 0.0, v = 0.0;
+            uint32_t id = 0;
+            bs_cview ov[3] = {{&o[0], 1, 0}, {&o[1], 1, 0}, {&o[2], 1, 0}};
+            bs_cview dv[3] = {{&d[0], 1, 0}, {&d[1], 1, 0}, {&d[2], 1, 0}};
+            bs_view uv[2] = {{&u, 1, 0}, {&v, 1, 0}}, tv = {&t, 1, 0};
+            CHECK_STATUS(bs_locator_intersect(L, 1, ov, dv, NULL, &id, uv, &tv, NULL), BS_OK);
+            b = (ray_out){id, u, v, t, {0, 0, 0}, 0};
+            hits += a.id != UINT32_MAX;
+            differ += a.id != b.id || memcmp(&a.t, &b.t, sizeof a.t) != 0 ||
+                      memcmp(&a.u, &b.u, sizeof a.u) != 0 || memcmp(&a.v, &b.v, sizeof a.v) != 0;
+        }
+        CHECKF(differ == 0 && hits > 256, "teapot %d: %d of 1024 rays differ without normals (%d hits)", kind,
+               differ, hits);
+        bs_locator_destroy(L);
+        bs_surface_destroy(s);
+    }
+    bs_surface_destroy(tea);
+}
+
 int main(void)
 {
     chords();
+    without_normals();
     lengths();
     closed_range();
     far_origins();
