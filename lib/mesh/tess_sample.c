@@ -14,34 +14,43 @@ static int normal_bad(unsigned char kind, double x, double y, double z)
     return kind == BS_NORMAL_UNDEFINED || !(fabs(len - 1.0) < 1e-6);
 }
 
+/* out[3k + c] = the k-th of x, y, z (c = 0, 1, 2): flat, so that GCC vectorises the interleave */
+BSI_INLINE void interleave3(size_t n, const double *restrict x, const double *restrict y,
+                            const double *restrict z, double *restrict out)
+{
+    for (size_t k = 0; k < n; k++) {
+        out[3 * k] = x[k];
+        out[3 * k + 1] = y[k];
+        out[3 * k + 2] = z[k];
+    }
+}
+
 /* Move nr x nj grid results (rows i0.., by coordinate in w->soa) into the mesh's packed arrays at
- * vertex `first`, with their (u,v) and patch id; count the normals to repair. */
-static void store_block(const tess *t, tess_scratch *w, uint32_t patch, size_t first, size_t i0, size_t nr,
-                        size_t nj)
+ * vertex `first`, with their (u,v) and patch id; count the normals to repair. Compiled for each
+ * vector width: a copy, the same bits. */
+BSI_HOT static void store_block(const tess *t, tess_scratch *w, uint32_t patch, size_t first, size_t i0,
+                                size_t nr, size_t nj)
 {
     const double *restrict x = w->soa, *restrict y = x + GRID_CHUNK, *restrict z = y + GRID_CHUNK;
     const double *restrict nx = z + GRID_CHUNK, *restrict ny = nx + GRID_CHUNK, *restrict nz = ny + GRID_CHUNK;
     const double *restrict pv = w->pv + 1;
-    double *restrict pos = t->pos + 3 * first, *restrict nrm = t->nrm + 3 * first, *restrict uv = t->uv + 2 * first;
+    double *restrict uv = t->uv + 2 * first;
     uint32_t *restrict vp = t->vpatch + first;
     const unsigned char *restrict kind = t->kind + first;
-    size_t bad = 0;
-    for (size_t r = 0, k = 0; r < nr; r++) {
-        double u = w->pu[1 + i0 + r];
-        for (size_t j = 0; j < nj; j++, k++) {
-            pos[3 * k] = x[k];
-            pos[3 * k + 1] = y[k];
-            pos[3 * k + 2] = z[k];
-            nrm[3 * k] = nx[k];
-            nrm[3 * k + 1] = ny[k];
-            nrm[3 * k + 2] = nz[k];
-            uv[2 * k] = u;
-            uv[2 * k + 1] = pv[j];
-            vp[k] = patch;
+    size_t bad = 0, npt = nr * nj;
+    interleave3(npt, x, y, z, t->pos + 3 * first);
+    interleave3(npt, nx, ny, nz, t->nrm + 3 * first);
+    for (size_t r = 0; r < nr; r++) {
+        double u = w->pu[1 + i0 + r], *restrict row = uv + 2 * r * nj;
+        for (size_t j = 0; j < nj; j++) {
+            row[2 * j] = u;
+            row[2 * j + 1] = pv[j];
         }
     }
+    for (size_t k = 0; k < npt; k++)
+        vp[k] = patch;
     /* |len^2 - 1| < 1e-6 implies |len - 1| < 1e-6: only the rest need normal_bad's square root */
-    for (size_t k = 0; k < nr * nj; k++) {
+    for (size_t k = 0; k < npt; k++) {
         double q = nx[k] * nx[k] + ny[k] * ny[k] + nz[k] * nz[k];
         if (!(fabs(q - 1.0) < 1e-6) || kind[k] == BS_NORMAL_UNDEFINED)
             bad += (size_t)normal_bad(kind[k], nx[k], ny[k], nz[k]);
