@@ -324,10 +324,48 @@ static void without_normals(void)
     bs_surface_destroy(tea);
 }
 
+/* The teapot raised to degree (8, 8) (81 control points a patch, more than a sub-patch's cone
+ * of normals is made for) against the teapot itself: camera rays hit and miss alike, at the same
+ * t within 1e-9 of it. */
+static void raised(void)
+{
+    bs_surface *tea = NULL, *high = NULL;
+    CHECK_STATUS(bs_surface_create_builtin("teapot", &tea), BS_OK);
+    CHECK_STATUS(bs_surface_create(&high), BS_OK);
+    for (size_t i = 0; tea != NULL && high != NULL && i < bs_surface_count(tea); i++) {
+        bs_patch *p = NULL;
+        CHECK_STATUS(bs_patch_elevate(bs_surface_get(tea, i), 5, 5, &p), BS_OK);
+        CHECK_STATUS(bs_surface_add(high, p, NULL), BS_OK);
+        bs_patch_destroy(p);
+    }
+    bs_locator *L = NULL, *H = NULL;
+    CHECK_STATUS(bs_locator_create(tea, &L), BS_OK);
+    CHECK_STATUS(bs_locator_create(high, &H), BS_OK);
+    int differ = 0, hits = 0;
+    for (int k = 0; L != NULL && H != NULL && k < 1024; k++) {
+        double o[3] = {6.0, -8.0, 5.5}, d[3];
+        for (int c = 0; c < 3; c++)
+            d[c] = (c == 2 ? 1.4 : 0.2) - o[c] + bs_test_rand(&rng, -1.5, 1.5);
+        ray_out a, b;
+        CHECK_STATUS(shoot(L, o, d, NULL, &a), BS_OK);
+        CHECK_STATUS(shoot(H, o, d, NULL, &b), BS_OK);
+        hits += a.id != UINT32_MAX;
+        differ += (a.id == UINT32_MAX) != (b.id == UINT32_MAX) ||
+                  (a.id != UINT32_MAX && !(fabs(a.t - b.t) <= 1e-9 * a.t));
+    }
+    CHECKF(differ == 0 && hits > 256, "degree (8, 8): %d of 1024 rays differ from the teapot's (%d hits)", differ,
+           hits);
+    bs_locator_destroy(L);
+    bs_locator_destroy(H);
+    bs_surface_destroy(tea);
+    bs_surface_destroy(high);
+}
+
 int main(void)
 {
     chords();
     without_normals();
+    raised();
     lengths();
     closed_range();
     far_origins();
