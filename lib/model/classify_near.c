@@ -151,7 +151,7 @@ static double patch_speed(const bs_patch *pt, int dir)
 }
 
 /* Bounds of |dS/du| and |dS/dv| per native unit over the face. */
-static void face_speed(const bs_model *m, const bsi_face *face, double *lip)
+void bsi_face_speed(const bs_model *m, const bsi_face *face, double lip[2])
 {
     double la = 0.0, lb = 0.0;
     for (size_t i = 0; i < face->au.n; i++)
@@ -463,7 +463,7 @@ int bsi_face_near_boundary(const bs_model *m, size_t f, double u, double v, doub
     x.m = m, x.f = f, x.box = face->box, x.tol = tol;
     if (!surface_point(m, f, u, v, x.p))
         return 0;
-    face_speed(m, face, x.lip);
+    x.lip[0] = face->lip[0], x.lip[1] = face->lip[1];
     x.flat = flat_face(m, face, &x) && x.slack <= 1e-4 * tol; /* a parallelogram to rounding */
     x.uv[0] = u, x.uv[1] = v;
     for (size_t l = face->first_loop; l < face->first_loop + face->loop_count; l++) {

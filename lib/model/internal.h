@@ -180,6 +180,7 @@ typedef struct bsi_face {
     size_t first_loop, loop_count;
     int untrimmed;             /* 1: its one loop is its surface's own box (reported as 0 loops) */
     double box[4];             /* native u0 u1 v0 v1 */
+    double lip[2];             /* bounds of |S_u|, |S_v| over the face (native parameters) */
 } bsi_face;
 
 typedef struct bsi_edge {
@@ -254,6 +255,8 @@ size_t bsi_patch_native(const bs_model *m, uint32_t p, double s, double t, doubl
 double bsi_wrap(double u, double lo, double period);
 
 /* ---- Classification (classify.c) ---- */
+/* The bounds of the face's 3-D speeds along native u and v, kept in face->lip as it is added. */
+void bsi_face_speed(const bs_model *m, const bsi_face *face, double lip[2]);
 /* BS_TRIM_* of native (u, v) on face f (a valid id), tol a finite 3-D distance >= 0. */
 int bsi_face_classify(const bs_model *m, size_t f, double u, double v, double tol);
 /* 1 when the point is within tol of the face: bsi_face_classify would not say OUTSIDE, or it is

@@ -161,6 +161,7 @@ bs_status bsi_model_add_face(bs_model *m, const bsi_face_spec *spec, size_t *fac
     }
     if (spec->shell >= m->nshell)
         m->nshell = spec->shell + 1;
+    bsi_face_speed(m, &face, face.lip); /* once: every later test for nearness to its trims */
     m->faces[m->nface++] = face;
     if (face_id != NULL)
         *face_id = m->nface - 1;

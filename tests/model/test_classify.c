@@ -403,6 +403,7 @@ static size_t hand_face(bs_model *m, bs_patch **patches, bsi_axis *au, bsi_axis 
     for (size_t k = m->ntrim; k < m->ntrim + ntrim; k++) /* as bsi_model_add_face */
         bsi_curve_bounds(&m->trims[k].uv, m->trims[k].lo, m->trims[k].hi);
     m->ntrim += ntrim;
+    bsi_face_speed(m, &face, face.lip);
     m->faces[m->nface++] = face;
     m->face_cap = m->nface, m->loop_cap = m->nloop, m->trim_cap = m->ntrim;
     return m->nface - 1;
