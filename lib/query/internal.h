@@ -7,10 +7,15 @@
 
 #include "surface/internal.h"
 
+#include <math.h>
+
 /* min and max without the NaN rules of fmin and fmax, which keep them out of line (the ray test,
  * the walk, the closest-point bounds); a NaN in b is passed on, not dropped. */
 static inline double lesser(double a, double b) { return a < b ? a : b; }
 static inline double greater(double a, double b) { return a > b ? a : b; }
+
+/* bsi_all_finite(x, 3) in line: a few of these a ray */
+static inline int bsi_finite3(const double *x) { return isfinite(x[0]) && isfinite(x[1]) && isfinite(x[2]); }
 
 static inline double bsi_dot3(const double *a, const double *b)
 {

@@ -22,9 +22,9 @@
 static int make_ray(const double o[3], const double d[3], const double *range, bsi_ray *ray,
                     double len[2])
 {
-    double scale = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    double scale = greater(fabs(d[0]), greater(fabs(d[1]), fabs(d[2]))); /* fmax's for finite d */
     /* t_max = +Inf is "no limit" (1.2); t_min stays finite */
-    if (!bsi_all_finite(o, 3) || !bsi_all_finite(d, 3) ||
+    if (!bsi_finite3(o) || !bsi_finite3(d) ||
         (range && !(isfinite(range[0]) && (isfinite(range[1]) || range[1] == INFINITY))) || scale == 0.0)
         return 0;
     double dd[3] = {d[0] / scale, d[1] / scale, d[2] / scale}, l = sqrt(bsi_dot3(dd, dd));
@@ -216,7 +216,7 @@ BSI_HOT static void trace(const bs_locator *L, const bsi_ray *ray, double *scrat
 static double hit_t(const bsi_ray *ray, const double pos[3], double sig)
 {
     double a[3], os[3] = {ray->o[0] * sig, ray->o[1] * sig, ray->o[2] * sig};
-    int far = !bsi_all_finite(os, 3); /* a patch below 2^-1000 seen from beyond 2^23 */
+    int far = !bsi_finite3(os); /* a patch below 2^-1000 seen from beyond 2^23 */
     for (int c = 0; c < 3; c++)
         a[c] = far ? pos[c] / sig - ray->o[c] : pos[c] - os[c];
     return far ? bsi_dot3(a, ray->d) : bsi_dot3(a, ray->d) / sig;

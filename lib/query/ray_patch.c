@@ -355,7 +355,7 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     double ps;
     (void)bsi_loc_patch(L, leaf->patch, &ps);
     double o[3] = {ray->o[0] * ps, ray->o[1] * ps, ray->o[2] * ps};
-    if (!bsi_all_finite(o, 3)) { /* a patch below 2^-1000 seen from beyond 2^23: the ray's units */
+    if (!bsi_finite3(o)) { /* a patch below 2^-1000 seen from beyond 2^23: the ray's units */
         for (size_t q = 0; q < len; q++)
             half[0][q] = q % NC < 3 ? net0[q] / ps : net0[q];
         net0 = half[0];
