@@ -58,7 +58,7 @@ typedef struct slab_ray {
     int zero[3], flat; /* components of d that are 0; some is */
 } slab_ray;
 
-BSI_INLINE slab_ray slab_setup(const bsi_ray *ray)
+static slab_ray slab_setup(const bsi_ray *ray)
 {
     slab_ray r;
     for (int c = 0; c < 3; c++) {
@@ -115,9 +115,8 @@ BSI_INLINE int slab(const double *lo, const slab_ray *r, double t0, double t1, d
 
 /* slab() on the four boxes of a wide node at once, lane by lane with the same operations (so the
  * same entries, the same boxes let through), in loops of fixed length that the compiler runs in
- * vector registers (of the walk's version for the CPU, chosen at load time). in[k] for slots
- * k < w->n only. */
-BSI_INLINE void wide_slab(const bsi_loc_wide *restrict w, const slab_ray *restrict r, double t0,
+ * vector registers; chosen per CPU at load time. in[k] for slots k < w->n only. */
+BSI_HOT static void wide_slab(const bsi_loc_wide *restrict w, const slab_ray *restrict r, double t0,
                               double t1, double *restrict tn, int *restrict in)
 {
     double tf[BSI_LOC_WIDE];
@@ -142,7 +141,7 @@ BSI_INLINE void wide_slab(const bsi_loc_wide *restrict w, const slab_ray *restri
 
 /* The sub-patches of binary leaf node nd: each one's own box first (most that the node's box
  * lets through miss theirs); the nearer entered first, the other skipped if a hit comes before it. */
-BSI_INLINE void visit_leaves(const bs_locator *L, const bsi_loc_node *nd, const bsi_ray *ray,
+static void visit_leaves(const bs_locator *L, const bsi_loc_node *nd, const bsi_ray *ray,
                          const slab_ray *sr, double *scratch, bsi_ray_hit *hit)
 {
     double tl[BSI_LOC_LEAF_MAX];
@@ -160,11 +159,10 @@ BSI_INLINE void visit_leaves(const bs_locator *L, const bsi_loc_node *nd, const 
             bsi_ray_leaf(L, nd->first + (uint32_t)order[q], ray, scratch, hit);
 }
 
-/* The first hit of the ray: hit->t stays +Inf on a miss. Compiled for each vector width, with the
- * box tests in line. The wide tree is walked nearest box
+/* The first hit of the ray: hit->t stays +Inf on a miss. The wide tree is walked nearest box
  * first; boxes entered beyond the best hit so far are skipped. At equal entries the earlier slot
  * goes first, so the walk, and the hit kept at a tie of t, is the same for every run. */
-BSI_HOT static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_ray_hit *hit)
+static void trace(const bs_locator *L, const bsi_ray *ray, double *scratch, bsi_ray_hit *hit)
 {
     struct {
         uint32_t ref;
