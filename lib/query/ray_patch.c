@@ -472,8 +472,8 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
     }
 }
 
-BSI_HOT void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
-                          bsi_ray_hit *hit)
+void bsi_ray_leaf(const bs_locator *L, size_t k, const bsi_ray *ray, double *scratch,
+                  bsi_ray_hit *hit)
 {
     if (L->patches[L->leaves[k].patch]->rational)
         search(L, k, ray, scratch, hit, 1);
