@@ -106,38 +106,50 @@ static int one_to_one(const double *net, size_t m, size_t n, double *work)
     return pos == 4 || neg == 4;
 }
 
+/* The differences of a net of 4-double points along u (point (i+1, j) - (i, j)) or along v, as
+ * x, y, z and length; their count. */
+static size_t net_differences(const double *net, size_t m, size_t n, int along_u, double (*d)[4])
+{
+    size_t row = (n + 1) * NC, step = along_u ? row : NC, count = 0;
+    for (size_t i = 0; i + (along_u ? 1 : 0) <= m; i++)
+        for (size_t j = 0; j + (along_u ? 0 : 1) <= n; j++, count++) {
+            const double *p = net + i * row + j * NC;
+            for (size_t c = 0; c < 3; c++)
+                d[count][c] = p[step + c] - p[c];
+            d[count][3] = sqrt(bsi_dot3(d[count], d[count]));
+        }
+    return count;
+}
+
 void bsi_ray_leaf_cone(const double *net, size_t m, size_t n, int rat, bsi_leaf_cone *cone)
 {
     *cone = (bsi_leaf_cone){{0.0, 0.0, 0.0}, 2.0, INFINITY};
-    size_t np = (m + 1) * (n + 1), row = (n + 1) * NC;
+    size_t np = (m + 1) * (n + 1);
     if (rat || m == 0 || n == 0 || np > 64) /* pairs of differences: (mn)^2 cross products */
         return;
-    double su[3] = {0.0, 0.0, 0.0}, sv[3] = {0.0, 0.0, 0.0}, least = INFINITY;
-    for (size_t k = 0; k < np; k++)
-        for (size_t c = 0; c < 3; c++) {
-            su[c] += k + row / NC < np ? net[k * NC + row + c] - net[k * NC + c] : 0.0;
-            sv[c] += k % (n + 1) < n ? net[k * NC + NC + c] - net[k * NC + c] : 0.0;
-        }
+    double du[64][4], dv[64][4], su[3] = {0.0, 0.0, 0.0}, sv[3] = {0.0, 0.0, 0.0}, least = INFINITY;
+    size_t nu = net_differences(net, m, n, 1, du), nv = net_differences(net, m, n, 0, dv);
+    for (size_t k = 0; k < nu; k++) /* the sums, point by point as the net is stored */
+        for (size_t c = 0; c < 3; c++)
+            su[c] += du[k][c];
+    for (size_t k = 0; k < nv; k++)
+        for (size_t c = 0; c < 3; c++)
+            sv[c] += dv[k][c];
     double axis[3];
     bsi_cross3(su, sv, axis);
     double alen = sqrt(bsi_dot3(axis, axis)), cmin = 1.0;
     if (!(alen > 0.0) || !isfinite(alen))
         return;
-    for (size_t i = 0; i < m; i++) /* a: from point (i, j) along u; b: from (k, l) along v */
-        for (size_t j = 0; j <= n; j++)
-            for (size_t k = 0; k <= m; k++)
-                for (size_t l = 0; l < n; l++) {
-                    const double *p = net + i * row + j * NC, *q = net + k * row + l * NC;
-                    double a[3] = {p[row] - p[0], p[row + 1] - p[1], p[row + 2] - p[2]};
-                    double b[3] = {q[NC] - q[0], q[NC + 1] - q[1], q[NC + 2] - q[2]}, x[3];
-                    bsi_cross3(a, b, x);
-                    double la = sqrt(bsi_dot3(a, a)), lb = sqrt(bsi_dot3(b, b));
-                    double lx = sqrt(bsi_dot3(x, x));
-                    if (!(lx >= 1e-3 * la * lb) || !(la * lb < INFINITY)) /* nearly parallel, or huge */
-                        return;
-                    cmin = lesser(cmin, bsi_dot3(x, axis) / (lx * alen));
-                    least = lesser(least, lesser(la, lb));
-                }
+    for (size_t a = 0; a < nu; a++)
+        for (size_t b = 0; b < nv; b++) {
+            double x[3];
+            bsi_cross3(du[a], dv[b], x);
+            double la = du[a][3], lb = dv[b][3], lx = sqrt(bsi_dot3(x, x));
+            if (!(lx >= 1e-3 * la * lb) || !(la * lb < INFINITY)) /* nearly parallel, or huge */
+                return;
+            cmin = lesser(cmin, bsi_dot3(x, axis) / (lx * alen));
+            least = lesser(least, lesser(la, lb));
+        }
     if (!(cmin > 0.0))
         return;
     double spread = sqrt(1.0 - cmin * cmin) + 1e-3;
