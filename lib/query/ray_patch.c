@@ -375,7 +375,9 @@ SPECIALISE void search(const bs_locator *L, size_t k, const bsi_ray *ray, double
         memcpy(o, ray->o, sizeof o);
     }
     double rbox[6], big = project(net0, np, rat, ray, o, root, rbox);
-    int clear = cone_clear(&leaf->cone, ray, big); /* every piece is one to one */
+    /* every piece is one to one (not asked of a net taken back to the ray's units: the cone's
+     * least difference is in the stored net's) */
+    int clear = net0 == L->nets + leaf->net && cone_clear(&leaf->cone, ray, big);
     /* the leaf's frame scaled by sig at extreme distances: lengths below are the ray's times
      * ps sig, t as well (t / sig / ps is the ray's) */
     double sig = leaf_scale(big), diag = fmin(DBL_MAX, L->diag * ps);
