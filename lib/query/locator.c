@@ -78,7 +78,7 @@ static void cut_patch(bs_locator *L, uint32_t i, size_t *leaf, size_t *net_at, d
             if (dim == 3)
                 bsi_ray_leaf_cone(out, m, n, p->rational, &lf->cone);
             else
-                lf->cone = (bsi_leaf_cone){{0.0, 0.0, 0.0}, 2.0, INFINITY};
+                lf->cone = BSI_NO_CONE;
             *net_at += len;
             ++*leaf;
         }

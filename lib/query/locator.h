@@ -22,6 +22,7 @@
 typedef struct bsi_leaf_cone {
     double axis[3], spread, least;
 } bsi_leaf_cone;
+#define BSI_NO_CONE ((bsi_leaf_cone){{0.0, 0.0, 0.0}, 2.0, INFINITY})
 
 /* One sub-patch: its patch, the corner (u0, v0) of its domain (side 1/BSI_LOC_SPLIT), where
  * its net is: (deg_u+1)(deg_v+1) points of dim+1 doubles, the Cartesian point then its weight,

@@ -123,7 +123,7 @@ static size_t net_differences(const double *net, size_t m, size_t n, int along_u
 
 void bsi_ray_leaf_cone(const double *net, size_t m, size_t n, int rat, bsi_leaf_cone *cone)
 {
-    *cone = (bsi_leaf_cone){{0.0, 0.0, 0.0}, 2.0, INFINITY};
+    *cone = BSI_NO_CONE;
     size_t np = (m + 1) * (n + 1);
     if (rat || m == 0 || n == 0 || np > 64) /* pairs of differences: (mn)^2 cross products */
         return;
